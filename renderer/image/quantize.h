@@ -1,0 +1,26 @@
+// SPEC section 2: the M3055's quantization, on the CPU. The GLSL post pass
+// (glsl/passes/quantize.frag) computes exactly the same thing.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace m3055 {
+
+// level = clamp(floor(c * (2^bits - 1) + 0.5), 0, 2^bits - 1), c clamped to [0, 1].
+inline int quantize_level(double c, int bits) {
+    const double max_level = double((1 << bits) - 1);
+    if (!(c > 0.0)) c = 0.0;  // also maps NaN to 0
+    if (c > 1.0) c = 1.0;
+    const double level = std::floor(c * max_level + 0.5);
+    return int(std::clamp(level, 0.0, max_level));
+}
+
+// png = round(level * 255 / (2^bits - 1)).
+inline std::uint8_t level_to_png(int level, int bits) {
+    const int max_level = (1 << bits) - 1;
+    return std::uint8_t(std::lround(double(level) * 255.0 / double(max_level)));
+}
+
+}  // namespace m3055

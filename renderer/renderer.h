@@ -1,0 +1,44 @@
+// The GPU renderer: draws a Scene through the GLSL 3.3 pipeline into offscreen
+// targets at the display's own size (SPEC sections 2-4):
+//   opaque spheres -> translucent spheres, back to front -> quantize pass.
+// It needs a current GL 3.3 core context whose functions are in `gl`; it makes
+// no context itself (see gl/context.h for headless ones; the explorer makes a
+// window's).
+#pragma once
+
+#include "gl/gl_api.h"
+#include "image/image.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <string>
+
+namespace m3055 {
+
+class Renderer {
+public:
+    explicit Renderer(const GlApi& gl);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Renders `scene` at scene.display.width x height. Throws std::runtime_error
+    // with the GL log (shader file name and line) if a program fails to build.
+    void render(const Scene& scene);
+
+    // The quantized display image of the last render, as an RGBA8 GL texture
+    // (GL_NEAREST filtering; row 0 at the bottom, as GL textures are).
+    unsigned display_texture() const;
+    int width() const;
+    int height() const;
+
+    // Readback of the last render.
+    Rgb8Image read_display() const;  // 8-bit PNG values, rows top to bottom
+    RgbFloatImage read_raw() const;  // unquantized linear colour, rows bottom to top
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace m3055

@@ -1,0 +1,122 @@
+// Scene: plain structs describing what to render (SPEC section 7).
+// Values here are already validated and normalized by the loader
+// (directions are unit vectors, ranges are checked); renderers trust them.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace m3055 {
+
+using glm::dvec3;
+
+// SPEC section 2: the emulated display. The M3055 is 512 x 320, 5 bits a channel.
+struct Display {
+    int width = 512;
+    int height = 320;
+    int bits = 5;         // 1..8 bits per channel
+    bool dither = false;  // ordered (4x4 Bayer) dithering before quantization
+};
+
+enum class Projection { perspective, orthographic };
+
+// SPEC section 3.
+struct Camera {
+    Projection projection = Projection::perspective;
+    dvec3 position{0.0, 0.0, 4.5};
+    dvec3 target{0.0, 0.0, 0.0};
+    dvec3 up{0.0, 1.0, 0.0};
+    double fov_y_deg = 30.0;  // perspective only
+    double height = 2.5;      // orthographic only: world-space height of the view
+};
+
+// One lobe of a metal model. For `metal` m is the Beckmann roughness m_j;
+// for `metal_blinn` / `metal_phong` m holds the exponent n_j.
+struct Lobe {
+    double w = 0.0;
+    double m = 0.0;
+};
+
+enum class LightType { directional, point, spot };
+
+// Which models a light's own lobes are for: Beckmann lobes {"w", "m"} override
+// the lobes of `metal`; exponent lobes {"w", "n"} those of `metal_blinn`/`metal_phong`.
+enum class LobeKind { beckmann, exponent };
+
+struct Light {
+    LightType type = LightType::directional;
+    dvec3 direction{0.0, 0.0, 1.0};  // directional: unit vector from the surface towards the light
+    dvec3 position{0.0, 0.0, 0.0};   // point, spot
+    double intensity = 1.0;          // a_l in [0, 10]
+    dvec3 color{1.0, 1.0, 1.0};      // c_l in [0, 1]^3
+    // Distance attenuation 1 / (S_c + S_l r + S_q r^2) for point and spot lights.
+    double att_constant = 1.0;
+    double att_linear = 0.0;
+    double att_quadratic = 0.0;
+    // Spot: C_spot = ((-L . spot_direction)+)^spot_exponent; spot_direction is unit,
+    // the direction the spot shines along (from the light into the scene).
+    dvec3 spot_direction{0.0, 0.0, -1.0};
+    double spot_exponent = 1.0;
+    // Per-light lobes replace the material's lobes for this light (metal models only).
+    std::vector<Lobe> lobes;
+    LobeKind lobe_kind = LobeKind::beckmann;
+    bool enabled = true;
+};
+
+enum class Model { highlight, translucent, metal, metal_blinn, metal_phong };
+
+struct Material {
+    Model model = Model::highlight;
+    dvec3 color{0.8, 0.2, 0.2};  // C0
+    double d = 0.5;              // environment / background share
+    double w = 1.0;              // highlight brightness   (highlight, translucent)
+    double m = 10.0;             // highlight exponent     (highlight, translucent)
+    double t_n = 0.8;            // opacity                (translucent)
+    double t_p = 1.0;            // Kay's falloff power    (translucent)
+    std::vector<Lobe> lobes;     // 1..4 lobes             (metal, metal_blinn, metal_phong)
+};
+
+enum class Shape { sphere };
+
+struct Object {
+    Shape shape = Shape::sphere;
+    dvec3 center{0.0, 0.0, 0.0};
+    double radius = 1.0;
+    Material material;
+};
+
+struct Scene {
+    Display display;
+    dvec3 background{0.0, 0.0, 0.0};
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+};
+
+// Limits the loader enforces (documented in the README).
+inline constexpr int kMaxLights = 16;
+inline constexpr int kMaxLobes = 4;
+inline constexpr int kMaxDisplaySize = 8192;
+
+const char* to_string(Model model);
+const char* to_string(LightType type);
+const char* to_string(Projection projection);
+
+// True for models whose output depends on what lies behind (needs the blended pass).
+inline bool is_translucent(Model model) { return model == Model::translucent; }
+// True for the metal family, which reads lobes (and per-light lobes).
+inline bool uses_lobes(Model model) {
+    return model == Model::metal || model == Model::metal_blinn || model == Model::metal_phong;
+}
+
+// The lobes light `light` uses on `material`: the light's own when it has lobes
+// of the kind the model reads, else the material's (SPEC 4.3, Fig. 11).
+inline const std::vector<Lobe>& lobes_for(const Light& light, const Material& material) {
+    const LobeKind wanted = material.model == Model::metal ? LobeKind::beckmann : LobeKind::exponent;
+    if (!light.lobes.empty() && light.lobe_kind == wanted) return light.lobes;
+    return material.lobes;
+}
+
+}  // namespace m3055
