@@ -1,0 +1,78 @@
+// write_file_atomic: temporary file in the target's own folder, then rename().
+// rename() within one filesystem is atomic, which is why the temporary file
+// must live beside the target and not in /tmp.
+#include "image/image.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace m3055 {
+namespace {
+
+std::string folder_of(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    if (slash == 0) return "/";
+    return path.substr(0, slash);
+}
+
+std::string name_of(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+[[noreturn]] void fail(const std::string& path, const char* what, int error) {
+    throw ImageError(path + ": " + what + ": " + std::strerror(error));
+}
+
+// Writes everything, retrying short writes and EINTR. Returns 0 or an errno.
+int write_all(int fd, const void* bytes, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(bytes);
+    while (size > 0) {
+        const ssize_t n = ::write(fd, p, size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        if (n == 0) return EIO;  // should not happen for regular files; avoid looping forever
+        p += n;
+        size -= std::size_t(n);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void write_file_atomic(const std::string& path, const void* bytes, std::size_t size) {
+    if (path.empty() || path.back() == '/') fail(path, "not a file name", EISDIR);
+    std::string temp = folder_of(path) + "/." + name_of(path) + ".tmp-XXXXXX";
+    const int fd = ::mkstemp(temp.data());
+    if (fd < 0) fail(path, "cannot create temporary file", errno);
+
+    // From here on, any failure removes the temporary file; the target is only
+    // touched by the final rename().
+    auto abandon = [&](const char* what, int error) {
+        ::close(fd);
+        ::unlink(temp.c_str());
+        fail(path, what, error);
+    };
+    // mkstemp creates 0600; output images are ordinary files everyone may read.
+    if (::fchmod(fd, 0644) != 0) abandon("cannot set file mode", errno);
+    if (const int error = write_all(fd, bytes, size)) abandon("cannot write", error);
+    if (::fsync(fd) != 0) abandon("cannot sync", errno);
+    if (::close(fd) != 0) {
+        const int error = errno;
+        ::unlink(temp.c_str());
+        fail(path, "cannot close", error);
+    }
+    if (::rename(temp.c_str(), path.c_str()) != 0) {
+        const int error = errno;
+        ::unlink(temp.c_str());
+        fail(path, "cannot rename temporary file over target", error);
+    }
+}
+
+}  // namespace m3055
