@@ -1,0 +1,118 @@
+// The whole reference image: one exact ray per pixel centre (SPEC 3), the
+// nearest opaque front face (or the background), then the translucent front
+// faces in front of it composited back to front (SPEC 4.2, Fig. 9).
+#include "reference/reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace m3055::ref {
+
+namespace {
+
+struct Hit {
+    double t;
+    int object;
+};
+
+// Every front-face hit of the ray, nearest first (ties by object index, so the
+// order never depends on the sort's whims).
+std::vector<Hit> all_hits(const Scene& scene, const Ray& ray) {
+    std::vector<Hit> hits;
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        double t = 0.0;
+        if (intersect_sphere(ray, scene.objects[i].center, scene.objects[i].radius, &t))
+            hits.push_back({t, i});
+    }
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+        return a.t != b.t ? a.t < b.t : a.object < b.object;
+    });
+    return hits;
+}
+
+// A 64-bit signature of the SET of objects hit (splitmix64 over the sorted
+// indices); 0 only when nothing is hit.
+std::uint64_t coverage_signature(std::vector<Hit> hits) {
+    if (hits.empty()) return 0;
+    std::vector<int> ids;
+    for (const Hit& h : hits) ids.push_back(h.object);
+    std::sort(ids.begin(), ids.end());
+    std::uint64_t sig = 0x9e3779b97f4a7c15ULL;
+    for (int id : ids) {
+        std::uint64_t z = sig + std::uint64_t(id) + 0x9e3779b97f4a7c15ULL;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        sig = z ^ (z >> 31);
+    }
+    return sig == 0 ? 1 : sig;
+}
+
+// SPEC 3: N = (P - C) / radius (normalized again for rounding), V = -ray direction.
+SurfacePoint surface_point(const Object& object, const Ray& ray, double t) {
+    SurfacePoint point;
+    point.P = ray.origin + t * ray.dir;
+    point.N = glm::normalize((point.P - object.center) / object.radius);
+    point.V = -ray.dir;
+    return point;
+}
+
+dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hits) {
+    // The nearest opaque hit, or the background.
+    dvec3 color = scene.background;
+    double t_opaque = std::numeric_limits<double>::infinity();
+    for (const Hit& hit : hits) {
+        const Object& object = scene.objects[hit.object];
+        if (is_translucent(object.material.model)) continue;
+        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit.t));
+        t_opaque = hit.t;
+        break;
+    }
+    // Translucent front faces in front of it, farthest first: C = color + T * C_behind.
+    for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
+        const Object& object = scene.objects[it->object];
+        if (!is_translucent(object.material.model) || !(it->t < t_opaque)) continue;
+        const TranslucentShade shade =
+            shade_translucent(object.material, scene.lights, surface_point(object, ray, it->t));
+        color = shade.color + shade.transmittance * color;
+    }
+    return color;
+}
+
+}  // namespace
+
+ReferenceImage render_reference(const Scene& scene) {
+    ReferenceImage image;
+    image.width = scene.display.width;
+    image.height = scene.display.height;
+    image.rgb.assign(std::size_t(image.width) * image.height * 3, 0.0);
+    image.coverage.assign(std::size_t(image.width) * image.height, 0);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const Ray ray = camera_ray(scene.camera, image.width, image.height, x, y);
+            const std::vector<Hit> hits = all_hits(scene, ray);
+            const dvec3 c = shade_pixel(scene, ray, hits);
+            const std::size_t i = std::size_t(y) * image.width + x;
+            image.rgb[3 * i + 0] = c.r;
+            image.rgb[3 * i + 1] = c.g;
+            image.rgb[3 * i + 2] = c.b;
+            image.coverage[i] = coverage_signature(hits);
+        }
+    }
+    return image;
+}
+
+bool is_interior(const ReferenceImage& image, int x, int y) {
+    const std::uint64_t own = image.coverage[std::size_t(y) * image.width + x];
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= image.width || ny >= image.height) continue;
+            if (image.coverage[std::size_t(ny) * image.width + nx] != own) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace m3055::ref
