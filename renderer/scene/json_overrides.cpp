@@ -1,0 +1,119 @@
+// `--set path=value` overrides: parse_override and apply_overrides (load.h).
+// The document is edited before validation, so a bad value gets the same
+// message it would get in the file.
+#include "scene/json_node.h"
+#include "scene/load.h"
+
+#include <limits>
+
+namespace m3055 {
+
+using scene_json::json;
+
+namespace {
+
+// One step of an override path: a key ("material") or an index ("[2]").
+struct Step {
+    bool is_index = false;
+    std::string key;
+    std::size_t index = 0;
+};
+
+[[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& problem) {
+    throw SceneError(source + ": --set " + path + ": " + problem);
+}
+
+// "a.b[2].c" -> a, b, [2], c. Keys hold no '.', '[' or ']'.
+std::vector<Step> parse_path(const std::string& path, const std::string& source) {
+    std::vector<Step> steps;
+    std::size_t i = 0;
+    const auto malformed = [&]() { fail(source, path, "malformed path (expected e.g. objects[0].material.m)"); };
+    while (i < path.size()) {
+        if (path[i] == '[') {
+            const std::size_t close = path.find(']', i);
+            if (close == std::string::npos || close == i + 1) malformed();
+            Step step;
+            step.is_index = true;
+            for (std::size_t k = i + 1; k < close; ++k) {
+                if (path[k] < '0' || path[k] > '9') malformed();
+                if (step.index > std::numeric_limits<std::size_t>::max() / 20) malformed();
+                step.index = step.index * 10 + static_cast<std::size_t>(path[k] - '0');
+            }
+            steps.push_back(step);
+            i = close + 1;
+        } else {
+            if (!steps.empty()) {
+                if (path[i] != '.') malformed();  // "a[0]b"
+                ++i;
+            }
+            const std::size_t end = path.find_first_of(".[]", i);
+            const std::size_t stop = end == std::string::npos ? path.size() : end;
+            if (stop == i) malformed();  // "a..b", "a.", ".a", "]"
+            Step step;
+            step.key = path.substr(i, stop - i);
+            steps.push_back(step);
+            i = stop;
+        }
+    }
+    if (steps.empty()) malformed();
+    return steps;
+}
+
+// The override's value: JSON when it parses as JSON, else the text as a string.
+json parse_value(const Override& item, const std::string& source) {
+    try {
+        return json::parse(item.value);
+    } catch (const json::out_of_range& error) {
+        // "1e400" is a number, just not a finite one: say so instead of treating it as text.
+        fail(source, item.path, "invalid value: " + scene_json::json_problem(error.what()));
+    } catch (const json::exception&) {
+        return json(item.value);
+    }
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+    const std::size_t equals = text.find('=');
+    if (equals == std::string::npos || equals == 0)
+        throw SceneError("--set " + text + ": expected path=value");
+    return Override{text.substr(0, equals), text.substr(equals + 1)};
+}
+
+void apply_overrides(json& doc, const std::vector<Override>& overrides, const std::string& source) {
+    for (const Override& item : overrides) {
+        const std::vector<Step> steps = parse_path(item.path, source);
+        json value = parse_value(item, source);
+        json* here = &doc;
+        std::string walked;  // the part of the path already walked, for messages
+        for (std::size_t s = 0; s < steps.size(); ++s) {
+            const Step& step = steps[s];
+            const bool leaf = s + 1 == steps.size();
+            const std::string where = walked.empty() ? "(root)" : walked;
+            if (step.is_index) {
+                if (!here->is_array()) fail(source, item.path, where + " is not an array");
+                const std::size_t size = here->size();
+                // The leaf may also append one entry: lights[2]={...} on two lights.
+                if (step.index > size || (step.index == size && !leaf))
+                    fail(source, item.path,
+                         "index " + std::to_string(step.index) + " out of range (" + where + " has " +
+                             std::to_string(size) + (size == 1 ? " entry)" : " entries)"));
+                if (leaf && step.index == size) {
+                    here->push_back(std::move(value));
+                    break;
+                }
+                here = &(*here)[step.index];
+                walked = scene_json::join_index(walked, step.index);
+            } else {
+                if (!here->is_object()) fail(source, item.path, where + " is not an object");
+                if (!leaf && !here->contains(step.key))
+                    fail(source, item.path, "no such key \"" + step.key + "\"");
+                here = &(*here)[step.key];
+                walked = scene_json::join_key(walked, step.key);
+            }
+            if (leaf) *here = std::move(value);
+        }
+    }
+}
+
+}  // namespace m3055

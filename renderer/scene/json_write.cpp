@@ -1,0 +1,101 @@
+// scene_to_json: Scene -> the SPEC section 7 format. Doubles are stored as JSON
+// doubles, which nlohmann writes in their shortest exact form, so
+// scene_from_json(scene_to_json(s)) == s for any scene the loader produced.
+// Fields a model / light type / projection does not read are not written (the
+// loader would reject them); they come back as the struct defaults.
+#include "scene/load.h"
+
+#include <nlohmann/json.hpp>
+
+namespace m3055 {
+
+using nlohmann::json;
+
+namespace {
+
+json vec(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json lobes_json(const std::vector<Lobe>& lobes, const char* key) {
+    json out = json::array();
+    for (const Lobe& lobe : lobes) out.push_back({{"w", lobe.w}, {key, lobe.m}});
+    return out;
+}
+
+json display_json(const Display& display) {
+    return {{"width", display.width}, {"height", display.height}, {"bits", display.bits},
+            {"dither", display.dither}};
+}
+
+json camera_json(const Camera& camera) {
+    json out = {{"projection", to_string(camera.projection)},
+                {"position", vec(camera.position)},
+                {"target", vec(camera.target)},
+                {"up", vec(camera.up)}};
+    if (camera.projection == Projection::perspective)
+        out["fov_y_deg"] = camera.fov_y_deg;
+    else
+        out["height"] = camera.height;
+    return out;
+}
+
+json light_json(const Light& light) {
+    json out = {{"type", to_string(light.type)},
+                {"intensity", light.intensity},
+                {"color", vec(light.color)},
+                {"enabled", light.enabled}};
+    if (light.type == LightType::directional) {
+        out["direction"] = vec(light.direction);
+    } else {
+        out["position"] = vec(light.position);
+        out["attenuation"] = json::array({light.att_constant, light.att_linear, light.att_quadratic});
+    }
+    if (light.type == LightType::spot) {
+        out["spot_direction"] = vec(light.spot_direction);
+        out["spot_exponent"] = light.spot_exponent;
+    }
+    if (!light.lobes.empty())
+        out["lobes"] = lobes_json(light.lobes, light.lobe_kind == LobeKind::beckmann ? "m" : "n");
+    return out;
+}
+
+json material_json(const Material& material) {
+    json out = {{"model", to_string(material.model)}, {"color", vec(material.color)}, {"d", material.d}};
+    switch (material.model) {
+        case Model::translucent:
+            out["t_n"] = material.t_n;
+            out["t_p"] = material.t_p;
+            [[fallthrough]];
+        case Model::highlight:
+            out["w"] = material.w;
+            out["m"] = material.m;
+            break;
+        case Model::metal:
+            out["lobes"] = lobes_json(material.lobes, "m");
+            break;
+        case Model::metal_blinn:
+        case Model::metal_phong:
+            out["lobes"] = lobes_json(material.lobes, "n");
+            break;
+    }
+    return out;
+}
+
+}  // namespace
+
+json scene_to_json(const Scene& scene) {
+    json lights = json::array();
+    for (const Light& light : scene.lights) lights.push_back(light_json(light));
+    json objects = json::array();
+    for (const Object& object : scene.objects)
+        objects.push_back({{"shape", "sphere"},
+                           {"center", vec(object.center)},
+                           {"radius", object.radius},
+                           {"material", material_json(object.material)}});
+    return {{"display", display_json(scene.display)},
+            {"background", vec(scene.background)},
+            {"camera", camera_json(scene.camera)},
+            {"lights", std::move(lights)},
+            {"objects", std::move(objects)}};
+}
+
+}  // namespace m3055
