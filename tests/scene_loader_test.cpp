@@ -522,6 +522,21 @@ TEST(SceneLoader, FileErrorsNameThePathAsGiven) {
     EXPECT_EQ(load_error(dir.file("empty.json")).rfind(dir.file("empty.json") + ": invalid JSON: ", 0), 0u);
 }
 
+TEST(SceneLoader, DuplicateKeysAreErrorsWithTheirPath) {
+    TempDir dir;
+    const auto error_for = [&](const std::string& text) {
+        test::write_text(dir.file("dup.json"), text);
+        return load_error(dir.file("dup.json"));
+    };
+    const std::string prefix = dir.file("dup.json") + ": ";
+    EXPECT_EQ(error_for(R"({"camera": {}, "camera": {}})"), prefix + "camera: duplicate key");
+    EXPECT_EQ(error_for(R"({"a": [1, [2, {}], {"x": [{"k": 1}, {"k": 2, "k": 3}]}]})"),
+              prefix + "a[2].x[1].k: duplicate key");
+    // Same key in sibling objects is fine: the scene is valid.
+    std::string text = kSpecExample;
+    EXPECT_EQ(error_for(text), "no error");
+}
+
 TEST(SceneLoader, NumbersBeyondDoubleAreRejectedNotReadAsInfinity) {
     TempDir dir;
     std::string text = kSpecExample;

@@ -3,6 +3,7 @@
 #include "scene/load.h"
 
 #include "scene/json_node.h"
+#include "scene/json_parse.h"
 
 #include <glm/geometric.hpp>
 
@@ -291,12 +292,7 @@ Scene scene_from_json(const json& doc, const std::string& source) {
 
 Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
     const std::string text = read_file(path);
-    json doc;
-    try {
-        doc = json::parse(text);
-    } catch (const json::exception& error) {
-        throw SceneError(path + ": invalid JSON: " + scene_json::json_problem(error.what()));
-    }
+    json doc = scene_json::parse_document(text, path);
     apply_overrides(doc, overrides, path);
     return scene_from_json(doc, path);
 }
