@@ -1,0 +1,16 @@
+// Each subcommand registers itself on the CLI11 app from its own file.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace m3055 {
+
+void add_render_command(CLI::App& app);   // app/cmd_render.cpp
+void add_figures_command(CLI::App& app);  // app/cmd_figures.cpp
+
+// Exit codes shared by the subcommands.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // bad input, render or write failure
+inline constexpr int kExitUsage = 2;    // command-line usage error (CLI11)
+
+}  // namespace m3055

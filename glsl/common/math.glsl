@@ -1,0 +1,37 @@
+// Numeric helpers shared by every term. C++ twin: renderer/reference/terms.cpp.
+
+// x^e with x^0 = 1 for every x >= 0 (SPEC 4). GLSL leaves pow(0, 0) undefined.
+float pow_safe(float x, float e) {
+    if (e <= 0.0) return 1.0;
+    if (x <= 0.0) return 0.0;
+    return pow(x, e);
+}
+
+// 1 - cos of the angle between a and b (any lengths). Near 0 the float
+// 1 - dot(a, b) keeps no digits, so use 1 - cos = sin^2 / (1 + cos) with sin
+// from the cross product, which stays accurate for tiny angles.
+float one_minus_cos(vec3 a, vec3 b) {
+    float inv_len2 = 1.0 / (dot(a, a) * dot(b, b));
+    float inv_len = sqrt(inv_len2);
+    float c = dot(a, b) * inv_len;
+    if (c <= 0.0) return 1.0 - c;
+    vec3 x = cross(a, b);
+    float sin2 = dot(x, x) * inv_len2;
+    return sin2 / (1.0 + c);
+}
+
+// log(1 - delta), accurate for small delta (GLSL has no log1p).
+float log_one_minus(float delta) {
+    if (delta < 0.01) {
+        return -delta * (1.0 + delta * (1.0 / 2.0 + delta * (1.0 / 3.0 + delta * (1.0 / 4.0 + delta / 5.0))));
+    }
+    return log(1.0 - delta);
+}
+
+// (cos+)^e for cos = 1 - delta, with x^0 = 1. Exponents up to 10000 amplify the
+// error of cos near 1 ten-thousandfold, hence the delta form.
+float pow_cos(float delta, float e) {
+    if (e <= 0.0) return 1.0;
+    if (delta >= 1.0) return 0.0;
+    return exp(e * log_one_minus(delta));
+}

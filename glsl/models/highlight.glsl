@@ -1,0 +1,33 @@
+// SPEC 4.1: a coloured object whose highlight goes to display white (eq. 3-4),
+// extended to several coloured lights. C++ twin: ref::shade_opaque (highlight).
+
+// The two parts shared with the translucent model (SPEC 4.2):
+//   C1   = min([d + (1 - d) sum_l a_l c_l (N.L_l)+] C0, 1)
+//   keep = prod_l (1 - s_l)
+struct HighlightParts {
+    vec3 C1;
+    vec3 keep;
+};
+
+HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
+    vec3 diffuse = vec3(0.0);
+    vec3 keep = vec3(1.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        LightSample light = light_sample(i, P);
+        float NoL = dot(N, light.L);
+        if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
+        diffuse += light.scale * NoL;
+        vec3 R = 2.0 * NoL * N - light.L;
+        float one_minus_RoV = one_minus_cos(R, V);
+        keep *= 1.0 - highlight_strength(mat.w, light.scale, one_minus_RoV, mat.m);
+    }
+    HighlightParts parts;
+    parts.C1 = min((mat.d + (1.0 - mat.d) * diffuse) * mat.color, vec3(1.0));
+    parts.keep = keep;
+    return parts;
+}
+
+vec3 shade_highlight(Material mat, vec3 P, vec3 N, vec3 V) {
+    HighlightParts parts = highlight_parts(mat, P, N, V);
+    return highlight_to_white(parts.C1, parts.keep);
+}

@@ -1,0 +1,18 @@
+// Every model, selected per object. The renderer may compile a program with
+// only the models a scene uses (HAS_* defines); a general program has them all.
+#include "common/math.glsl"
+#include "common/material.glsl"
+#include "common/lights.glsl"
+#include "terms/beckmann.glsl"
+#include "terms/ct_geometry.glsl"
+#include "terms/kay_opacity.glsl"
+#include "terms/highlight_blend.glsl"
+#include "models/highlight.glsl"
+#include "models/translucent.glsl"
+#include "models/metal.glsl"
+
+// An opaque point (every model but translucent).
+vec3 shade_opaque(Material mat, vec3 P, vec3 N, vec3 V) {
+    if (mat.model == MODEL_HIGHLIGHT) return shade_highlight(mat, P, N, V);
+    return shade_metal(mat, P, N, V);
+}

@@ -1,0 +1,75 @@
+#include "gl/program.h"
+
+#include "gl/shader_source.h"
+
+#include <stdexcept>
+#include <tuple>
+
+namespace m3055 {
+
+bool ProgramKey::operator<(const ProgramKey& other) const {
+    return std::tie(vertex, fragment, defines) < std::tie(other.vertex, other.fragment, other.defines);
+}
+
+static unsigned compile(const GlApi& gl, GLenum stage, const std::string& path,
+                        const std::vector<std::string>& defines) {
+    const ComposedShader source = compose_shader(path, defines);
+    const unsigned shader = gl.CreateShader(stage);
+    const char* text = source.text.c_str();
+    gl.ShaderSource(shader, 1, &text, nullptr);
+    gl.CompileShader(shader);
+    GLint ok = 0;
+    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(length > 0 ? length : 1), '\0');
+        gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+        gl.DeleteShader(shader);
+        while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+        throw std::runtime_error("cannot compile glsl/" + path + ":\n" + annotate_shader_log(log, source.files));
+    }
+    return shader;
+}
+
+unsigned build_program(const GlApi& gl, const ProgramKey& key) {
+    const unsigned vertex = compile(gl, GL_VERTEX_SHADER, key.vertex, key.defines);
+    unsigned fragment = 0;
+    try {
+        fragment = compile(gl, GL_FRAGMENT_SHADER, key.fragment, key.defines);
+    } catch (...) {
+        gl.DeleteShader(vertex);
+        throw;
+    }
+    const unsigned program = gl.CreateProgram();
+    gl.AttachShader(program, vertex);
+    gl.AttachShader(program, fragment);
+    gl.LinkProgram(program);
+    gl.DeleteShader(vertex);
+    gl.DeleteShader(fragment);
+    GLint ok = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+        std::string log(std::size_t(length > 0 ? length : 1), '\0');
+        gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+        gl.DeleteProgram(program);
+        throw std::runtime_error("cannot link glsl/" + key.vertex + " + glsl/" + key.fragment + ": " + log);
+    }
+    return program;
+}
+
+ProgramCache::~ProgramCache() {
+    for (auto& entry : programs_) gl_.DeleteProgram(entry.second);
+}
+
+unsigned ProgramCache::get(const ProgramKey& key) {
+    auto found = programs_.find(key);
+    if (found != programs_.end()) return found->second;
+    const unsigned program = build_program(gl_, key);
+    programs_.emplace(key, program);
+    return program;
+}
+
+}  // namespace m3055

@@ -1,0 +1,109 @@
+#include "gpu_compare.h"
+
+#include "gl/context.h"
+#include "image/quantize.h"
+#include "reference/reference.h"
+#include "renderer.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+namespace m3055::test {
+
+namespace {
+
+struct Gpu {
+    std::unique_ptr<HeadlessContext> context = HeadlessContext::create(Backend::automatic);
+    Renderer renderer{context->gl()};
+};
+
+Gpu& gpu() {
+    static Gpu instance;
+    return instance;
+}
+
+}  // namespace
+
+std::string Comparison::describe() const {
+    std::ostringstream text;
+    text << "interior pixels " << interior_pixels << ", max |diff| " << max_abs_diff << ", max scaled diff "
+         << max_scaled_diff << ", mean |diff| " << mean_abs_diff << ", same level " << same_level_share * 100
+         << "%, max level diff " << max_level_diff << ", non-finite " << nonfinite_values;
+    return text.str();
+}
+
+Comparison compare_gpu_with_reference(const Scene& scene) {
+    Gpu& g = gpu();
+    g.renderer.render(scene);
+    const RgbFloatImage raw = g.renderer.read_raw();
+    const ref::ReferenceImage reference = ref::render_reference(scene);
+    const int w = scene.display.width, h = scene.display.height, bits = scene.display.bits;
+
+    Comparison result;
+    long same = 0;
+    double sum = 0;
+    for (float value : raw.pixels)
+        if (!std::isfinite(value)) ++result.nonfinite_values;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (!ref::is_interior(reference, x, y)) continue;
+            ++result.interior_pixels;
+            bool same_level = true;
+            for (int c = 0; c < 3; ++c) {
+                const double expected = reference.rgb[(std::size_t(y) * w + x) * 3 + c];
+                const double actual = raw.pixels[(std::size_t(h - 1 - y) * w + x) * 3 + c];  // raw is bottom-up
+                const double diff = std::abs(actual - expected);
+                result.max_abs_diff = std::max(result.max_abs_diff, diff);
+                result.max_scaled_diff = std::max(result.max_scaled_diff, diff / std::max(1.0, std::abs(expected)));
+                sum += diff;
+                const int level_diff = std::abs(quantize_level(actual, bits) - quantize_level(expected, bits));
+                result.max_level_diff = std::max(result.max_level_diff, level_diff);
+                if (level_diff) same_level = false;
+            }
+            if (same_level) ++same;
+        }
+    }
+    if (result.interior_pixels) {
+        result.mean_abs_diff = sum / (3.0 * result.interior_pixels);
+        result.same_level_share = double(same) / result.interior_pixels;
+    } else {
+        result.same_level_share = 1.0;
+    }
+    return result;
+}
+
+Scene single_sphere_scene(const Material& material, const std::vector<Light>& lights, bool orthographic) {
+    Scene scene;
+    scene.camera.position = {0, 0, 4.5};
+    scene.camera.target = {0, 0, 0};
+    scene.camera.up = {0, 1, 0};
+    if (orthographic) {
+        scene.camera.projection = Projection::orthographic;
+        scene.camera.height = 2.5;
+    } else {
+        scene.camera.projection = Projection::perspective;
+        scene.camera.fov_y_deg = 30;
+    }
+    scene.lights = lights;
+    Object sphere;
+    sphere.center = {0, 0, 0};
+    sphere.radius = 1.0;
+    sphere.material = material;
+    scene.objects.push_back(sphere);
+    return scene;
+}
+
+Light directional(const dvec3& direction, double intensity, const dvec3& color) {
+    Light light;
+    light.type = LightType::directional;
+    light.direction = glm::normalize(direction);
+    light.intensity = intensity;
+    light.color = color;
+    return light;
+}
+
+}  // namespace m3055::test

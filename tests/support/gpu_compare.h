@@ -1,0 +1,31 @@
+// Renders a scene on the GPU (headless context, llvmpipe) and with the CPU
+// reference, and measures how far apart they are.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <string>
+
+namespace m3055::test {
+
+struct Comparison {
+    double max_abs_diff = 0;     // over interior pixels, unquantized colour
+    double max_scaled_diff = 0;  // |gpu - ref| / max(1, |ref|): what the tolerance bounds
+    double mean_abs_diff = 0;
+    double same_level_share = 0; // share of interior pixels on the same display level (all channels)
+    int max_level_diff = 0;      // largest level difference on interior pixels
+    long interior_pixels = 0;
+    long nonfinite_values = 0;   // NaN or Inf anywhere in the GPU's raw output
+    std::string describe() const;
+};
+
+// Shared headless GL context + renderer for the whole test process.
+Comparison compare_gpu_with_reference(const Scene& scene);
+
+// A scene with one sphere of `material` at the origin, the SPEC 7 camera
+// (perspective, or orthographic with height 2.5), and `lights`.
+Scene single_sphere_scene(const Material& material, const std::vector<Light>& lights, bool orthographic);
+
+Light directional(const dvec3& direction, double intensity = 1.0, const dvec3& color = dvec3(1.0));
+
+}  // namespace m3055::test
