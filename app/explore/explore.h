@@ -1,0 +1,25 @@
+// The interactive explorer: a GLFW window with a GL 3.3 core context, Dear
+// ImGui panels, and the same Renderer as `m3055 render` drawing the scene.
+#pragma once
+
+#include <string>
+
+namespace m3055 {
+
+struct ExploreOptions {
+    std::string scene_path;      // --scene: start with this scene (default: the SPEC example)
+    std::string script_path;     // --script: UI actions to run, one per frame (see script.h)
+    bool exit_after_script = false;  // --exit-after-script
+    std::string capture_window;  // --capture-window: PNG of the whole window when the script
+                                 // ends (or after the first frames without a script)
+    std::string stats_path;      // --stats: JSON with frame counts, written at exit
+    int window_width = 1500;
+    int window_height = 940;
+};
+
+// Runs until the window closes, Esc, or the script ends with exit_after_script.
+// Returns the process exit status: 0, or 1 when no window could be opened, the
+// scene could not be loaded at start, or a script command failed.
+int run_explorer(const ExploreOptions& options);
+
+}  // namespace m3055

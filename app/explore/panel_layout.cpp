@@ -1,0 +1,92 @@
+// The two fixed windows and the order of the side panel's sections.
+#include "explore/panels.h"
+
+#include "explore/polar_plot.h"
+#include "explore/widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace m3055::explore {
+
+namespace {
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+}
+
+void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+                     float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("M3055 material explorer", nullptr, kFixed);
+    ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
+
+    if (!state.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
+        ImGui::TextWrapped("Error: %s", state.error.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) state.error.clear();
+        ImGui::Separator();
+    }
+
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Display")) display_section(state, info);
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Material")) material_section(state);
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Lights")) lights_section(state);
+    if (ImGui::CollapsingHeader("Objects and figure presets")) objects_section(state);
+    if (ImGui::CollapsingHeader("Camera")) camera_section(state);
+    if (ImGui::CollapsingHeader("A/B compare")) compare_section(state);
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("File")) file_section(state);
+
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+                       float width, float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("Plane of incidence", nullptr, kFixed);
+
+    ImGui::BeginGroup();
+    const Material* material = selected_material(state);
+    if (material && !state.scene.lights.empty()) {
+        state.selected_light =
+            std::clamp(state.selected_light, 0, static_cast<int>(state.scene.lights.size()) - 1);
+        const Light& light = state.scene.lights[state.selected_light];
+        const double incidence = incidence_towards_camera(light, state.scene.camera);
+        ImGui::Text("object %d (%s), light %d at %.1f deg to N", state.selected_object,
+                    to_string(material->model), state.selected_light, incidence);
+        // The half-disc plot is twice as wide as it is tall, plus a line of text under it.
+        const float room = ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() - 14.0f;
+        polar_plot(*material, light, std::min(incidence, 90.0), std::min(2.0f * room, width * 0.5f));
+    } else {
+        ImGui::TextUnformatted("(no light: nothing to plot)");
+    }
+    ImGui::EndGroup();
+
+    ImGui::SameLine(0.0f, 24.0f);
+    ImGui::BeginGroup();
+    ImGui::Text("frame  %.2f ms (UI)", info.frame_ms);
+    ImGui::Text("render %.2f ms (%d x %d, %d bits)", info.render_ms, state.scene.display.width,
+                state.scene.display.height, state.scene.display.bits);
+    ImGui::Text("frames drawn %ld, scene renders %ld", info.frames, info.renders);
+    ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
+    ImGui::Separator();
+    ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
+    ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
+    ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
+    ImGui::Separator();
+    hint("The polar plot is the CPU reference's value for view directions across the plane "
+         "of L and N: red, green and blue curves; the light at its current angle to the "
+         "sphere point facing the camera. Drag on the display to orbit, wheel to zoom.");
+    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+    ImGui::EndGroup();
+    ImGui::End();
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,109 @@
+// Lights section: presets, then one collapsible block per light.
+#include "explore/panels.h"
+
+#include "explore/light_widgets.h"
+#include "explore/widgets.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace m3055::explore {
+
+namespace {
+
+bool light_editor(ExplorerState& state, int index) {
+    Light& light = state.scene.lights[index];
+    bool changed = false;
+    changed |= ImGui::Checkbox("enabled", &light.enabled);
+    ImGui::SameLine();
+    int type = static_cast<int>(light.type);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::Combo("type", &type, "directional\0point\0spot\0")) {
+        light.type = static_cast<LightType>(type);
+        changed = true;
+    }
+    static double azimuth_memory[kMaxLights] = {};
+    if (light.type == LightType::directional) {
+        changed |= light_sphere_widget("##sphere", &light.direction, 38.0f);
+        ImGui::SameLine();
+        ImGui::BeginGroup();
+        ImGui::PushItemWidth(150);
+        changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        ImGui::PopItemWidth();
+        ImGui::EndGroup();
+    } else {
+        double p[3] = {light.position.x, light.position.y, light.position.z};
+        if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+            light.position = {p[0], p[1], p[2]};
+            changed = true;
+        }
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0);
+        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0);
+        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0);
+        if (light.type == LightType::spot) {
+            ImGui::TextUnformatted("spot direction:");
+            changed |= light_sphere_widget("##spot", &light.spot_direction, 30.0f);
+            changed |= slider_double("spot exponent", &light.spot_exponent, 0.0, 1000.0, "%.1f", true);
+        }
+    }
+    changed |= color_edit("colour c", &light.color);
+
+    // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
+    if (const Material* material = selected_material(state); material && uses_lobes(material->model)) {
+        const LobeKind kind = material->model == Model::metal ? LobeKind::beckmann : LobeKind::exponent;
+        bool own = !light.lobes.empty() && light.lobe_kind == kind;
+        if (ImGui::Checkbox("own lobes (replace the material's for this light)", &own)) {
+            light.lobes = own ? material->lobes : std::vector<Lobe>{};
+            light.lobe_kind = kind;
+            changed = true;
+        }
+        if (own) changed |= lobe_editor("light_lobes", &light.lobes, kind == LobeKind::beckmann, 1);
+    }
+    return changed;
+}
+
+}  // namespace
+
+void lights_section(ExplorerState& state) {
+    ImGui::TextUnformatted("presets:");
+    int column = 0;
+    for (LightPreset preset : kAllLightPresets) {
+        if (column++ % 2) ImGui::SameLine();
+        if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
+            apply_light_preset(state, preset);
+        }
+    }
+    auto& lights = state.scene.lights;
+    for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+        ImGui::PushID(i);
+        const std::string title = "light " + std::to_string(i) + " (" + to_string(lights[i].type) +
+                                  (lights[i].enabled ? "" : ", off") + ")###light";
+        ImGui::SetNextItemOpen(i < 2, ImGuiCond_Once);
+        const bool open = ImGui::TreeNode(title.c_str());
+        if (ImGui::IsItemClicked()) state.selected_light = i;
+        ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
+        const bool removed = ImGui::SmallButton("remove");
+        if (open) {
+            if (!removed && light_editor(state, i)) {
+                state.selected_light = i;
+                state.changed();
+            }
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+        if (removed) {
+            remove_light(state, i);
+            break;
+        }
+    }
+    ImGui::BeginDisabled(static_cast<int>(lights.size()) >= kMaxExplorerLights);
+    if (ImGui::Button("+ add light")) add_light(state);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
+}
+
+}  // namespace m3055::explore

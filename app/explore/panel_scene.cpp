@@ -1,0 +1,124 @@
+// Display, objects (with the figure presets), camera, compare and file sections.
+#include "explore/panels.h"
+
+#include "explore/figure_scenes.h"
+#include "explore/widgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <string>
+
+namespace m3055::explore {
+
+bool material_editor(Material& material);  // panel_material.cpp
+
+void display_section(ExplorerState& state, const FrameInfo& info) {
+    Display& display = state.scene.display;
+    if (ImGui::Button("M3055 (512 x 320, 5 bits)")) set_display_m3055(state);
+    ImGui::SameLine();
+    if (ImGui::Button("Modern (window, 8 bits)")) set_display_modern(state, info.free_width, info.free_height);
+    int size[2] = {display.width, display.height};
+    if (ImGui::InputInt2("width, height", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        display.width = std::clamp(size[0], 1, kMaxDisplaySize);
+        display.height = std::clamp(size[1], 1, kMaxDisplaySize);
+        state.changed();
+    }
+    if (ImGui::SliderInt("bits", &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) state.changed();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d levels", 1 << display.bits);
+    if (ImGui::Checkbox("ordered dithering (4x4 Bayer)", &display.dither)) state.changed();
+    if (color_edit("background", &state.scene.background)) state.changed();
+}
+
+void objects_section(ExplorerState& state) {
+    ImGui::TextUnformatted("figure presets (keys 1-9, 0 = SPEC example):");
+    int n = 0;
+    for (const FigureScene& figure : figure_scenes()) {
+        std::string label = figure.name;
+        if (label.rfind("fig", 0) == 0) label = "Fig. " + std::to_string(std::stoi(label.substr(3)));
+        if (n++ % 5) ImGui::SameLine();
+        if (ImGui::Button(label.c_str())) load_figure(state, figure.name);
+    }
+    ImGui::Separator();
+    auto& objects = state.scene.objects;
+    for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
+        ImGui::PushID(i);
+        const std::string label = "sphere " + std::to_string(i) + ": " + to_string(objects[i].material.model);
+        if (ImGui::Selectable(label.c_str(), state.selected_object == i)) state.selected_object = i;
+        if (state.selected_object == i) {
+            Object& o = objects[i];
+            double c[3] = {o.center.x, o.center.y, o.center.z};
+            if (ImGui::DragScalarN("centre", ImGuiDataType_Double, c, 3, 0.02f)) {
+                o.center = {c[0], c[1], c[2]};
+                state.changed();
+            }
+            if (slider_double("radius", &o.radius, 0.01, 10.0, "%.3f", true)) state.changed();
+            ImGui::BeginDisabled(objects.size() <= 1);
+            const bool removed = ImGui::SmallButton("remove this sphere");
+            ImGui::EndDisabled();
+            if (removed) {
+                remove_object(state, i);
+                ImGui::PopID();
+                break;
+            }
+        }
+        ImGui::PopID();
+    }
+    if (ImGui::Button("+ add sphere")) add_object(state);
+}
+
+void camera_section(ExplorerState& state) {
+    Camera& camera = state.scene.camera;
+    int projection = static_cast<int>(camera.projection);
+    if (ImGui::Combo("projection", &projection, "perspective\0orthographic\0")) {
+        camera.projection = static_cast<Projection>(projection);
+        state.changed();
+    }
+    if (camera.projection == Projection::perspective) {
+        if (slider_double("fov y", &camera.fov_y_deg, 1.0, 170.0, "%.1f deg")) state.changed();
+    } else {
+        if (slider_double("view height", &camera.height, 0.01, 100.0, "%.3f", true)) state.changed();
+    }
+    double p[3] = {camera.position.x, camera.position.y, camera.position.z};
+    if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+        const dvec3 moved(p[0], p[1], p[2]);
+        if (moved != camera.target) camera.position = moved;  // SPEC 7: position != target
+        state.changed();
+    }
+    double t[3] = {camera.target.x, camera.target.y, camera.target.z};
+    if (ImGui::DragScalarN("target", ImGuiDataType_Double, t, 3, 0.05f)) {
+        const dvec3 moved(t[0], t[1], t[2]);
+        if (moved != camera.position) camera.target = moved;
+        state.changed();
+    }
+    if (ImGui::Button("Reset camera (R)")) reset_camera(state);
+    hint("Drag on the display to orbit around the target; the mouse wheel zooms.");
+}
+
+void compare_section(ExplorerState& state) {
+    if (ImGui::Checkbox("split: A | B side by side", &state.compare)) state.changed();
+    hint("A is the scene as edited above; B is the same scene with the selected object "
+         "wearing material B (e.g. metal eq. 12 against metal_blinn eq. 15).");
+    if (ImGui::Button("B = copy of A")) {
+        if (const Material* a = selected_material(state)) state.material_b = *a;
+        state.changed();
+    }
+    ImGui::PushID("material_b");
+    if (material_editor(state.material_b)) state.changed();
+    ImGui::PopID();
+}
+
+void file_section(ExplorerState& state) {
+    ImGui::InputText("scene JSON", &state.save_path);
+    if (ImGui::Button("Save scene (Ctrl+S)")) save_scene(state, state.save_path);
+    ImGui::InputText("screenshot", &state.screenshot_path);
+    if (ImGui::Button("Screenshot PNG + JSON (F12)")) state.screenshot_requested = true;
+    ImGui::InputText("load", &state.load_path);
+    ImGui::SameLine();
+    if (ImGui::Button("Load")) load_scene(state, state.load_path);
+    hint("Or drop a .json scene file onto the window.");
+}
+
+}  // namespace m3055::explore

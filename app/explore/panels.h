@@ -1,0 +1,41 @@
+// The explorer's ImGui windows. Each function draws one part of the UI and
+// edits ExplorerState through the shared actions in state.h.
+#pragma once
+
+#include "explore/state.h"
+
+#include <string>
+
+namespace m3055::explore {
+
+// What the panels show about the running program and the window.
+struct FrameInfo {
+    double frame_ms = 0.0;    // CPU time of the last UI frame (without waiting)
+    double render_ms = 0.0;   // the last scene render (GPU finished), both halves in compare
+    long frames = 0;          // UI frames drawn so far
+    long renders = 0;         // scene renders so far
+    std::string gl_renderer;  // GL_RENDERER of the window's context
+    std::string gl_version;   // GL_VERSION
+    std::string window_system;  // glfwGetVersionString()
+    int free_width = 0;       // pixels available for the display (for the "modern" preset)
+    int free_height = 0;
+    int scale = 1;            // whole-pixel magnification of the display
+};
+
+// Left column: display, material, lights, objects and figures, camera, compare, file.
+void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+                     float height);
+// Bottom strip: the polar plot of the selected material and the frame statistics.
+void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+                       float width, float height);
+
+// Sections of the side panel (one file each).
+void display_section(ExplorerState& state, const FrameInfo& info);
+void material_section(ExplorerState& state);
+void lights_section(ExplorerState& state);
+void objects_section(ExplorerState& state);
+void camera_section(ExplorerState& state);
+void compare_section(ExplorerState& state);
+void file_section(ExplorerState& state);
+
+}  // namespace m3055::explore

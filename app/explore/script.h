@@ -1,0 +1,72 @@
+// --script: a text file of UI actions, one a line, run one per frame through
+// the same functions the panels and keys call (state.h, keys.h), so a test can
+// drive the explorer without a mouse. '#' starts a comment. Commands:
+//
+//   set PATH VALUE          a scene field, as m3055's --set (validated like a load),
+//                           e.g. set objects[0].material.m 40
+//   model NAME              the selected object's model (as the model selector)
+//   select_object I | select_light I
+//   rescale_eq14            the Material panel's eq. 14 button
+//   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
+//   light_angles I AZ EL    light I's azimuth/elevation sliders (degrees)
+//   light_drag I X Y        a drag on light I's sphere widget, disc coordinates (y up)
+//   add_light | remove_light I | add_object | remove_object I
+//   figure NAME             a figure preset (fig05 ... fig13, spec_example)
+//   load PATH               load a scene file (errors show in the window)
+//   display m3055|modern    the Display panel's two preset buttons
+//   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
+//   compare on|off | compare_model NAME
+//   key NAME                a key press: escape, r, f1, f12, ctrl+s, 0-9
+//   screenshot PATH         display-resolution PNG + scene JSON beside it
+//   save PATH               scene JSON
+//   capture PATH            a PNG of the whole window after the next frame
+//   idle SECONDS            no input for that long; counts the frames drawn meanwhile
+//   quit
+#pragma once
+
+#include "explore/state.h"
+
+#include <string>
+#include <vector>
+
+namespace m3055::explore {
+
+struct IdleRecord {
+    double seconds = 0.0;
+    long frames = 0;  // UI frames drawn while idle
+};
+
+class Script {
+public:
+    // Reads the file; throws std::runtime_error naming it when unreadable.
+    static Script from_file(const std::string& path);
+
+    bool finished() const { return next_ >= lines_.size() && !idling(); }
+    bool idling() const { return idle_until_ > 0.0; }
+    double idle_until() const { return idle_until_; }
+
+    // Runs the next command (or ends an idle period whose time has come).
+    // `now` is glfwGetTime(), `frames` the frames drawn so far.
+    void step(ExplorerState& state, double now, long frames, int free_width, int free_height);
+
+    // Set by `capture`: the frame loop writes the window to it and clears it.
+    std::string capture_path;
+
+    int errors() const { return errors_; }
+    const std::vector<IdleRecord>& idle_records() const { return idle_records_; }
+
+private:
+    void run(ExplorerState& state, const std::string& line, double now, long frames,
+             int free_width, int free_height);
+
+    std::string path_;
+    std::vector<std::string> lines_;
+    std::size_t next_ = 0;
+    int errors_ = 0;
+    double idle_until_ = 0.0;
+    double idle_seconds_ = 0.0;
+    long idle_start_frames_ = 0;
+    std::vector<IdleRecord> idle_records_;
+};
+
+}  // namespace m3055::explore

@@ -1,0 +1,204 @@
+#include "explore/state.h"
+
+#include "explore/figure_scenes.h"
+#include "image/image.h"
+#include "scene/load.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace m3055::explore {
+
+void set_scene(ExplorerState& state, const Scene& scene, const std::string& name) {
+    state.scene = scene;
+    state.camera_home = scene.camera;
+    state.scene_name = name;
+    state.selected_object = 0;
+    state.selected_light = 0;
+    if (!scene.objects.empty()) state.material_b = scene.objects[0].material;
+    state.changed();
+}
+
+bool load_scene(ExplorerState& state, const std::string& path) {
+    try {
+        set_scene(state, load_scene_file(path), path);
+        state.status = "loaded " + path;
+        state.error.clear();
+        return true;
+    } catch (const std::exception& e) {  // SceneError names file and JSON path
+        state.error = e.what();
+        return false;
+    }
+}
+
+bool load_figure(ExplorerState& state, const std::string& name) {
+    for (const FigureScene& figure : figure_scenes()) {
+        if (figure.name != name) continue;
+        try {
+            const std::string source = "scenes/" + name + ".json";
+            set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
+            state.status = "figure preset " + name;
+            state.error.clear();
+            return true;
+        } catch (const std::exception& e) {
+            state.error = e.what();
+            return false;
+        }
+    }
+    state.error = "no figure preset named '" + name + "'";
+    return false;
+}
+
+bool save_scene(ExplorerState& state, const std::string& path) {
+    try {
+        const std::string text = scene_to_json(state.scene).dump(2) + "\n";
+        write_file_atomic(path, text.data(), text.size());
+        state.status = "saved " + path;
+        return true;
+    } catch (const std::exception& e) {
+        state.error = e.what();
+        return false;
+    }
+}
+
+Material* selected_material(ExplorerState& state) {
+    if (state.scene.objects.empty()) return nullptr;
+    state.selected_object =
+        std::clamp(state.selected_object, 0, static_cast<int>(state.scene.objects.size()) - 1);
+    return &state.scene.objects[state.selected_object].material;
+}
+
+void set_model(Material& material, Model model) {
+    const bool was_beckmann = material.model == Model::metal;
+    const bool now_beckmann = model == Model::metal;
+    const bool lobes_keep_meaning =
+        uses_lobes(material.model) && uses_lobes(model) && was_beckmann == now_beckmann;
+    if (uses_lobes(model) && (!lobes_keep_meaning || material.lobes.empty())) {
+        material.lobes = default_lobes(model);
+        material.d = 0.05;  // the paper's metals; the default lobes meet eq. 14 with it
+    }
+    material.model = model;
+}
+
+void apply_light_preset(ExplorerState& state, LightPreset preset) {
+    state.scene.lights = light_preset(preset);
+    state.selected_light = 0;
+    state.changed();
+}
+
+bool add_light(ExplorerState& state) {
+    if (static_cast<int>(state.scene.lights.size()) >= kMaxExplorerLights) return false;
+    state.scene.lights.push_back(light_preset(LightPreset::single_key)[0]);
+    state.selected_light = static_cast<int>(state.scene.lights.size()) - 1;
+    state.changed();
+    return true;
+}
+
+bool remove_light(ExplorerState& state, int index) {
+    auto& lights = state.scene.lights;
+    if (index < 0 || index >= static_cast<int>(lights.size())) return false;
+    lights.erase(lights.begin() + index);
+    state.selected_light = std::clamp(state.selected_light, 0, std::max(0, static_cast<int>(lights.size()) - 1));
+    state.changed();
+    return true;
+}
+
+void add_object(ExplorerState& state) {
+    Object sphere;
+    if (Material* material = selected_material(state)) sphere.material = *material;
+    // Beside the right-most sphere, so the new one is visible and does not overlap.
+    double right = -1e300;
+    for (const Object& o : state.scene.objects) right = std::max(right, o.center.x + o.radius);
+    if (!state.scene.objects.empty()) sphere.center = {right + 0.25 + sphere.radius, 0.0, 0.0};
+    state.scene.objects.push_back(sphere);
+    state.selected_object = static_cast<int>(state.scene.objects.size()) - 1;
+    state.changed();
+}
+
+bool remove_object(ExplorerState& state, int index) {
+    auto& objects = state.scene.objects;
+    if (objects.size() <= 1 || index < 0 || index >= static_cast<int>(objects.size())) return false;
+    objects.erase(objects.begin() + index);
+    selected_material(state);  // clamps the selection
+    state.changed();
+    return true;
+}
+
+void set_display_m3055(ExplorerState& state) {
+    state.scene.display.width = 512;
+    state.scene.display.height = 320;
+    state.scene.display.bits = 5;
+    state.changed();
+}
+
+void set_display_modern(ExplorerState& state, int width, int height) {
+    state.scene.display.width = std::clamp(width, 1, kMaxDisplaySize);
+    state.scene.display.height = std::clamp(height, 1, kMaxDisplaySize);
+    state.scene.display.bits = 8;
+    state.scene.display.dither = false;
+    state.changed();
+}
+
+namespace {
+// Rodrigues' rotation of v by `angle` radians about the unit axis k.
+dvec3 rotate(const dvec3& v, double angle, const dvec3& k) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+}
+
+// Radians of orbit per pixel dragged: a 300-pixel drag turns about 90 degrees.
+constexpr double kOrbitPerPixel = 0.3 * 3.14159265358979323846 / 180.0;
+// Keep the view direction at least this far (radians) from `up` (SPEC 7).
+constexpr double kPoleMargin = 0.02;
+// One wheel step moves 10 % closer.
+constexpr double kZoomPerStep = 0.9;
+}  // namespace
+
+void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels) {
+    Camera& c = state.scene.camera;
+    const dvec3 up = glm::normalize(c.up);
+    dvec3 offset = c.position - c.target;
+    // Dragging right turns the camera left around the object (the object seems to turn right).
+    offset = rotate(offset, -dx_pixels * kOrbitPerPixel, up);
+    // Dragging down raises the camera, clamped short of the poles.
+    const double radius = glm::length(offset);
+    const double polar = std::acos(std::clamp(glm::dot(offset / radius, up), -1.0, 1.0));
+    const double wanted = std::clamp(polar - dy_pixels * kOrbitPerPixel, kPoleMargin,
+                                     3.14159265358979323846 - kPoleMargin);
+    const dvec3 right = glm::normalize(glm::cross(offset, up));
+    offset = rotate(offset, polar - wanted, right);
+    c.position = c.target + offset;
+    state.changed();
+}
+
+void zoom_camera(ExplorerState& state, double wheel_steps) {
+    Camera& c = state.scene.camera;
+    const double factor = std::pow(kZoomPerStep, wheel_steps);
+    if (c.projection == Projection::orthographic) {
+        c.height = std::clamp(c.height * factor, 1e-3, 1e4);
+    } else {
+        const dvec3 offset = c.position - c.target;
+        const double distance = std::clamp(glm::length(offset) * factor, 1e-2, 1e4);
+        c.position = c.target + glm::normalize(offset) * distance;
+    }
+    state.changed();
+}
+
+void reset_camera(ExplorerState& state) {
+    state.scene.camera = state.camera_home;
+    state.changed();
+}
+
+Scene compare_scene(const ExplorerState& state) {
+    Scene b = state.scene;
+    if (!b.objects.empty()) {
+        const int i = std::clamp(state.selected_object, 0, static_cast<int>(b.objects.size()) - 1);
+        b.objects[i].material = state.material_b;
+    }
+    return b;
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,89 @@
+// Everything the explorer's UI edits, in one struct, plus the actions that the
+// panels, the keyboard and --script all share (so a scripted change goes
+// through the same code as a click). No ImGui and no GL in here.
+#pragma once
+
+#include "scene/presets.h"
+#include "scene/scene.h"
+
+#include <string>
+
+namespace m3055::explore {
+
+struct ExplorerState {
+    Scene scene;             // what is rendered and saved
+    Camera camera_home;      // R / "Reset" goes back to this (the loaded scene's camera)
+    std::string scene_name = "default";  // shown in the title bar
+
+    int selected_object = 0;  // whose material the Material panel edits
+    int selected_light = 0;   // which light the polar plot uses
+
+    // A/B compare: the selected object rendered a second time with material_b.
+    bool compare = false;
+    Material material_b;
+
+    bool show_panels = true;  // F1
+    bool screenshot_requested = false;  // button / F12: the frame loop owns the renderer
+    bool quit = false;        // Esc
+
+    std::string save_path = "m3055-scene.json";        // Ctrl+S
+    std::string screenshot_path = "m3055-screenshot.png";
+    std::string load_path;                             // the File panel's text field
+
+    std::string status;  // last message (saved ..., loaded ...)
+    std::string error;   // last error, shown in red until dismissed
+
+    // Set by every edit; the frame loop re-renders the scene once and clears it.
+    bool scene_changed = true;
+    void changed() { scene_changed = true; }
+};
+
+// Starts from `scene` (camera_home = its camera, selections reset, compare B =
+// a copy of the first object's material).
+void set_scene(ExplorerState& state, const Scene& scene, const std::string& name);
+
+// Loads a JSON scene file; on failure keeps the current scene and puts the
+// loader's one-line message into state.error. Returns success.
+bool load_scene(ExplorerState& state, const std::string& path);
+
+// The paper's figure presets (scenes/*.json embedded at build time), by file
+// stem: "fig05" ... "fig13", "spec_example". Unknown name -> error, false.
+bool load_figure(ExplorerState& state, const std::string& name);
+
+// Writes the scene JSON (atomically). Errors go to state.error.
+bool save_scene(ExplorerState& state, const std::string& path);
+
+// The selected object's material (the default scene always has one object).
+Material* selected_material(ExplorerState& state);
+
+// Switches a material's model; lobes are replaced by the model's defaults when
+// their meaning changes (Beckmann m_j <-> exponents n_j).
+void set_model(Material& material, Model model);
+
+// Replaces the lights with a preset.
+void apply_light_preset(ExplorerState& state, LightPreset preset);
+
+// Lights: add (a copy of the single-key light, up to kMaxExplorerLights) / remove.
+inline constexpr int kMaxExplorerLights = 8;
+bool add_light(ExplorerState& state);
+bool remove_light(ExplorerState& state, int index);
+
+// Objects: add a sphere beside the others / remove one (at least one stays).
+void add_object(ExplorerState& state);
+bool remove_object(ExplorerState& state, int index);
+
+// Display presets: the M3055 (512 x 320, 5 bits) and a "modern" display of the
+// given size (the free area of the window) at 8 bits.
+void set_display_m3055(ExplorerState& state);
+void set_display_modern(ExplorerState& state, int width, int height);
+
+// Camera: orbit around the target (drag, in pixels), zoom (wheel steps), reset.
+void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels);
+void zoom_camera(ExplorerState& state, double wheel_steps);
+void reset_camera(ExplorerState& state);
+
+// The second scene of the A/B compare: the same scene, the selected object
+// wearing material_b.
+Scene compare_scene(const ExplorerState& state);
+
+}  // namespace m3055::explore

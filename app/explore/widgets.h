@@ -1,0 +1,28 @@
+// Small ImGui helpers for the scene's double-precision fields, so every panel
+// uses the same slider behaviour (clamped to SPEC 7's ranges, log where the
+// parameter spans decades).
+#pragma once
+
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace m3055::explore {
+
+// A slider on a double; Ctrl+click types a value. Returns true when changed.
+// The result is clamped to [lo, hi], so the scene always stays valid.
+bool slider_double(const char* label, double* value, double lo, double hi,
+                   const char* format = "%.3f", bool logarithmic = false);
+
+// Colour picker for a [0,1]^3 colour.
+bool color_edit(const char* label, dvec3* color);
+
+// Up to kMaxLobes (w, m) or (w, n) rows with add/remove. `beckmann` selects the
+// ranges: m_j in [0.001, 2] for `metal`, n_j in [0, 10000] otherwise.
+// `min_lobes` = 1 for a material (SPEC 7: 1 to 4), 0 for a light's own lobes.
+bool lobe_editor(const char* id, std::vector<Lobe>* lobes, bool beckmann, int min_lobes);
+
+// Grey explanatory text that wraps.
+void hint(const char* text);
+
+}  // namespace m3055::explore
