@@ -720,6 +720,59 @@ TEST(SceneLoader, SceneToJsonRoundTripsAProgrammaticScene) {
     expect_same_scene(scene, load_text(scene_to_json(scene).dump()));
 }
 
+// Every leaf of the rich scene replaced by hostile values: the loader must either
+// accept (with finite values only) or throw SceneError with one line, nothing else.
+void collect_leaf_paths(const json& value, const json::json_pointer& here, std::vector<json::json_pointer>& out) {
+    if (value.is_object()) {
+        for (const auto& item : value.items()) collect_leaf_paths(item.value(), here / item.key(), out);
+    } else if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i) collect_leaf_paths(value[i], here / i, out);
+    }
+    out.push_back(here);
+}
+
+bool all_finite(const Scene& scene) {
+    const auto finite = [](const dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    bool ok = finite(scene.background) && finite(scene.camera.position) && finite(scene.camera.up) &&
+              std::isfinite(scene.camera.fov_y_deg) && std::isfinite(scene.camera.height);
+    for (const Light& l : scene.lights)
+        ok = ok && finite(l.direction) && finite(l.position) && finite(l.spot_direction) && finite(l.color) &&
+             std::isfinite(l.intensity + l.att_constant + l.att_linear + l.att_quadratic + l.spot_exponent);
+    for (const Object& o : scene.objects)
+        ok = ok && finite(o.center) && std::isfinite(o.radius) && finite(o.material.color) &&
+             std::isfinite(o.material.d + o.material.w + o.material.m + o.material.t_n + o.material.t_p);
+    return ok;
+}
+
+TEST(SceneLoader, HostileValuesGiveOneLineErrorsOrFiniteScenes) {
+    const json rich = json::parse(kRichScene);
+    std::vector<json::json_pointer> leaves;
+    collect_leaf_paths(rich, json::json_pointer(), leaves);
+    const std::vector<json> hostile = {
+        nullptr, true, -1, 0, 0.5, 1e-320, 1e308, -1e308, 8193, "x", "sphere", "\n\t\u0001",
+        json::array(), json::array({0, 0, 0}), json::array({1e-300, 0, 0}), json::array({1e308, 1e308, 1e308}),
+        json::object(), json::parse(R"({"w": 1, "m": 0.2})")};
+    int accepted = 0, rejected = 0;
+    for (const auto& pointer : leaves) {
+        for (const json& value : hostile) {
+            json doc = rich;
+            if (pointer.empty()) doc = value; else doc[pointer] = value;
+            try {
+                const Scene scene = scene_from_json(doc, "fuzz.json");
+                EXPECT_TRUE(all_finite(scene)) << pointer.to_string() << " = " << value.dump();
+                ++accepted;
+            } catch (const SceneError& error) {
+                const std::string message = error.what();
+                EXPECT_EQ(message.rfind("fuzz.json: ", 0), 0u) << message;
+                EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+                ++rejected;
+            }
+        }
+    }
+    EXPECT_GT(accepted, 0);
+    EXPECT_GT(rejected, accepted);
+}
+
 TEST(SceneLoader, ScenesShippedInTheRepositoryLoad) {
     const std::string dir = repo_path("scenes");
     if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no scenes/ folder";
