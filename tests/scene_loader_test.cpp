@@ -356,7 +356,7 @@ TEST(SceneLoader, EveryErrorClassGivesItsExactOneLineMessage) {
              d["camera"].erase("fov_y_deg");
              d["camera"]["height"] = 0;
          },
-         "scene.json: camera.height: must be > 0, got 0"},
+         "scene.json: camera.height: must be in (0, 1000000], got 0"},
         {"position equals target", [](json& d) { d["camera"]["target"] = {0, 0, 4.5}; },
          "scene.json: camera.target: must differ from camera.position"},
         {"up parallel", [](json& d) { d["camera"]["up"] = {0, 0, -2}; },

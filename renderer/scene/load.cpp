@@ -25,7 +25,6 @@ using scene_json::Range;
 namespace {
 
 constexpr std::size_t kMaxObjects = 100000;
-constexpr double kInf = HUGE_VAL;
 
 const Range kLobeWeight = closed(0.0, 100.0);
 const Range kBeckmannM = closed(0.001, 2.0);
@@ -67,7 +66,8 @@ Camera read_camera(const Node& node) {
     if (perspective)
         camera.fov_y_deg = node.required("fov_y_deg").number_in(Range{0.0, 180.0, true, true});
     else
-        camera.height = node.required("height").number_in(Range{0.0, kInf, true, false});
+        // Bounded like coordinates: height * aspect must stay finite in every renderer.
+        camera.height = node.required("height").number_in(Range{0.0, 1e6, true, false});
 
     // Coordinates are within 1e6, so the difference and its length cannot overflow;
     // 1e-9 keeps normalize(target - position) away from underflow in every renderer.
