@@ -118,14 +118,15 @@ int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect
     float x = std::floor((area.x + (area.w - total) * 0.5f) * fb_scale) / fb_scale;
     const float y = std::floor((area.y + (area.h - ih) * 0.5f) * fb_scale) / fb_scale;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const char* labels[2] = {"A", "B"};
+    const char* labels[2] = {"A: the scene (saved, screenshot)", "B: selected object in material B"};
     for (int i = 0; i < n; ++i) {
         // GL textures store row 0 at the bottom: flip v.
         draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(textures[i])),
                        ImVec2(x, y), ImVec2(x + iw, y + ih), ImVec2(0, 1), ImVec2(1, 0));
         // A thin frame shows the display's extent even where the scene is black.
         draw->AddRect(ImVec2(x - 1, y - 1), ImVec2(x + iw + 1, y + ih + 1), IM_COL32(90, 90, 100, 255));
-        if (n > 1) draw->AddText(ImVec2(x + 6, y + 4), IM_COL32(255, 255, 255, 220), labels[i]);
+        // Labels above the pictures, never on them: the display stays exactly the screenshot.
+        if (n > 1) draw->AddText(ImVec2(x, y - ImGui::GetTextLineHeight() - 4), IM_COL32(255, 255, 255, 220), labels[i]);
         x += iw + gap;
     }
     return std::max(scale, 0);

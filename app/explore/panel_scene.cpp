@@ -98,7 +98,8 @@ void camera_section(ExplorerState& state) {
 }
 
 void compare_section(ExplorerState& state) {
-    if (ImGui::Checkbox("split: A | B side by side", &state.compare)) state.changed();
+    bool on = state.compare;
+    if (ImGui::Checkbox("split: A | B side by side", &on)) set_compare(state, on);
     hint("A is the scene as edited above; B is the same scene with the selected object "
          "wearing material B (e.g. metal eq. 12 against metal_blinn eq. 15).");
     if (ImGui::Button("B = copy of A")) {

@@ -142,8 +142,9 @@ void Script::run(ExplorerState& state, const std::string& line, double now, long
     } else if (command == "zoom") {
         zoom_camera(state, number());
     } else if (command == "compare") {
-        state.compare = word() == "on";
-        state.changed();
+        const std::string on = word();
+        if (on != "on" && on != "off") throw std::runtime_error("compare: on or off");
+        set_compare(state, on == "on");
     } else if (command == "compare_model") {
         set_model(state.material_b, parse_model(word()));
         state.changed();

@@ -192,6 +192,14 @@ void reset_camera(ExplorerState& state) {
     state.changed();
 }
 
+void set_compare(ExplorerState& state, bool on) {
+    if (on && !state.compare) {
+        if (const Material* a = selected_material(state)) state.material_b = *a;
+    }
+    state.compare = on;
+    state.changed();
+}
+
 Scene compare_scene(const ExplorerState& state) {
     Scene b = state.scene;
     if (!b.objects.empty()) {

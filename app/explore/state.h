@@ -82,6 +82,10 @@ void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels);
 void zoom_camera(ExplorerState& state, double wheel_steps);
 void reset_camera(ExplorerState& state);
 
+// Turns the A/B split on or off; switching it on starts B as a copy of the
+// selected object's material (then change B's model or sliders).
+void set_compare(ExplorerState& state, bool on);
+
 // The second scene of the A/B compare: the same scene, the selected object
 // wearing material_b.
 Scene compare_scene(const ExplorerState& state);

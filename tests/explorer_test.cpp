@@ -1,0 +1,212 @@
+// The explorer under a virtual X server (xvfb-run): a scripted session must
+// save a screenshot byte-identical to `m3055 render` of the saved scene, show
+// panels and the emulated display in its window, and sleep when idle.
+#include "image/image.h"
+#include "scene/presets.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#ifndef M3055_BINARY
+#define M3055_BINARY "m3055"
+#endif
+
+namespace m3055 {
+namespace {
+
+using test::TempDir;
+
+// xvfb-run on $PATH, or "" when there is none.
+std::string find_xvfb_run() {
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "/usr/bin:/bin");
+    for (std::string dir; std::getline(dirs, dir, ':');) {
+        const std::string candidate = dir + "/xvfb-run";
+        if (access(candidate.c_str(), X_OK) == 0) return candidate;
+    }
+    return "";
+}
+
+struct ExplorerRun {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+// Runs `m3055 explore ARGS` under xvfb-run in `cwd` (the script's relative paths land there).
+ExplorerRun run_explorer(const std::string& cwd, const std::vector<std::string>& args) {
+    const std::string out_path = cwd + "/explore.stdout", err_path = cwd + "/explore.stderr";
+    std::vector<std::string> argv = {find_xvfb_run(), "-a", "-s", "-screen 0 1600x1000x24",
+                                     M3055_BINARY, "explore"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (chdir(cwd.c_str()) != 0) _exit(127);
+        const int out = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(out, 1);
+        dup2(err, 2);
+        std::vector<char*> c_argv;
+        for (std::string& a : argv) c_argv.push_back(a.data());
+        c_argv.push_back(nullptr);
+        execv(c_argv[0], c_argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ExplorerRun run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    run.out = test::read_text(out_path);
+    run.err = test::read_text(err_path);
+    return run;
+}
+
+// Where `shot` appears 1:1 inside `window` (searching the right of the panel),
+// or {-1, -1}. Exact byte comparison: the window shows the display texture
+// with nearest-neighbour sampling at a whole-pixel scale.
+std::pair<int, int> find_exact(const Rgb8Image& window, const Rgb8Image& shot, int x_from) {
+    auto px = [](const Rgb8Image& im, int x, int y, int c) {
+        return im.pixels[(static_cast<std::size_t>(y) * im.width + x) * 3 + c];
+    };
+    for (int oy = 0; oy + shot.height <= window.height; ++oy) {
+        for (int ox = x_from; ox + shot.width <= window.width; ++ox) {
+            bool same = true;
+            for (int y = 0; y < shot.height && same; ++y) {
+                for (int x = 0; x < shot.width && same; ++x) {
+                    for (int c = 0; c < 3 && same; ++c) same = px(window, ox + x, oy + y, c) == px(shot, x, y, c);
+                }
+            }
+            if (same) return {ox, oy};
+        }
+    }
+    return {-1, -1};
+}
+
+class Explorer : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (find_xvfb_run().empty()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb)";
+    }
+};
+
+TEST_F(Explorer, ScriptedSessionSavesWhatRenderWritesAndShowsPanelsAndDisplay) {
+    TempDir dir;
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", test::source_path("tests/data/explore_script.txt"),
+                                              "--exit-after-script", "--stats", "stats.json"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+
+    // The scene JSON holds the scripted changes.
+    ASSERT_TRUE(test::file_exists(dir.file("shot.png")));
+    ASSERT_TRUE(test::file_exists(dir.file("shot.json"))) << "screenshot writes the JSON beside the PNG";
+    EXPECT_EQ(test::read_text(dir.file("shot.json")), test::read_text(dir.file("scene.json")));
+    const auto scene = nlohmann::json::parse(test::read_text(dir.file("scene.json")));
+    EXPECT_EQ(scene["display"]["bits"], 4);
+    ASSERT_EQ(scene["lights"].size(), 3u);  // paper preset (2) + one added
+    EXPECT_DOUBLE_EQ(scene["lights"][2]["intensity"].get<double>(), 0.3);
+    const auto& lobes = scene["objects"][1]["material"]["lobes"];
+    double peak = scene["objects"][1]["material"]["d"].get<double>();
+    for (const auto& lobe : lobes) peak += lobe["w"].get<double>() / std::pow(lobe["m"].get<double>(), 2);
+    EXPECT_NEAR(peak, 1.0, 1e-9) << "the eq. 14 rescale";
+    EXPECT_NE(lobes[0]["w"].get<double>(), 0.02) << "the rescale changed the weight set before it";
+    EXPECT_NE(scene["camera"]["position"], nlohmann::json::array({0, 0, 10})) << "orbit moved the camera";
+
+    // Byte-identical to the headless renderer's PNG of the saved scene.
+    const auto render = test::run_m3055({"render", "--scene", dir.file("shot.json"), "--out", dir.file("render.png")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_EQ(test::read_text(dir.file("shot.png")), test::read_text(dir.file("render.png")));
+
+    // Idle: no input for 2 s, at most a couple of frames drawn.
+    EXPECT_TRUE(std::regex_search(run.out, std::regex("idle 2\\.0 s: [0-9]+ frames drawn"))) << run.out;
+    const auto stats = nlohmann::json::parse(test::read_text(dir.file("stats.json")));
+    ASSERT_EQ(stats["idle"].size(), 1u);
+    EXPECT_LE(stats["idle"][0]["frames"].get<int>(), 2) << run.out;
+    EXPECT_GE(stats["frames"].get<int>(), 10) << "one frame per script line at least";
+    EXPECT_EQ(stats["script_errors"], 0);
+
+    // The window capture: panels on the left, the emulated display (A and B) on the right.
+    const Rgb8Image window = read_png(dir.file("window.png"));
+    const Rgb8Image shot = read_png(dir.file("shot.png"));
+    EXPECT_EQ(window.width, 1500);
+    EXPECT_EQ(window.height, 940);
+    const auto [ax, ay] = find_exact(window, shot, 300);
+    ASSERT_GE(ax, 0) << "the screenshot's pixels appear 1:1 in the window (compare mode: scale 1)";
+    // Panel side: text and widgets give many colours and a share of bright (text) pixels.
+    std::set<int> colours;
+    long bright = 0, total = 0;
+    for (int y = 0; y < window.height; ++y) {
+        for (int x = 0; x < std::min(ax - 20, 420); ++x) {
+            const std::uint8_t* p = &window.pixels[(static_cast<std::size_t>(y) * window.width + x) * 3];
+            colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+            bright += (p[0] + p[1] + p[2]) > 3 * 170;
+            ++total;
+        }
+    }
+    EXPECT_GT(colours.size(), 50u) << "panels: widgets and anti-aliased text";
+    EXPECT_GT(bright, total / 200) << "panels: text";
+    EXPECT_LT(bright, total / 4);
+    // B sits to the right of A and differs from it (metal_blinn instead of metal).
+    long differing = 0;
+    for (int y = 0; y < shot.height; ++y) {
+        for (int x = 0; x < shot.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const int bx = ax + shot.width + 8 + x;
+                differing += bx < window.width &&
+                             window.pixels[(static_cast<std::size_t>(ay + y) * window.width + bx) * 3 + c] !=
+                                 shot.pixels[(static_cast<std::size_t>(y) * shot.width + x) * 3 + c];
+            }
+        }
+    }
+    EXPECT_GT(differing, 1000) << "compare: B shows a different material";
+}
+
+TEST_F(Explorer, BadSceneShowsAnErrorAndKeepsRunning) {
+    TempDir dir;
+    test::write_text(dir.file("bad.json"), R"({"objects": [{"shape": "sphere", "radius": -1}]})");
+    test::write_text(dir.file("script.txt"), "save before.json\nload bad.json\nload missing.json\n"
+                                             "key f1\ncapture nopanels.png\nsave after.json\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    // The bad loads left the scene alone.
+    EXPECT_EQ(test::read_text(dir.file("before.json")), test::read_text(dir.file("after.json")));
+    // F1 hid the panels: the left of the window is plain background now.
+    const Rgb8Image window = read_png(dir.file("nopanels.png"));
+    std::set<int> colours;
+    for (int y = 100; y < 800; ++y) {
+        for (int x = 0; x < 200; ++x) {
+            const std::uint8_t* p = &window.pixels[(static_cast<std::size_t>(y) * window.width + x) * 3];
+            colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+        }
+    }
+    EXPECT_LE(colours.size(), 3u);
+}
+
+TEST_F(Explorer, ScriptErrorsNameTheLineAndFailTheRun) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "# comment\nset objects[0].material.m -3\nfly away\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    EXPECT_NE(run.exit_code, 0);
+    EXPECT_NE(run.err.find("script.txt:2: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("objects[0].material.m"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("script.txt:3: unknown command 'fly'"), std::string::npos) << run.err;
+}
+
+TEST_F(Explorer, BadStartingSceneIsAOneLineErrorNotACrash) {
+    TempDir dir;
+    test::write_text(dir.file("bad.json"), "{ not json");
+    const ExplorerRun run = run_explorer(dir.path(), {"--scene", dir.file("bad.json")});
+    EXPECT_NE(run.exit_code, 0);
+    EXPECT_NE(run.err.find("bad.json"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace m3055
