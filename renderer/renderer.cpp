@@ -4,6 +4,7 @@
 #include "passes/camera_frame.h"
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
+#include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
 
 #include <glm/geometric.hpp>
@@ -43,6 +44,7 @@ struct Renderer::Impl {
     unsigned material_buffer = 0, material_texture = 0;
     unsigned instance_buffer = 0, sphere_vao = 0, empty_vao = 0;
     int width = 0, height = 0;
+    ShaderMode shader_mode = ShaderMode::specialized;
 
     explicit Impl(const GlApi& api) : gl(api), programs(api) {
         gl.GenVertexArrays(1, &sphere_vao);
@@ -173,6 +175,7 @@ struct Renderer::Impl {
 
         // Split by pass; translucent spheres sorted far to near.
         std::vector<SphereInstance> opaque, translucent;
+        std::vector<const Object*> opaque_objects, translucent_objects;
         std::vector<std::pair<double, SphereInstance>> sorted;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const Object& object = scene.objects[i];
@@ -182,10 +185,13 @@ struct Renderer::Impl {
                                      float(object.radius)},
                                     {(*rect)[0], (*rect)[1], (*rect)[2], (*rect)[3]},
                                     int(i)};
-            if (is_translucent(object.material.model))
+            if (is_translucent(object.material.model)) {
                 sorted.emplace_back(far_to_near_key(frame, object), instance);
-            else
+                translucent_objects.push_back(&object);
+            } else {
                 opaque.push_back(instance);
+                opaque_objects.push_back(&object);
+            }
         }
         std::stable_sort(sorted.begin(), sorted.end(),
                          [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -203,7 +209,10 @@ struct Renderer::Impl {
         gl.DepthFunc(GL_LESS);
         gl.DepthMask(GL_TRUE);
         gl.Disable(GL_BLEND);
-        draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", {}}), opaque, frame, lights);
+        if (!opaque.empty()) {
+            const auto defines = specialization_defines(shader_mode, opaque_objects, scene.lights);
+            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), opaque, frame, lights);
+        }
 
         // Pass 2: translucent spheres over what is behind them (SPEC 4.2), as a
         // premultiplied "over" with a per-channel transmittance: dual-source
@@ -213,8 +222,10 @@ struct Renderer::Impl {
             gl.Enable(GL_BLEND);
             gl.BlendEquation(GL_FUNC_ADD);
             gl.BlendFunc(GL_ONE, GL_SRC1_COLOR);
-            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", {"TRANSLUCENT_PASS"}}),
-                         translucent, frame, lights);
+            auto defines = specialization_defines(shader_mode, translucent_objects, scene.lights);
+            defines.push_back("TRANSLUCENT_PASS");
+            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), translucent, frame,
+                         lights);
             gl.Disable(GL_BLEND);
             gl.DepthMask(GL_TRUE);
         }
@@ -270,6 +281,8 @@ struct Renderer::Impl {
 Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
+void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
+std::size_t Renderer::compiled_programs() const { return impl_->programs.size(); }
 unsigned Renderer::display_texture() const { return impl_->display_tex; }
 int Renderer::width() const { return impl_->width; }
 int Renderer::height() const { return impl_->height; }

@@ -8,6 +8,7 @@
 
 #include "gl/gl_api.h"
 #include "image/image.h"
+#include "passes/shader_plan.h"
 #include "scene/scene.h"
 
 #include <memory>
@@ -25,6 +26,12 @@ public:
     // Renders `scene` at scene.display.width x height. Throws std::runtime_error
     // with the GL log (shader file name and line) if a program fails to build.
     void render(const Scene& scene);
+
+    // Specialized programs (the default) are compiled per scene shape and
+    // cached; general ones serve every scene. Both give the same pixels.
+    void set_shader_mode(ShaderMode mode);
+    // Number of programs compiled so far (the cache's size).
+    std::size_t compiled_programs() const;
 
     // The quantized display image of the last render, as an RGBA8 GL texture
     // (GL_NEAREST filtering; row 0 at the bottom, as GL textures are).

@@ -142,11 +142,12 @@ std::vector<Case> all_cases() {
     return cases;
 }
 
-class GpuVsReference : public ::testing::TestWithParam<Case> {};
+class GpuVsReference : public ::testing::TestWithParam<std::tuple<Case, ShaderMode>> {};
 
+// Specialized programs (per scene shape) and the general program must both match.
 TEST_P(GpuVsReference, MatchesWithinTolerance) {
-    const Scene scene = GetParam().make();
-    const test::Comparison result = test::compare_gpu_with_reference(scene);
+    const Scene scene = std::get<0>(GetParam()).make();
+    const test::Comparison result = test::compare_gpu_with_reference(scene, std::get<1>(GetParam()));
     SCOPED_TRACE(result.describe());
     RecordProperty("comparison", result.describe());
     EXPECT_GT(result.interior_pixels, 1000);
@@ -156,8 +157,13 @@ TEST_P(GpuVsReference, MatchesWithinTolerance) {
     EXPECT_LE(result.max_level_diff, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllModels, GpuVsReference, ::testing::ValuesIn(all_cases()),
-                         [](const auto& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(AllModels, GpuVsReference,
+                         ::testing::Combine(::testing::ValuesIn(all_cases()),
+                                            ::testing::Values(ShaderMode::specialized, ShaderMode::general)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param).name +
+                                    (std::get<1>(info.param) == ShaderMode::general ? "_general" : "_specialized");
+                         });
 
 }  // namespace
 }  // namespace m3055

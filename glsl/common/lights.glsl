@@ -6,10 +6,6 @@
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
 
-#ifndef MAX_LIGHTS
-#define MAX_LIGHTS 16
-#endif
-
 uniform int u_light_count;
 uniform vec4 u_light_vector[MAX_LIGHTS];   // xyz: direction towards the light, or position; w: type
 uniform vec3 u_light_scale[MAX_LIGHTS];    // a_l * c_l
@@ -42,18 +38,25 @@ LightSample light_sample(int i, vec3 P) {
         s.scale = u_light_scale[i];
         return s;
     }
+#ifdef HAS_POINT_LIGHTS
     vec3 to_light = u_light_vector[i].xyz - P;
     float r = length(to_light);
     s.L = to_light / max(r, 1e-30);
     float factor = distance_attenuation(u_light_att[i], r);
+#ifdef HAS_SPOT_LIGHTS
     if (type == LIGHT_SPOT) factor *= spot_factor(s.L, u_light_spot[i]);
+#endif
     s.scale = u_light_scale[i] * factor;
+#endif
     return s;
 }
 
 // Lobe j that light i uses on `mat`: the light's own when it carries lobes of
 // the kind the model reads (SPEC 4.3, the paper's Fig. 11), else the material's.
 int light_lobe_count(int i, Material mat) {
+#ifndef HAS_LIGHT_LOBES
+    return 0;
+#endif
     int wanted = mat.model == MODEL_METAL ? 0 : 1;
     return (u_light_lobe_count[i] > 0 && u_light_lobe_kind[i] == wanted) ? u_light_lobe_count[i] : 0;
 }

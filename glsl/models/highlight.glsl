@@ -12,7 +12,7 @@ struct HighlightParts {
 HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
         LightSample light = light_sample(i, P);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0

@@ -12,6 +12,7 @@ float metal_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
     vec3 H = L + V;  // unnormalized: one_minus_cos does not need it unit
     float one_minus_NoH = one_minus_cos(N, H);
     float sum = 0.0;
+#ifdef HAS_METAL
     if (mat.model == MODEL_METAL) {
         H = normalize(H);
         float NoH = max(dot(N, H), 0.0);
@@ -22,20 +23,29 @@ float metal_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
         }
         return sum * ct_G_over_NoV(NoH, NoV, NoL, VoH);
     }
+#endif
+#if defined(HAS_METAL_BLINN) || defined(HAS_METAL_PHONG)
     // metal_blinn reads N.H, metal_phong R.V.
+#if !defined(HAS_METAL_PHONG)
+    float delta = one_minus_NoH;
+#elif !defined(HAS_METAL_BLINN)
+    float delta = one_minus_cos(2.0 * NoL * N - L, V);
+#else
     float delta = mat.model == MODEL_METAL_BLINN ? one_minus_NoH
                                                   : one_minus_cos(2.0 * NoL * N - L, V);
+#endif
     for (int j = 0; j < count; ++j) {
         vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobe[j];
         sum += lobe.x * pow_cos(delta, lobe.y);
     }
+#endif
     return sum;
 }
 
 vec3 shade_metal(Material mat, vec3 P, vec3 N, vec3 V) {
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
         LightSample light = light_sample(i, P);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0

@@ -36,8 +36,9 @@ std::string Comparison::describe() const {
     return text.str();
 }
 
-Comparison compare_gpu_with_reference(const Scene& scene) {
+Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode) {
     Gpu& g = gpu();
+    g.renderer.set_shader_mode(mode);
     g.renderer.render(scene);
     const RgbFloatImage raw = g.renderer.read_raw();
     const ref::ReferenceImage reference = ref::render_reference(scene);

@@ -2,6 +2,7 @@
 // reference, and measures how far apart they are.
 #pragma once
 
+#include "passes/shader_plan.h"
 #include "scene/scene.h"
 
 #include <string>
@@ -20,7 +21,7 @@ struct Comparison {
 };
 
 // Shared headless GL context + renderer for the whole test process.
-Comparison compare_gpu_with_reference(const Scene& scene);
+Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode = ShaderMode::specialized);
 
 // A scene with one sphere of `material` at the origin, the SPEC 7 camera
 // (perspective, or orthographic with height 2.5), and `lights`.
