@@ -61,9 +61,10 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
         const double incidence = incidence_towards_camera(light, state.scene.camera);
         ImGui::Text("object %d (%s), light %d at %.1f deg to N", state.selected_object,
                     to_string(material->model), state.selected_light, incidence);
-        // The half-disc plot is twice as wide as it is tall, plus a line of text under it.
-        const float room = ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() - 14.0f;
-        polar_plot(*material, light, std::min(incidence, 90.0), std::min(2.0f * room, width * 0.5f));
+        // The half-disc plot is twice as wide as it is tall; leave room for the title
+        // bar, the line above and the scale line under it.
+        const float plot_height = height - 6.0f * ImGui::GetTextLineHeightWithSpacing();
+        polar_plot(*material, light, std::min(incidence, 90.0), std::min(2.0f * plot_height, width * 0.5f));
     } else {
         ImGui::TextUnformatted("(no light: nothing to plot)");
     }
@@ -81,9 +82,8 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
     ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
     ImGui::Separator();
-    hint("The polar plot is the CPU reference's value for view directions across the plane "
-         "of L and N: red, green and blue curves; the light at its current angle to the "
-         "sphere point facing the camera. Drag on the display to orbit, wheel to zoom.");
+    hint("Left: the CPU reference's red, green and blue value for every view direction in "
+         "the plane of L (yellow) and N; dashed: the mirror direction R.");
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
     ImGui::EndGroup();
     ImGui::End();

@@ -81,7 +81,7 @@ void lights_section(ExplorerState& state) {
         ImGui::PushID(i);
         const std::string title = "light " + std::to_string(i) + " (" + to_string(lights[i].type) +
                                   (lights[i].enabled ? "" : ", off") + ")###light";
-        ImGui::SetNextItemOpen(i < 2, ImGuiCond_Once);
+        ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
         if (ImGui::IsItemClicked()) state.selected_light = i;
         ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
