@@ -1,0 +1,33 @@
+// Progress of a long command on stderr: on a terminal one line that updates in
+// place (count, percent, rate); otherwise (a log file, a CI job) one plain line
+// per step, so the log does not fill with carriage returns.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+
+namespace m3055 {
+
+class Progress {
+public:
+    // `interactive`: draw the updating bar (callers pass isatty(stderr)).
+    Progress(std::size_t total, bool interactive, std::FILE* stream = stderr);
+    // One step done; `label` names it (shown on plain lines), `error` is "" on success.
+    void step(const std::string& label, const std::string& error);
+    // Ends the bar's line (no-op for plain output).
+    void finish();
+
+private:
+    void draw_bar();
+    std::size_t total_, done_ = 0, failed_ = 0;
+    bool interactive_;
+    std::FILE* stream_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// "[=======>      ]  37/200  18%  42.1 /s" for `width` bar characters.
+std::string progress_line(std::size_t done, std::size_t total, double per_second, int width = 30);
+
+}  // namespace m3055
