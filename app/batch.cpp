@@ -1,13 +1,23 @@
 #include "batch.h"
 
+#include "image/image.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <future>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
+#include <thread>
 #include <tuple>
 
 namespace m3055 {
@@ -32,6 +42,59 @@ std::string read_path(const nlohmann::json& entry, const char* key, bool require
     if (found->get<std::string>().empty()) throw ManifestError(prefix + "." + key + ": must not be empty");
     return found->get<std::string>();
 }
+
+// Runs jobs on worker threads; each job's future holds "" or its error line.
+class EncoderPool {
+public:
+    explicit EncoderPool(unsigned threads) {
+        for (unsigned i = 0; i < threads; ++i) workers_.emplace_back([this]() { work(); });
+    }
+    ~EncoderPool() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stopping_ = true;
+        }
+        wake_.notify_all();
+        for (auto& worker : workers_) worker.join();
+    }
+    std::future<std::string> submit(std::function<void()> job) {
+        std::packaged_task<std::string()> task([job = std::move(job)]() -> std::string {
+            try {
+                job();
+                return "";
+            } catch (const std::exception& e) {
+                return e.what();
+            }
+        });
+        std::future<std::string> result = task.get_future();
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            jobs_.push_back(std::move(task));
+        }
+        wake_.notify_one();
+        return result;
+    }
+
+private:
+    void work() {
+        for (;;) {
+            std::packaged_task<std::string()> task;
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                wake_.wait(lock, [this]() { return stopping_ || !jobs_.empty(); });
+                if (jobs_.empty()) return;  // stopping, and nothing left to do
+                task = std::move(jobs_.front());
+                jobs_.pop_front();
+            }
+            task();
+        }
+    }
+    std::vector<std::thread> workers_;
+    std::deque<std::packaged_task<std::string()>> jobs_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool stopping_ = false;
+};
 
 }  // namespace
 
@@ -80,18 +143,46 @@ std::vector<BatchItem> load_manifest(const std::string& path) {
     return items;
 }
 
-std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress) {
+std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
+                      unsigned encoder_threads) {
+    if (encoder_threads == 0) encoder_threads = std::max(1u, std::thread::hardware_concurrency());
+    EncoderPool pool(encoder_threads);
+    // Results in flight, oldest first; bounded so that finished images do not
+    // pile up in memory when encoding is slower than rendering.
+    std::deque<std::pair<std::size_t, std::future<std::string>>> pending;
+    const std::size_t max_pending = 2 * std::size_t(encoder_threads);
     std::size_t failures = 0;
+    auto report_front = [&]() {
+        const std::size_t index = pending.front().first;
+        const std::string error = pending.front().second.get();
+        pending.pop_front();
+        if (!error.empty()) ++failures;
+        if (progress) progress(index, items[index], error);
+    };
     for (std::size_t i = 0; i < items.size(); ++i) {
-        std::string error;
+        const BatchItem& item = items[i];
+        std::promise<std::string> failed;
         try {
-            capture.render_to_files(load_scene_file(items[i].scene), items[i].out, items[i].raw);
+            Renderer& renderer = capture.renderer();
+            renderer.render(load_scene_file(item.scene));
+            // The same steps, and so the same bytes, as Capture::render_to_files.
+            auto display = std::make_shared<Rgb8Image>(renderer.read_display());
+            auto raw = std::make_shared<RgbFloatImage>();
+            if (!item.raw.empty()) *raw = renderer.read_raw();
+            pending.emplace_back(i, pool.submit([item, display, raw]() {
+                if (!item.raw.empty()) write_pfm(item.raw, *raw);
+                write_png(item.out, *display);
+            }));
         } catch (const std::exception& e) {
-            error = e.what();
-            ++failures;
+            failed.set_value(e.what());
+            pending.emplace_back(i, failed.get_future());
         }
-        if (progress) progress(i, items[i], error);
+        while (!pending.empty() &&
+               (pending.size() > max_pending ||
+                pending.front().second.wait_for(std::chrono::seconds(0)) == std::future_status::ready))
+            report_front();
     }
+    while (!pending.empty()) report_front();
     return failures;
 }
 

@@ -32,7 +32,11 @@ using BatchProgress = std::function<void(std::size_t index, const BatchItem& ite
 
 // Renders every item with one context and renderer. A scene that fails to load
 // or render is reported through `progress` and skipped. Returns the number of
-// failed items.
-std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress);
+// failed items. Rendering stays on this thread (the GL context is current
+// here); PNG/PFM encoding and writing, which cost more than rendering a
+// 512 x 320 frame on llvmpipe, run on `encoder_threads` workers while the next
+// scene renders (0: one per core). Progress is reported in manifest order.
+std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
+                      unsigned encoder_threads = 0);
 
 }  // namespace m3055
