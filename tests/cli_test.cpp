@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -256,6 +257,9 @@ struct BadCase {
     std::string text;     // the scene file's content; "" = do not create the file
     std::string message;  // the whole message after "m3055: FILE: "; ends with "..." = a prefix
 };
+
+// gtest prints parameters in failure messages; a name beats a byte dump.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<BadCase> bad_cases() {
     return {
