@@ -7,6 +7,8 @@ namespace m3055 {
 
 void add_render_command(CLI::App& app);   // app/cmd_render.cpp
 void add_figures_command(CLI::App& app);  // app/cmd_figures.cpp
+void add_batch_command(CLI::App& app);    // app/cmd_batch.cpp
+void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
 
 // Exit codes shared by the subcommands.
 inline constexpr int kExitOk = 0;

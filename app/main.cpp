@@ -1,6 +1,8 @@
 // m3055: the M3055 material explorer's command line.
 //   m3055 render  --scene S.json --out O.png [--raw O.pfm] [--backend auto|egl|osmesa] [--set path=value]...
 //   m3055 figures --out screenshots/
+//   m3055 batch MANIFEST.json [--backend ...]
+//   m3055 bench [--out DIR] [--quick]
 #include "commands.h"
 
 #include <cstdio>
@@ -12,6 +14,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     m3055::add_render_command(app);
     m3055::add_figures_command(app);
+    m3055::add_batch_command(app);
+    m3055::add_bench_command(app);
     m3055::add_explore_command(app);
     try {
         app.parse(argc, argv);

@@ -1,0 +1,34 @@
+// `m3055 bench [--out DIR] [--quick]`: run time against error (issue 4, part 1).
+#include "bench/bench.h"
+#include "commands.h"
+
+#include <iostream>
+
+namespace m3055 {
+
+void add_bench_command(CLI::App& app) {
+    struct Options {
+        bench::BenchOptions bench;
+        std::string backend = "auto";
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* command = app.add_subcommand(
+        "bench", "Benchmark run time against error; writes bench.md, bench.csv and bench.png");
+    command->add_option("--out", options->bench.out, "Output folder (default: bench)");
+    command->add_option("--scenes", options->bench.scenes,
+                        "Folder with the paper's scenes (default: ./scenes, then scenes/ beside the build folder)");
+    command->add_flag("--quick", options->bench.quick, "Few repetitions and a small batch: a smoke run, rough numbers");
+    command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
+        ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->callback([options]() {
+        try {
+            options->bench.backend = parse_backend(options->backend);
+            bench::run_bench(options->bench);
+        } catch (const std::exception& error) {
+            std::cerr << "m3055: " << error.what() << "\n";
+            throw CLI::RuntimeError(kExitFailure);
+        }
+    });
+}
+
+}  // namespace m3055
