@@ -10,13 +10,20 @@ float metal_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
     int own = light_lobe_count(i, mat);
     int count = own > 0 ? own : mat.lobe_count;
     vec3 H = L + V;  // unnormalized: one_minus_cos does not need it unit
+    // L = -V exactly (light opposite the view; lit only where N.V < 0, i.e. by
+    // rounding at a silhouette) leaves H undefined and one_minus_cos(N, 0)
+    // NaN: take H = N, as ref::half_vector does.
+    if (dot(H, H) == 0.0) H = N;
     float one_minus_NoH = one_minus_cos(N, H);
     float sum = 0.0;
 #ifdef HAS_METAL
     if (mat.model == MODEL_METAL) {
+        // V.H = |L + V| / 2 for unit L, V: never negative, and free of the
+        // cancellation of dot(V, normalize(L + V)) when L is nearly -V, which
+        // gave V.H ~ 0 and G / N.V ~ 1e30. 0 (the fallback above) gives no lobe.
+        float VoH = 0.5 * length(L + V);
         H = normalize(H);
         float NoH = max(dot(N, H), 0.0);
-        float VoH = max(dot(V, H), 1e-30);
         for (int j = 0; j < count; ++j) {
             vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobe[j];
             sum += lobe.x * beckmann_D(lobe.y, NoH, one_minus_NoH);
