@@ -19,7 +19,7 @@ HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
         diffuse += light.scale * NoL;
         vec3 R = 2.0 * NoL * N - light.L;
         float one_minus_RoV = one_minus_cos(R, V);
-        keep *= 1.0 - highlight_strength(mat.w, light.scale, one_minus_RoV, mat.m);
+        keep *= 1.0 - highlight_strength(mat.w, light.scale, cos_between(R, V), one_minus_RoV, mat.m);
     }
     HighlightParts parts;
     parts.C1 = min((mat.d + (1.0 - mat.d) * diffuse) * mat.color, vec3(1.0));

@@ -33,17 +33,19 @@ float metal_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
 #endif
 #if defined(HAS_METAL_BLINN) || defined(HAS_METAL_PHONG)
     // metal_blinn reads N.H, metal_phong R.V.
+    vec3 R = 2.0 * NoL * N - L;
 #if !defined(HAS_METAL_PHONG)
-    float delta = one_minus_NoH;
+    float c = cos_between(N, H), delta = one_minus_NoH;
 #elif !defined(HAS_METAL_BLINN)
-    float delta = one_minus_cos(2.0 * NoL * N - L, V);
+    float c = cos_between(R, V), delta = one_minus_cos(R, V);
 #else
-    float delta = mat.model == MODEL_METAL_BLINN ? one_minus_NoH
-                                                  : one_minus_cos(2.0 * NoL * N - L, V);
+    bool blinn = mat.model == MODEL_METAL_BLINN;
+    float c = blinn ? cos_between(N, H) : cos_between(R, V);
+    float delta = blinn ? one_minus_NoH : one_minus_cos(R, V);
 #endif
     for (int j = 0; j < count; ++j) {
         vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobe[j];
-        sum += lobe.x * pow_cos(delta, lobe.y);
+        sum += lobe.x * pow_cos(c, delta, lobe.y);
     }
 #endif
     return sum;

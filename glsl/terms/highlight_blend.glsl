@@ -2,9 +2,9 @@
 //   C = C1 + s (1 - C1),   s = w (cos alpha)^m,
 // applied once per light: C = 1 - (1 - C1) prod_l (1 - s_l) (SPEC 4.1).
 
-// s_l = clamp(w a_l c_l ((R.V)+)^m, 0, 1), with the power from 1 - R.V.
-vec3 highlight_strength(float w, vec3 scale, float one_minus_RoV, float m) {
-    return clamp(w * scale * pow_cos(one_minus_RoV, m), 0.0, 1.0);
+// s_l = clamp(w a_l c_l ((R.V)+)^m, 0, 1), the power from R.V and 1 - R.V.
+vec3 highlight_strength(float w, vec3 scale, float RoV, float one_minus_RoV, float m) {
+    return clamp(w * scale * pow_cos(RoV, one_minus_RoV, m), 0.0, 1.0);
 }
 
 // keep = prod_l (1 - s_l): what is left of C1 after every light's blend.
