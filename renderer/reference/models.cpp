@@ -83,7 +83,10 @@ dvec3 shade_metal(const Material& material, const std::vector<LitLight>& lit,
     for (const LitLight& l : lit) {
         const dvec3 H = half_vector(l, point);
         const double NoH = glm::dot(point.N, H);
-        const double VoH = glm::dot(point.V, H);
+        // V.H = |L + V| / 2 for unit L, V: dot(V, H) cancels when L is nearly
+        // -V (2% off at |L + V| = 1e-7, past the bound 2 / V.H on G / N.V).
+        // L = -V exactly gives 0, hence no lobe, as before.
+        const double VoH = 0.5 * glm::length(l.L + point.V);
         const double G_over_NoV = ct_G_over_NoV(NoH, NoV, l.NoL, VoH);
         double lobes = 0.0;
         for (const Lobe& lobe : lobes_for(*l.light, material))
