@@ -39,7 +39,7 @@ struct Plan {
 
 Plan make_plan(bool quick) {
     if (quick) return {1, 2, 0, 0, 1, 0, 1, 2, 6, false};
-    return {2, 9, 1, 5, 3, 1, 3, 10, 200, true};
+    return {3, 15, 1, 7, 3, 1, 3, 10, 200, true};
 }
 
 Scene resized(Scene scene, int width, int height) {
@@ -109,6 +109,8 @@ public:
     }
 
 private:
+    std::string figure_count() const { return " (" + std::to_string(figures_.size()) + " figs)"; }
+
     void say(const std::string& text) { std::fprintf(stderr, "bench: %s\n", text.c_str()); }
 
     NamedScene load(const std::string& file) {
@@ -196,7 +198,8 @@ private:
         for (const auto* set : {&figures_, &geometry_, &metal_})
             for (const auto& s : *set)
                 if (!references_.count(s.name)) references_[s.name] = ref::render_reference(s.scene);
-        WayResult way = make_way("CPU reference", "double-precision CPU reference (ref::render_reference)", "CPU double",
+        WayResult way = make_way("CPU reference", "double-precision CPU reference (ref::render_reference)",
+                                 "CPU double" + figure_count(),
                       scene_names(figures_), "itself");
         std::vector<Scene> figure_scenes;
         for (const auto& s : figures_) figure_scenes.push_back(s.scene);
@@ -238,7 +241,7 @@ private:
     }
 
     void geometry_ways() {
-        results_.ways.push_back(renderer_way("exact ray-cast", "exact ray-cast spheres (the renderer)", "exact",
+        results_.ways.push_back(renderer_way("exact ray-cast", "exact ray-cast spheres (the renderer)", "ray-cast",
                                              geometry_, ShaderMode::specialized));
         const int levels[][2] = {{8, 4}, {16, 8}, {32, 16}, {64, 32}, {128, 64}};
         for (const auto& level : levels) {
@@ -269,7 +272,7 @@ private:
     void cheap_metal_ways() {
         const std::string against = "double reference of eq. 12 (Fig. 10)";
         results_.ways.push_back(renderer_way("cheap metal", "eq. 12 metal (Cook-Torrance, Beckmann), Fig. 10",
-                                             "eq.12", metal_, ShaderMode::specialized, nullptr, against));
+                                             "eq.12 (Fig.10)", metal_, ShaderMode::specialized, nullptr, against));
         results_.ways.push_back(renderer_way(
             "cheap metal", "eq. 15 metal_blinn, (N.H)^n, n = 2/m^2, w/m^2", "eq.15 blinn", metal_,
             ShaderMode::specialized, [](const Scene& s) { return cheap_metal(s, Model::metal_blinn); }, against));
@@ -279,10 +282,11 @@ private:
     }
 
     void shader_ways() {
-        results_.ways.push_back(renderer_way("shaders", "specialized programs (default)", "specialized", figures_,
+        results_.ways.push_back(renderer_way("shaders", "specialized programs (default)",
+                                             "specialized" + figure_count(), figures_,
                                              ShaderMode::specialized));
         results_.ways.push_back(
-            renderer_way("shaders", "one general program", "general", figures_, ShaderMode::general));
+            renderer_way("shaders", "one general program", "general" + figure_count(), figures_, ShaderMode::general));
         results_.ways.push_back(reference_way_);
     }
 

@@ -55,7 +55,7 @@ std::string decade_label(int k, bool time) {
 }  // namespace
 
 void write_plot(const std::string& path, const BenchResults& results) {
-    const int W = 1200, H = 800, scale = 2;
+    const int W = 1200, H = 820, scale = 2;
     const int left = 120, right = W - 30, top = 70, bottom = H - 150;
     const int zero_band = bottom - 22;        // where error-free ways (the reference itself) sit
     const int log_bottom = bottom - 50;       // lowest decade line
@@ -166,7 +166,7 @@ void write_plot(const std::string& path, const BenchResults& results) {
         canvas.text(x + 18, y, kGroups[i].group, kBlack, scale);
     }
     const std::string note =
-        "Labels of mesh dots: slices x stacks of the UV sphere. Row \"0\": the reference itself (no error).";
+        "Mesh labels: slices x stacks of the UV sphere. Row \"0\": the reference itself.";
     canvas.text(left, bottom + 128, note, kAxisText, scale);
     write_png(path, canvas.image());
 }
