@@ -81,6 +81,7 @@ struct Layout {
 };
 constexpr float kSideWidth = 440.0f;
 constexpr float kBottomHeight = 270.0f;
+constexpr float kCompareGap = 8.0f;  // between A and B
 
 Layout layout_for(float width, float height, bool panels) {
     Layout l;
@@ -106,7 +107,7 @@ int whole_pixel_scale(int w, int h, float area_w, float area_h) {
 int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect& area,
                  float fb_scale) {
     const int n = static_cast<int>(textures.size());
-    const float gap = n > 1 ? 8.0f : 0.0f;
+    const float gap = n > 1 ? kCompareGap : 0.0f;
     const float area_w = (area.w - gap * (n - 1)) * fb_scale / n, area_h = area.h * fb_scale;
     const int scale = whole_pixel_scale(w, h, area_w, area_h);
     // Too big even at 1:1: shrink to fit (no longer whole pixels; the panel says so).
@@ -289,6 +290,12 @@ int run_explorer(const ExploreOptions& options) {
 
         // ---- Frame loop: sleep until something happens ----
         while (!glfwWindowShouldClose(window) && !state.quit) {
+            // --exit-after-script: stop once the script and any capture are done.
+            if (script && script->finished() && options.exit_after_script && pending_capture.empty() &&
+                (options.capture_window.empty() || window_captured) && events.frames_owed == 0 &&
+                !state.scene_changed && !state.screenshot_requested) {
+                break;
+            }
             const bool script_busy = script && !script->finished() && !script->idling();
             const bool work = events.frames_owed > 0 || state.scene_changed || script_busy ||
                               state.screenshot_requested || !pending_capture.empty();
@@ -330,7 +337,9 @@ int run_explorer(const ExploreOptions& options) {
 
             const Layout layout = layout_for(io.DisplaySize.x, io.DisplaySize.y, state.show_panels);
             const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
-            info.free_width = static_cast<int>(layout.display.w * fb_scale) / (state.compare ? 2 : 1);
+            // Room for one display (two in compare, with the gap between them).
+            info.free_width = static_cast<int>((layout.display.w - (state.compare ? kCompareGap : 0.0f)) * fb_scale) /
+                              (state.compare ? 2 : 1);
             info.free_height = static_cast<int>(layout.display.h * fb_scale);
 
             // Orbit and zoom with the mouse over the display (not over a panel).
@@ -412,8 +421,6 @@ int run_explorer(const ExploreOptions& options) {
                 events.frames_owed = 1;
                 continue;
             }
-            const bool capture_done = options.capture_window.empty() || window_captured;
-            if (script && script_done && options.exit_after_script && capture_done && pending_capture.empty()) break;
         }
         if (script && script->errors() > 0) exit_status = 1;
         if (!options.stats_path.empty()) {

@@ -76,7 +76,8 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Text("render %.2f ms (%d x %d, %d bits)", info.render_ms, state.scene.display.width,
                 state.scene.display.height, state.scene.display.bits);
     ImGui::Text("frames drawn %ld, scene renders %ld", info.frames, info.renders);
-    ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
+    if (info.scale >= 1) ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
+    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "shrunk to fit the window (not whole pixels)");
     ImGui::Separator();
     ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
     ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());

@@ -139,6 +139,11 @@ void Script::run(ExplorerState& state, const std::string& line, double now, long
     } else if (command == "orbit") {
         const double dx = number(), dy = number();
         orbit_camera(state, dx, dy);
+    } else if (command == "projection") {  // the Camera panel's combo
+        const std::string name = word();
+        if (name != "perspective" && name != "orthographic") throw std::runtime_error("projection: perspective or orthographic");
+        state.scene.camera.projection = name == "perspective" ? Projection::perspective : Projection::orthographic;
+        state.changed();
     } else if (command == "zoom") {
         zoom_camera(state, number());
     } else if (command == "compare") {

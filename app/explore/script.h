@@ -15,6 +15,7 @@
 //   load PATH               load a scene file (errors show in the window)
 //   display m3055|modern    the Display panel's two preset buttons
 //   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
+//   projection perspective|orthographic
 //   compare on|off | compare_model NAME
 //   key NAME                a key press: escape, r, f1, f12, ctrl+s, 0-9
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
