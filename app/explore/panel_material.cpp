@@ -7,12 +7,15 @@
 
 #include <imgui.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 namespace m3055::explore {
 
-namespace {
+bool classic_material_editor(Material& material);  // panel_classic.cpp
 
-constexpr Model kModels[] = {Model::highlight, Model::translucent, Model::metal,
-                             Model::metal_blinn, Model::metal_phong};
+namespace {
 
 const char* model_label(Model model) {
     switch (model) {
@@ -21,8 +24,8 @@ const char* model_label(Model model) {
         case Model::metal: return "metal, Cook-Torrance (eq. 12)";
         case Model::metal_blinn: return "metal_blinn (eq. 15)";
         case Model::metal_phong: return "metal_phong (eq. 16)";
+        default: return to_string(model);  // the classic models (SPEC 5)
     }
-    return "?";
 }
 
 }  // namespace
@@ -31,7 +34,7 @@ const char* model_label(Model model) {
 bool material_editor(Material& material) {
     bool changed = false;
     if (ImGui::BeginCombo("model", model_label(material.model))) {
-        for (Model model : kModels) {
+        for (Model model : all_models()) {
             if (ImGui::Selectable(model_label(model), model == material.model)) {
                 set_model(material, model);
                 changed = true;
@@ -39,6 +42,7 @@ bool material_editor(Material& material) {
         }
         ImGui::EndCombo();
     }
+    if (is_classic(material.model)) return changed | classic_material_editor(material);
     changed |= color_edit("colour C0", &material.color);
     const bool metal = uses_lobes(material.model);
     changed |= slider_double(metal ? "d (background)" : "d (environment)", &material.d, 0.0, 1.0);

@@ -16,8 +16,7 @@ namespace m3055::explore {
 namespace {
 
 Model parse_model(const std::string& name) {
-    for (Model m : {Model::highlight, Model::translucent, Model::metal, Model::metal_blinn,
-                    Model::metal_phong}) {
+    for (Model m : all_models()) {
         if (name == to_string(m)) return m;
     }
     throw std::runtime_error("unknown model '" + name + "'");

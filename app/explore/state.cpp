@@ -71,6 +71,16 @@ Material* selected_material(ExplorerState& state) {
     return &state.scene.objects[state.selected_object].material;
 }
 
+std::vector<Model> all_models() {
+    // to_string() names every model and says "?" past the last one, so a model
+    // added to scene.h shows up in the selector without touching this file.
+    std::vector<Model> models;
+    for (int i = 0; std::string(to_string(static_cast<Model>(i))) != "?"; ++i) {
+        models.push_back(static_cast<Model>(i));
+    }
+    return models;
+}
+
 void set_model(Material& material, Model model) {
     const bool was_beckmann = material.model == Model::metal;
     const bool now_beckmann = model == Model::metal;
@@ -79,6 +89,12 @@ void set_model(Material& material, Model model) {
     if (uses_lobes(model) && (!lobes_keep_meaning || material.lobes.empty())) {
         material.lobes = default_lobes(model);
         material.d = 0.05;  // the paper's metals; the default lobes meet eq. 14 with it
+    }
+    // Paper model -> classic model: start from the same colour (C0 as K_diff and K_amb).
+    if (is_classic(model) && !is_classic(material.model)) material.kd = material.ka = material.color;
+    if (model == Model::microfacet && (material.lobes.empty() || uses_lobes(material.model))) {
+        material.lobes = material.distribution == Distribution::blinn_phong ? std::vector<Lobe>{{1.0, 100.0}}
+                                                                            : std::vector<Lobe>{{1.0, 0.3}};
     }
     material.model = model;
 }

@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace m3055::explore {
 
@@ -55,6 +56,9 @@ bool save_scene(ExplorerState& state, const std::string& path);
 
 // The selected object's material (the default scene always has one object).
 Material* selected_material(ExplorerState& state);
+
+// Every model the renderer knows, in enum order (the model selector's list).
+std::vector<Model> all_models();
 
 // Switches a material's model; lobes are replaced by the model's defaults when
 // their meaning changes (Beckmann m_j <-> exponents n_j).
