@@ -170,7 +170,7 @@ struct Renderer::Impl {
         const Display& display = scene.display;
         ensure_targets(display.width, display.height);
         const CameraFrame frame = make_camera_frame(scene.camera, display, scene.objects);
-        const LightUniforms lights = pack_lights(scene.lights);
+        const LightUniforms lights = pack_lights(scene.lights, scene.ambient);
         upload_materials(scene);
 
         // Split by pass; translucent spheres sorted far to near.

@@ -412,7 +412,9 @@ TEST(SceneLoader, EveryErrorClassGivesItsExactOneLineMessage) {
          "scene.json: lights[0].lobes: must have 1 to 4 lobes, got 0"},
         {"model name", [](json& d) { d["objects"][0]["material"]["model"] = "plastic"; },
          "scene.json: objects[0].material.model: must be \"highlight\", \"translucent\", \"metal\", "
-         "\"metal_blinn\" or \"metal_phong\", got \"plastic\""},
+         "\"metal_blinn\", \"metal_phong\", \"lambert\", \"half_lambert\", \"half_lambert_clamped\", "
+         "\"half_lambert_normalized\", \"oren_nayar\", \"phong\", \"blinn_phong\", \"microfacet\", "
+         "\"ward\" or \"heidrich_seidel\", got \"plastic\""},
         {"key of another model", [](json& d) { d["objects"][0]["material"]["t_n"] = 0.5; },
          "scene.json: objects[0].material.t_n: not a parameter of model highlight"},
         {"lobes on highlight", [](json& d) { d["objects"][0]["material"]["lobes"] = json::array(); },

@@ -10,6 +10,26 @@
 #define HAS_POINT_LIGHTS
 #define HAS_SPOT_LIGHTS
 #define HAS_LIGHT_LOBES
+#define HAS_LAMBERT
+#define HAS_HALF_LAMBERT
+#define HAS_HALF_LAMBERT_CLAMPED
+#define HAS_HALF_LAMBERT_NORMALIZED
+#define HAS_OREN_NAYAR
+#define HAS_PHONG
+#define HAS_BLINN_PHONG
+#define HAS_MICROFACET
+#define HAS_WARD
+#define HAS_HEIDRICH_SEIDEL
+#endif
+
+// The classic models of SPEC 5 (models/classic.glsl).
+// (GLSL 3.30 has no line continuation: two short tests.)
+#if defined(HAS_LAMBERT) || defined(HAS_HALF_LAMBERT) || defined(HAS_HALF_LAMBERT_CLAMPED) || defined(HAS_OREN_NAYAR)
+#define HAS_CLASSIC_FAMILY
+#elif defined(HAS_HALF_LAMBERT_NORMALIZED) || defined(HAS_PHONG) || defined(HAS_BLINN_PHONG)
+#define HAS_CLASSIC_FAMILY
+#elif defined(HAS_MICROFACET) || defined(HAS_WARD) || defined(HAS_HEIDRICH_SEIDEL)
+#define HAS_CLASSIC_FAMILY
 #endif
 
 #if defined(HAS_METAL) || defined(HAS_METAL_BLINN) || defined(HAS_METAL_PHONG)

@@ -18,6 +18,7 @@ uniform vec4 u_light_lobes[MAX_LIGHTS * 2];  // (w0, m0, w1, m1), (w2, m2, w3, m
 struct LightSample {
     vec3 L;      // unit vector towards the light
     vec3 scale;  // a_l c_l x attenuation x spot factor
+    float spot;  // the spot factor C_spot alone (1 unless a spot): classic models' ambient
 };
 
 // Distance attenuation 1 / (S_c + S_l r + S_q r^2) (lecture notes, seed 003).
@@ -32,6 +33,7 @@ float spot_factor(vec3 L, vec4 spot) {
 
 LightSample light_sample(int i, vec3 P) {
     LightSample s;
+    s.spot = 1.0;
     int type = int(u_light_vector[i].w);
     if (type == LIGHT_DIRECTIONAL) {
         s.L = u_light_vector[i].xyz;
@@ -44,7 +46,10 @@ LightSample light_sample(int i, vec3 P) {
     s.L = to_light / max(r, 1e-30);
     float factor = distance_attenuation(u_light_att[i], r);
 #ifdef HAS_SPOT_LIGHTS
-    if (type == LIGHT_SPOT) factor *= spot_factor(s.L, u_light_spot[i]);
+    if (type == LIGHT_SPOT) {
+        s.spot = spot_factor(s.L, u_light_spot[i]);
+        factor *= s.spot;
+    }
 #endif
     s.scale = u_light_scale[i] * factor;
 #endif

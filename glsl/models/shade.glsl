@@ -11,9 +11,15 @@
 #include "models/highlight.glsl"
 #include "models/translucent.glsl"
 #include "models/metal.glsl"
+#ifdef HAS_CLASSIC_FAMILY
+#include "models/classic.glsl"
+#endif
 
 // An opaque point (every model but translucent).
 vec3 shade_opaque(Material mat, vec3 P, vec3 N, vec3 V) {
+#ifdef HAS_CLASSIC_FAMILY
+    if (mat.model >= MODEL_LAMBERT) return shade_classic(mat, P, N, V);
+#endif
 #if defined(HAS_HIGHLIGHT) && defined(HAS_METAL_FAMILY)
     if (mat.model == MODEL_HIGHLIGHT) return shade_highlight(mat, P, N, V);
     return shade_metal(mat, P, N, V);

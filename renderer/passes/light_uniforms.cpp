@@ -2,8 +2,9 @@
 
 namespace m3055 {
 
-LightUniforms pack_lights(const std::vector<Light>& lights) {
+LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient) {
     LightUniforms u;
+    for (int c = 0; c < 3; ++c) u.global_ambient[c] = float(global_ambient[c]);
     for (const auto& light : lights) {
         if (!light.enabled || light.intensity <= 0.0) continue;
         const dvec3 scale = light.intensity * light.color;
@@ -22,6 +23,8 @@ LightUniforms pack_lights(const std::vector<Light>& lights) {
         u.lobes.insert(u.lobes.end(), lobes, lobes + 8);
         u.lobe_count.push_back(int(light.lobes.size()));
         u.lobe_kind.push_back(light.lobe_kind == LobeKind::beckmann ? 0 : 1);
+        const dvec3 ambient = light.intensity * light.ambient;
+        u.ambient.insert(u.ambient.end(), {float(ambient.r), float(ambient.g), float(ambient.b)});
         ++u.count;
     }
     return u;
@@ -30,7 +33,9 @@ LightUniforms pack_lights(const std::vector<Light>& lights) {
 void upload_lights(const GlApi& gl, unsigned program, const LightUniforms& lights) {
     auto location = [&](const char* name) { return gl.GetUniformLocation(program, name); };
     gl.Uniform1i(location("u_light_count"), lights.count);
+    gl.Uniform3fv(location("u_global_ambient"), 1, lights.global_ambient);  // -1 (no-op) unless classic
     if (lights.count == 0) return;
+    gl.Uniform3fv(location("u_light_ambient"), lights.count, lights.ambient.data());
     gl.Uniform4fv(location("u_light_vector"), lights.count, lights.vector.data());
     gl.Uniform3fv(location("u_light_scale"), lights.count, lights.scale.data());
     gl.Uniform4fv(location("u_light_spot"), lights.count, lights.spot.data());

@@ -8,7 +8,8 @@
 
 namespace m3055 {
 
-inline constexpr int kMaterialTexels = 5;
+// Texels 0-4: the paper's models; 5-10: the classic models (SPEC 5).
+inline constexpr int kMaterialTexels = 11;
 
 // Appends one record (kMaterialTexels * 4 floats) for `material` to `out`.
 void pack_material(const Material& material, std::vector<float>& out);

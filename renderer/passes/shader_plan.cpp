@@ -15,6 +15,16 @@ std::vector<std::string> specialization_defines(ShaderMode mode, const std::vect
             case Model::metal: flags.insert("HAS_METAL"); break;
             case Model::metal_blinn: flags.insert("HAS_METAL_BLINN"); break;
             case Model::metal_phong: flags.insert("HAS_METAL_PHONG"); break;
+            case Model::lambert: flags.insert("HAS_LAMBERT"); break;
+            case Model::half_lambert: flags.insert("HAS_HALF_LAMBERT"); break;
+            case Model::half_lambert_clamped: flags.insert("HAS_HALF_LAMBERT_CLAMPED"); break;
+            case Model::half_lambert_normalized: flags.insert("HAS_HALF_LAMBERT_NORMALIZED"); break;
+            case Model::oren_nayar: flags.insert("HAS_OREN_NAYAR"); break;
+            case Model::phong: flags.insert("HAS_PHONG"); break;
+            case Model::blinn_phong: flags.insert("HAS_BLINN_PHONG"); break;
+            case Model::microfacet: flags.insert("HAS_MICROFACET"); break;
+            case Model::ward: flags.insert("HAS_WARD"); break;
+            case Model::heidrich_seidel: flags.insert("HAS_HEIDRICH_SEIDEL"); break;
         }
     }
     int count = 0;

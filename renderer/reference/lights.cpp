@@ -34,6 +34,9 @@ LightSample sample_light(const Light& light, const dvec3& P) {
 
     const dvec3 to_light = light.position - P;
     const double r = glm::length(to_light);
+    // C_spot alone (the classic models' per-light ambient); with L = 0 where
+    // r = 0, as the GLSL light_sample computes it.
+    if (light.type == LightType::spot) sample.spot = spot_factor(light, r > 0.0 ? to_light / r : dvec3(0.0));
     // A light exactly at P has no direction: L stays 0, so N.L = 0 and the
     // light contributes nothing (no NaN).
     if (!(r > 0.0)) return sample;
@@ -41,7 +44,7 @@ LightSample sample_light(const Light& light, const dvec3& P) {
     if (!light.enabled) return sample;
 
     double factor = distance_attenuation(light, r);
-    if (light.type == LightType::spot) factor *= spot_factor(light, sample.L);
+    if (light.type == LightType::spot) factor *= sample.spot;
     sample.scale = light.intensity * factor * light.color;
     return sample;
 }

@@ -2,6 +2,7 @@
 // Every light l enters through its direction L_l and its scale a_l c_l att spot
 // (lights.cpp); a light with N.L_l <= 0 contributes nothing at all (SPEC 4).
 #include "reference/reference.h"
+#include "reference/classic.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -125,7 +126,8 @@ dvec3 shade_metal_phong(const Material& material, const std::vector<LitLight>& l
 }  // namespace
 
 dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
-                   const SurfacePoint& point) {
+                   const SurfacePoint& point, const dvec3& global_ambient) {
+    if (is_classic(material.model)) return shade_classic(material, lights, point, global_ambient);
     const std::vector<LitLight> lit = lights_facing(lights, point);
     switch (material.model) {
         case Model::highlight:
@@ -134,6 +136,7 @@ dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
         case Model::metal: return shade_metal(material, lit, point);
         case Model::metal_blinn: return shade_metal_blinn(material, lit, point);
         case Model::metal_phong: return shade_metal_phong(material, lit, point);
+        default: break;  // the classic models returned above
     }
     return dvec3(0.0);
 }

@@ -50,6 +50,7 @@ struct LightSample {
     dvec3 L;
     dvec3 scale;
     const std::vector<Lobe>* lobes;  // the light's own lobes if any, else nullptr
+    double spot = 1.0;  // C_spot alone (1 unless a spot light): the classic models' ambient
 };
 LightSample sample_light(const Light& light, const dvec3& P);
 
@@ -61,10 +62,12 @@ struct SurfacePoint {
     dvec3 V;  // unit vector towards the viewer
 };
 
-// The colour of an opaque point: highlight, metal, metal_blinn, metal_phong.
+// The colour of an opaque point: highlight, metal, metal_blinn, metal_phong,
+// and the classic models of SPEC 5 (reference/classic.h), which also add the
+// scene's global ambient L_glob K_amb (the paper's models have their own d).
 // (Called with a translucent material it returns its colour as if t = 1.)
 dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
-                   const SurfacePoint& point);
+                   const SurfacePoint& point, const dvec3& global_ambient = dvec3(0.0));
 
 // A translucent point as a premultiplied "over" (SPEC 4.2):
 //   C = color + transmittance * C_B

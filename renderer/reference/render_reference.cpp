@@ -65,7 +65,7 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     for (const Hit& hit : hits) {
         const Object& object = scene.objects[hit.object];
         if (is_translucent(object.material.model)) continue;
-        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit.t));
+        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit.t), scene.ambient);
         t_opaque = hit.t;
         break;
     }

@@ -5,6 +5,8 @@
 // loader would reject them); they come back as the struct defaults.
 #include "scene/load.h"
 
+#include "scene/json_classic.h"
+
 #include <nlohmann/json.hpp>
 
 namespace m3055 {
@@ -53,12 +55,14 @@ json light_json(const Light& light) {
         out["spot_direction"] = vec(light.spot_direction);
         out["spot_exponent"] = light.spot_exponent;
     }
+    if (light.ambient != dvec3(0.0)) out["ambient"] = vec(light.ambient);  // absent = none
     if (!light.lobes.empty())
         out["lobes"] = lobes_json(light.lobes, light.lobe_kind == LobeKind::beckmann ? "m" : "n");
     return out;
 }
 
 json material_json(const Material& material) {
+    if (is_classic(material.model)) return scene_json::classic_material_json(material);
     json out = {{"model", to_string(material.model)}, {"color", vec(material.color)}, {"d", material.d}};
     switch (material.model) {
         case Model::translucent:
@@ -76,6 +80,7 @@ json material_json(const Material& material) {
         case Model::metal_phong:
             out["lobes"] = lobes_json(material.lobes, "n");
             break;
+        default: break;  // the classic models returned above
     }
     return out;
 }
@@ -91,11 +96,13 @@ json scene_to_json(const Scene& scene) {
                            {"center", vec(object.center)},
                            {"radius", object.radius},
                            {"material", material_json(object.material)}});
-    return {{"display", display_json(scene.display)},
-            {"background", vec(scene.background)},
-            {"camera", camera_json(scene.camera)},
-            {"lights", std::move(lights)},
-            {"objects", std::move(objects)}};
+    json out = {{"display", display_json(scene.display)},
+                {"background", vec(scene.background)},
+                {"camera", camera_json(scene.camera)},
+                {"lights", std::move(lights)},
+                {"objects", std::move(objects)}};
+    if (scene.ambient != dvec3(0.0)) out["ambient"] = vec(scene.ambient);  // absent = none
+    return out;
 }
 
 }  // namespace m3055

@@ -2,6 +2,7 @@
 // scene_json::Node so that each error is one line "SOURCE: json.path: problem".
 #include "scene/load.h"
 
+#include "scene/json_classic.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 
@@ -160,7 +161,7 @@ Light read_light(const Node& node) {
     Light light;
     const std::size_t type = node.required("type").one_of({"directional", "point", "spot"});
     light.type = type == 0 ? LightType::directional : type == 1 ? LightType::point : LightType::spot;
-    std::vector<std::string> allowed = {"type", "intensity", "color", "enabled", "lobes"};
+    std::vector<std::string> allowed = {"type", "intensity", "color", "enabled", "lobes", "ambient"};
     if (light.type == LightType::directional) allowed.push_back("direction");
     if (light.type != LightType::directional) allowed.insert(allowed.end(), {"position", "attenuation"});
     if (light.type == LightType::spot) allowed.insert(allowed.end(), {"spot_direction", "spot_exponent"});
@@ -184,6 +185,7 @@ Light read_light(const Node& node) {
     if (node.has("intensity")) light.intensity = node.child("intensity").number_in(closed(0.0, 10.0));
     if (node.has("color")) light.color = node.child("color").vec3_in(kUnit);
     if (node.has("enabled")) light.enabled = node.child("enabled").boolean();
+    if (node.has("ambient")) light.ambient = node.child("ambient").vec3_in(kUnit);  // classic models
     if (node.has("lobes")) read_light_lobes(node.child("lobes"), light);
     return light;
 }
@@ -191,8 +193,12 @@ Light read_light(const Node& node) {
 // ---- materials and objects --------------------------------------------------
 
 const std::vector<std::string>& model_names() {
-    static const std::vector<std::string> names = {"highlight", "translucent", "metal",
-                                                   "metal_blinn", "metal_phong"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all = {"highlight", "translucent", "metal", "metal_blinn", "metal_phong"};
+        const auto& classic = scene_json::classic_model_names();  // SPEC 5, in Model's order
+        all.insert(all.end(), classic.begin(), classic.end());
+        return all;
+    }();
     return names;
 }
 
@@ -204,6 +210,7 @@ std::vector<std::string> model_keys(Model model) {
         case Model::metal:
         case Model::metal_blinn:
         case Model::metal_phong: return {"d", "lobes"};
+        default: break;  // the classic models: scene/json_classic.cpp
     }
     return {};
 }
@@ -222,12 +229,13 @@ Material default_material(Model model) {
 Material read_material(const Node& node) {
     node.expect_object();
     const Model model = static_cast<Model>(node.required("model").one_of(model_names()));
+    if (is_classic(model)) return scene_json::read_classic_material(node, model);
     std::vector<std::string> allowed = model_keys(model);
     allowed.insert(allowed.end(), {"model", "color"});
     const std::string problem = std::string("not a parameter of model ") + to_string(model);
     node.check_keys(allowed, [&](const std::string& key) {
         for (const std::string& known : model_keys(Model::translucent)) if (key == known) return problem;
-        return key == "lobes" ? problem : std::string();
+        return key == "lobes" || scene_json::is_classic_material_key(key) ? problem : std::string();
     });
 
     Material material = default_material(model);
@@ -273,10 +281,11 @@ std::string read_file(const std::string& path) {
 Scene scene_from_json(const json& doc, const std::string& source) {
     const Node root(doc, "", source);
     root.expect_object();
-    root.check_keys({"display", "background", "camera", "lights", "objects"});
+    root.check_keys({"display", "background", "ambient", "camera", "lights", "objects"});
     Scene scene;
     if (root.has("display")) scene.display = read_display(root.child("display"));
     if (root.has("background")) scene.background = root.child("background").vec3_in(kUnit);
+    if (root.has("ambient")) scene.ambient = root.child("ambient").vec3_in(kUnit);  // L_glob, classic models
     scene.camera = read_camera(root.required("camera"));
     if (root.has("lights")) {
         const Node lights = root.child("lights");

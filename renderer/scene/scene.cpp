@@ -9,6 +9,16 @@ const char* to_string(Model model) {
         case Model::metal: return "metal";
         case Model::metal_blinn: return "metal_blinn";
         case Model::metal_phong: return "metal_phong";
+        case Model::lambert: return "lambert";
+        case Model::half_lambert: return "half_lambert";
+        case Model::half_lambert_clamped: return "half_lambert_clamped";
+        case Model::half_lambert_normalized: return "half_lambert_normalized";
+        case Model::oren_nayar: return "oren_nayar";
+        case Model::phong: return "phong";
+        case Model::blinn_phong: return "blinn_phong";
+        case Model::microfacet: return "microfacet";
+        case Model::ward: return "ward";
+        case Model::heidrich_seidel: return "heidrich_seidel";
     }
     return "?";
 }
@@ -18,6 +28,25 @@ const char* to_string(LightType type) {
         case LightType::directional: return "directional";
         case LightType::point: return "point";
         case LightType::spot: return "spot";
+    }
+    return "?";
+}
+
+const char* to_string(Distribution distribution) {
+    switch (distribution) {
+        case Distribution::blinn_phong: return "blinn_phong";
+        case Distribution::gaussian: return "gaussian";
+        case Distribution::beckmann: return "beckmann";
+        case Distribution::ggx: return "ggx";
+    }
+    return "?";
+}
+
+const char* to_string(Fresnel fresnel) {
+    switch (fresnel) {
+        case Fresnel::none: return "none";
+        case Fresnel::schlick: return "schlick";
+        case Fresnel::dielectric: return "dielectric";
     }
     return "?";
 }

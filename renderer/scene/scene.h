@@ -59,13 +59,27 @@ struct Light {
     // the direction the spot shines along (from the light into the scene).
     dvec3 spot_direction{0.0, 0.0, -1.0};
     double spot_exponent = 1.0;
+    // The lecture's per-light ambient L_amb,k (seed 003), per unit intensity: the
+    // classic models (SPEC 5) add C_spot,k a_l ambient (x) K_amb, not attenuated.
+    dvec3 ambient{0.0, 0.0, 0.0};
     // Per-light lobes replace the material's lobes for this light (metal models only).
     std::vector<Lobe> lobes;
     LobeKind lobe_kind = LobeKind::beckmann;
     bool enabled = true;
 };
 
-enum class Model { highlight, translucent, metal, metal_blinn, metal_phong };
+// The paper's models (SPEC 4), then the seeds' classic models (SPEC 5, docs/models.md).
+enum class Model {
+    highlight, translucent, metal, metal_blinn, metal_phong,
+    // diffuse only
+    lambert, half_lambert, half_lambert_clamped, half_lambert_normalized, oren_nayar,
+    // Lambert diffuse plus a specular term
+    phong, blinn_phong, microfacet, ward, heidrich_seidel,
+};
+
+// microfacet: the normal distribution D of its lobes, and its Fresnel term F.
+enum class Distribution { blinn_phong, gaussian, beckmann, ggx };
+enum class Fresnel { none, schlick, dielectric };
 
 struct Material {
     Model model = Model::highlight;
@@ -75,7 +89,23 @@ struct Material {
     double m = 10.0;             // highlight exponent     (highlight, translucent)
     double t_n = 0.8;            // opacity                (translucent)
     double t_p = 1.0;            // Kay's falloff power    (translucent)
-    std::vector<Lobe> lobes;     // 1..4 lobes             (metal, metal_blinn, metal_phong)
+    std::vector<Lobe> lobes;     // 1..4 lobes             (metal, metal_blinn, metal_phong, microfacet)
+
+    // The classic models (SPEC 5), in the lecture's form (seed 003):
+    //   I = L_glob K_amb + L_emi + sum_k C_spot,k { I_amb,k + att_k (I_diff,k + I_spec,k) }.
+    dvec3 ka{0.8, 0.2, 0.2};        // K_amb: ambient colour (defaults to kd in scene files)
+    dvec3 kd{0.8, 0.2, 0.2};        // K_diff: diffuse colour
+    dvec3 ks{1.0, 1.0, 1.0};        // K_spec: specular colour
+    dvec3 emission{0.0, 0.0, 0.0};  // L_emi
+    double shininess = 32.0;        // phong, blinn_phong, heidrich_seidel exponent
+    double sigma = 0.3;             // oren_nayar roughness (radians)
+    // microfacet: lobes are {w, m} (roughness m) or {w, n} (exponent, blinn_phong D).
+    Distribution distribution = Distribution::beckmann;
+    Fresnel fresnel = Fresnel::schlick;
+    double ior = 1.5;               // index of refraction (schlick: F0 = ((n-1)/(n+1))^2)
+    double alpha_x = 0.15;          // ward: roughness along the tangent T
+    double alpha_y = 0.5;           // ward: roughness along the bitangent N x T
+    dvec3 axis{0.0, 1.0, 0.0};      // ward, heidrich_seidel: T = normalize(axis x N) (unit)
 };
 
 enum class Shape { sphere };
@@ -93,6 +123,7 @@ struct Scene {
     Camera camera;
     std::vector<Light> lights;
     std::vector<Object> objects;
+    dvec3 ambient{0.0, 0.0, 0.0};  // L_glob: the lecture's global ambient (classic models)
 };
 
 // Limits the loader enforces (documented in the README).
@@ -103,9 +134,16 @@ inline constexpr int kMaxDisplaySize = 8192;
 const char* to_string(Model model);
 const char* to_string(LightType type);
 const char* to_string(Projection projection);
+const char* to_string(Distribution distribution);
+const char* to_string(Fresnel fresnel);
 
 // True for models whose output depends on what lies behind (needs the blended pass).
 inline bool is_translucent(Model model) { return model == Model::translucent; }
+// True for the seeds' classic models (SPEC 5): the lecture's shading equation.
+inline bool is_classic(Model model) { return model >= Model::lambert; }
+// True for the classic models with a specular term (ka, kd, ks).
+inline bool has_specular(Model model) { return model >= Model::phong; }
+
 // True for the metal family, which reads lobes (and per-light lobes).
 inline bool uses_lobes(Model model) {
     return model == Model::metal || model == Model::metal_blinn || model == Model::metal_phong;

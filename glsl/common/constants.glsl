@@ -1,0 +1,2 @@
+// Constants shared by the classic models' terms.
+#define PI 3.14159265358979323846

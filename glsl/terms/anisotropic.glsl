@@ -1,0 +1,40 @@
+// Anisotropic terms of the classic models (SPEC 5, seed 002): Ward and
+// Heidrich-Seidel, on the tangent frame below. C++ twins: reference/classic_terms.cpp.
+#include "common/constants.glsl"
+
+// The tangent frame (docs/models.md): T = normalize(axis x N), the direction of
+// the grooves, running around `axis` (brushed on a lathe); B = N x T. Within
+// 1e-4 rad of the poles (N = +-axis) T = normalize(e x N), e the coordinate
+// axis least aligned with `axis`.
+void tangent_frame(vec3 axis, vec3 N, out vec3 T, out vec3 B) {
+    T = cross(axis, N);
+    if (length(T) < 1e-4) {
+        vec3 a = abs(axis);
+        vec3 e = (a.x <= a.y && a.x <= a.z) ? vec3(1.0, 0.0, 0.0)
+                                            : (a.y <= a.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+        T = cross(e, N);
+    }
+    T = normalize(T);
+    B = cross(N, T);
+}
+
+// Ward 1992 (seed 002) in the lecture's form pi f (N.L):
+//   f = exp(-((h.T/ax)^2 + (h.B/ay)^2) / (h.N)^2) / (4 pi ax ay sqrt(N.L N.V)),
+// h = L + V unnormalized (the exponent is tan^2(theta_h)(cos^2 phi / ax^2 +
+// sin^2 phi / ay^2) for any length of h). Zero unless N.L > 0 and N.V > 0.
+float ward_specular(float alpha_x, float alpha_y, float NoL, float NoV, float HoT, float HoB, float HoN) {
+    if (NoL <= 0.0 || NoV <= 0.0 || HoN <= 0.0) return 0.0;
+    float x = HoT / alpha_x, y = HoB / alpha_y;
+    float e = (x * x + y * y) / (HoN * HoN);
+    if (e > 80.0) return 0.0;  // below 1e-35 of the peak: skip, no 0 * inf
+    return sqrt(NoL / NoV) * exp(-e) / (4.0 * alpha_x * alpha_y);
+}
+
+// Heidrich & Seidel 1998 (seed 002): ((sin(L,T) sin(V,T) - cos(L,T) cos(V,T))+)^n
+// = (cos x)^n with x = pi - angle(L,T) - angle(V,T). The angles come from
+// atan(|a x T|, a.T), so 1 - cos x = 2 sin^2(x/2) stays accurate for n = 10000.
+float heidrich_seidel_lobe(float n, float angle_LT, float angle_VT) {
+    float x = PI - angle_LT - angle_VT;
+    float s = sin(0.5 * x);
+    return pow_cos(cos(x), 2.0 * s * s, n);
+}
