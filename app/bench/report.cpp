@@ -1,6 +1,7 @@
 // bench.md and bench.csv.
 #include "results.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -70,6 +71,15 @@ std::string markdown_report(const BenchResults& r) {
                << " | " << ratio_cell(s.first_general.median_ms, s.first_specialized.median_ms) << " | "
                << ms_cell(s.steady_specialized) << " | " << ms_cell(s.steady_general) << " | "
                << ratio_cell(s.steady_general.median_ms, s.steady_specialized.median_ms) << " |\n";
+        // Geometric means: the typical ratio, not dominated by the slowest scene.
+        double log_first = 0, log_steady = 0;
+        for (const auto& s : r.specialization) {
+            log_first += std::log(s.first_general.median_ms / s.first_specialized.median_ms);
+            log_steady += std::log(s.steady_general.median_ms / s.steady_specialized.median_ms);
+        }
+        const double n = double(r.specialization.size());
+        md << "| geometric mean | | | " << format("%.2f", std::exp(log_first / n)) << "x | | | "
+           << format("%.2f", std::exp(log_steady / n)) << "x |\n";
     }
 
     const ProcessResult& p = r.process;
