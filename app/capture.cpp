@@ -13,10 +13,11 @@ void Capture::render_to_files(const Scene& scene, const std::string& png_path, c
     const Rgb8Image display = renderer_->read_display();
     RgbFloatImage raw;
     if (!raw_path.empty()) raw = renderer_->read_raw();
-    // Encode both before writing: a PFM that cannot be written must not leave
-    // a new PNG behind either (the PNG is written last, after the PFM).
-    if (!raw_path.empty()) write_pfm(raw_path, raw);
-    write_png(png_path, display);
+    // Both files or neither: a PFM that cannot be written must not leave a new
+    // PNG behind, nor the other way round.
+    std::vector<FileContents> files = {{png_path, encode_png(display)}};
+    if (!raw_path.empty()) files.push_back({raw_path, encode_pfm(raw)});
+    write_files_atomic(files);
 }
 
 }  // namespace m3055

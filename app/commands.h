@@ -9,6 +9,7 @@ void add_render_command(CLI::App& app);   // app/cmd_render.cpp
 void add_figures_command(CLI::App& app);  // app/cmd_figures.cpp
 void add_batch_command(CLI::App& app);    // app/cmd_batch.cpp
 void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
+void add_explore_command(CLI::App& app);  // app/cmd_explore.cpp
 
 // Exit codes shared by the subcommands.
 inline constexpr int kExitOk = 0;

@@ -3,15 +3,16 @@
 //   m3055 figures --out screenshots/
 //   m3055 batch MANIFEST.json [--backend ...]
 //   m3055 bench [--out DIR] [--quick]
+//   m3055 explore [--scene S.json]     (also plain `m3055` when $DISPLAY is set)
 #include "commands.h"
+#include "explore/explore.h"
 
-#include <cstdio>
-
-namespace m3055 { void add_explore_command(CLI::App& app); }  // app/cmd_explore.cpp
+#include <cstdlib>
+#include <iostream>
 
 int main(int argc, char** argv) {
     CLI::App app{"M3055 material explorer: the reflection models of Yokoi et al. on an emulated 512x320, 5-bit display"};
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1);
     m3055::add_render_command(app);
     m3055::add_figures_command(app);
     m3055::add_batch_command(app);
@@ -19,8 +20,17 @@ int main(int argc, char** argv) {
     m3055::add_explore_command(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& error) {
+        return error.get_exit_code();  // a subcommand failed; it has said why on stderr
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? m3055::kExitOk : m3055::kExitUsage;
+    }
+    if (app.get_subcommands().empty()) {
+        // Plain `m3055`: the explorer when there is a display to show it on.
+        const char* display = std::getenv("DISPLAY");
+        if (display && *display) return m3055::run_explorer(m3055::ExploreOptions{});
+        std::cerr << app.help() << "\nm3055: no display ($DISPLAY is unset): use a subcommand, e.g. m3055 render\n";
+        return m3055::kExitUsage;
     }
     return m3055::kExitOk;
 }

@@ -191,7 +191,7 @@ TEST(SetOption, OutOfRangeOverrideFailsWithTheSpecMessageAndWritesNothing) {
     TempDir out;
     const RunResult run = run_m3055({"render", "--scene", spec_example(), "--out", out.file("o.png"), "--raw",
                                      out.file("o.pfm"), "--set", "objects[0].material.m=-3"});
-    EXPECT_NE(run.exit_code, 0);
+    EXPECT_EQ(run.exit_code, 1) << "bad input exits 1 (2 is kept for command-line usage errors)";
     EXPECT_EQ(run.err, "m3055: " + spec_example() + ": objects[0].material.m: must be in [0, 10000], got -3\n");
     EXPECT_TRUE(files_in(out.path()).empty());
 }
@@ -265,7 +265,7 @@ std::vector<BadCase> bad_cases() {
     return {
         {"unreadable_file", "", "cannot read file: No such file or directory"},
         {"invalid_json", edited("\"bits\": 5 }", "\"bits\": 5, }"), "invalid JSON: parse error at line 2, ..."},
-        {"unknown_key", edited("\"m\": 10", "\"m\": 10, \"shininess\": 3"), "objects[0].material.shininess: unknown key"},
+        {"unknown_key", edited("\"m\": 10", "\"m\": 10, \"glossiness\": 3"), "objects[0].material.glossiness: unknown key"},
         {"wrong_type", edited("\"radius\": 1.0", "\"radius\": \"big\""), "objects[0].radius: must be a number, got \"big\""},
         {"out_of_range", edited("\"m\": 10", "\"m\": -3"), "objects[0].material.m: must be in [0, 10000], got -3"},
         {"missing_required_key", edited(", \"fov_y_deg\": 30", ""), "camera.fov_y_deg: is required"},
@@ -369,6 +369,22 @@ TEST(OutputFolder, MissingRawFolderWritesNoPng) {
     EXPECT_TRUE(is_one_line(run.err)) << run.err;
     EXPECT_EQ(run.err.rfind("m3055: " + pfm + ": ", 0), 0u) << run.err;
     EXPECT_TRUE(files_in(out.path()).empty());
+}
+
+TEST(OutputFolder, MissingPngFolderWritesNoPfm) {
+    // PNG and PFM are written all or nothing: the PFM's folder exists, the PNG's does not.
+    TempDir out;
+    const std::string png = out.file("missing/o.png");
+    const RunResult run = run_m3055({"render", "--scene", spec_example(), "--out", png, "--raw", out.file("o.pfm")});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_TRUE(is_one_line(run.err)) << run.err;
+    EXPECT_EQ(run.err.rfind("m3055: " + png + ": ", 0), 0u) << run.err;
+    EXPECT_TRUE(files_in(out.path()).empty()) << "no PFM and no temporary file may be left";
+}
+
+TEST(CommandLine, UsageErrorExits2) {
+    const RunResult run = run_m3055({"render", "--scene"});
+    EXPECT_EQ(run.exit_code, 2) << describe(run);
 }
 
 // ---- figures -----------------------------------------------------------------

@@ -46,7 +46,9 @@ int write_all(int fd, const void* bytes, std::size_t size) {
 
 }  // namespace
 
-void write_file_atomic(const std::string& path, const void* bytes, std::size_t size) {
+// Writes `bytes` to a new temporary file beside `path` and returns its name;
+// the target itself is not touched.
+static std::string write_temporary(const std::string& path, const void* bytes, std::size_t size) {
     if (path.empty() || path.back() == '/') fail(path, "not a file name", EISDIR);
     std::string temp = folder_of(path) + "/." + name_of(path) + ".tmp-XXXXXX";
     const int fd = ::mkstemp(temp.data());
@@ -68,10 +70,39 @@ void write_file_atomic(const std::string& path, const void* bytes, std::size_t s
         ::unlink(temp.c_str());
         fail(path, "cannot close", error);
     }
+    return temp;
+}
+
+// Renames the temporary file over the target (atomic within one filesystem).
+static void commit_temporary(const std::string& temp, const std::string& path) {
     if (::rename(temp.c_str(), path.c_str()) != 0) {
         const int error = errno;
         ::unlink(temp.c_str());
         fail(path, "cannot rename temporary file over target", error);
+    }
+}
+
+void write_file_atomic(const std::string& path, const void* bytes, std::size_t size) {
+    commit_temporary(write_temporary(path, bytes, size), path);
+}
+
+void write_files_atomic(const std::vector<FileContents>& files) {
+    // Every file is written and synced before any is renamed, so a failure
+    // while writing (a missing folder, a full disk) replaces none of them.
+    std::vector<std::string> temps;
+    try {
+        for (const auto& file : files) temps.push_back(write_temporary(file.path, file.bytes.data(), file.bytes.size()));
+    } catch (...) {
+        for (const auto& temp : temps) ::unlink(temp.c_str());
+        throw;
+    }
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        try {
+            commit_temporary(temps[i], files[i].path);
+        } catch (...) {
+            for (std::size_t j = i + 1; j < files.size(); ++j) ::unlink(temps[j].c_str());
+            throw;
+        }
     }
 }
 

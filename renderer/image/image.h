@@ -32,6 +32,15 @@ struct RgbFloatImage {
 // Writes `bytes` to `path` atomically. Throws ImageError("PATH: reason").
 void write_file_atomic(const std::string& path, const void* bytes, std::size_t size);
 
+// Writes several files all or nothing as far as the filesystem allows: all
+// temporary files first, then the renames (which only fail if the folder
+// changes under us between the two steps).
+struct FileContents {
+    std::string path;
+    std::vector<std::uint8_t> bytes;
+};
+void write_files_atomic(const std::vector<FileContents>& files);
+
 void write_png(const std::string& path, const Rgb8Image& image);
 void write_pfm(const std::string& path, const RgbFloatImage& image);
 
