@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <stdexcept>
@@ -73,6 +74,14 @@ WayResult make_way(const std::string& group, const std::string& way, const std::
     return result;
 }
 
+// The 1-, 5- and 15-minute load averages, or "" where /proc/loadavg is missing.
+std::string load_average() {
+    std::ifstream file("/proc/loadavg");
+    std::string one, five, fifteen;
+    if (!(file >> one >> five >> fifteen)) return "";
+    return one + " " + five + " " + fifteen;
+}
+
 std::string scene_names(const std::vector<NamedScene>& scenes) {
     if (scenes.size() > 3) return std::to_string(scenes.size()) + " figure scenes (fig05-fig13)";
     std::string names;
@@ -86,6 +95,7 @@ public:
 
     BenchResults run() {
         const auto start = std::chrono::steady_clock::now();
+        results_.load_before = load_average();
         results_.quick = options_.quick;
         results_.warm_up = plan_.warm_up;
         results_.repetitions = plan_.repetitions;
@@ -104,6 +114,7 @@ public:
         cheap_metal_ways();
         shader_ways();
         specialization_table();
+        results_.load_after = load_average();
         results_.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return results_;
     }

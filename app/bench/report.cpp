@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <thread>
 
 namespace m3055::bench {
 namespace {
@@ -46,6 +47,11 @@ std::string markdown_report(const BenchResults& r) {
        << "counts the mean per scene. Errors are at 512 x 320 against the double-precision CPU reference, "
        << "over interior pixels (away from silhouettes): max and mean |difference| of the unquantized colour, "
        << "and the share of pixels whose 5-bit display levels all match.\n\n";
+    if (!r.load_before.empty())
+        md << "Load average (1, 5, 15 min) before: " << r.load_before << ", after: " << r.load_after
+           << " on " << std::thread::hardware_concurrency()
+           << " cores; a load above the core count means other work shared the CPU and stretched the times "
+              "(the min columns are the least disturbed samples).\n\n";
 
     md << "## Run time against error\n\n"
        << "| group | way | scenes | 512x320 ms | 1920x1080 ms | max abs diff | mean abs diff | same 5-bit level | "

@@ -43,6 +43,7 @@ struct BenchResults {
     std::vector<SpecializationResult> specialization;
     ProcessResult process;
     double total_seconds = 0;
+    std::string load_before, load_after;  // /proc/loadavg: other work on the machine skews times
 };
 
 std::string markdown_report(const BenchResults& results);
