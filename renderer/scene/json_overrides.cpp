@@ -19,8 +19,20 @@ struct Step {
     std::size_t index = 0;
 };
 
+// `text` as a JSON string: in quotes, control characters escaped.
+std::string quoted(const std::string& text) {
+    return json(text).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+// Command-line text as it appears in a message: as typed, unless it holds a
+// control character (a newline would split the one-line message), then quoted.
+std::string one_line(const std::string& text) {
+    for (const unsigned char c : text)
+        if (c < 0x20 || c == 0x7f) return quoted(text);
+    return text;
+}
+
 [[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& problem) {
-    throw SceneError(source + ": --set " + path + ": " + problem);
+    throw SceneError(source + ": --set " + one_line(path) + ": " + problem);
 }
 
 // "a.b[2].c" -> a, b, [2], c. Keys hold no '.', '[' or ']'.
@@ -76,7 +88,7 @@ json parse_value(const Override& item, const std::string& source) {
 Override parse_override(const std::string& text) {
     const std::size_t equals = text.find('=');
     if (equals == std::string::npos || equals == 0)
-        throw SceneError("--set " + text + ": expected path=value");
+        throw SceneError("--set " + one_line(text) + ": expected path=value");
     return Override{text.substr(0, equals), text.substr(equals + 1)};
 }
 
@@ -107,7 +119,7 @@ void apply_overrides(json& doc, const std::vector<Override>& overrides, const st
             } else {
                 if (!here->is_object()) fail(source, item.path, where + " is not an object");
                 if (!leaf && !here->contains(step.key))
-                    fail(source, item.path, "no such key \"" + step.key + "\"");
+                    fail(source, item.path, "no such key " + quoted(step.key));
                 here = &(*here)[step.key];
                 walked = scene_json::join_key(walked, step.key);
             }
