@@ -39,21 +39,24 @@ public:
     }
 
 private:
+    // A frame holds only its own step, not its whole path: copying the path into
+    // every frame made deeply nested input cost O(depth^2) memory (a 400 KB file
+    // of '[' took gigabytes). The path is built only when a duplicate is found.
     struct Frame {
         bool is_object;
-        std::string path;
         std::set<std::string> keys;
         std::string key;    // object: the key being read
         std::size_t index;  // array: the entry being read
     };
 
     std::string child_path() const {
-        if (frames_.empty()) return "";
-        const Frame& top = frames_.back();
-        return top.is_object ? join_key(top.path, top.key) : join_index(top.path, top.index);
+        std::string path;
+        for (const Frame& frame : frames_)
+            path = frame.is_object ? join_key(path, frame.key) : join_index(path, frame.index);
+        return path;
     }
     bool open(bool is_object) {
-        frames_.push_back(Frame{is_object, child_path(), {}, {}, 0});
+        frames_.push_back(Frame{is_object, {}, {}, 0});
         return true;
     }
     bool close() {
