@@ -2,9 +2,12 @@
 // The document is edited before validation, so a bad value gets the same
 // message it would get in the file.
 #include "scene/json_node.h"
+#include "scene/json_parse.h"
 #include "scene/load.h"
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace m3055 {
 
@@ -71,10 +74,30 @@ std::vector<Step> parse_path(const std::string& path, const std::string& source)
     return steps;
 }
 
+// Levels of arrays and objects in `value`, counted without recursion.
+std::size_t nesting_depth(const json& value) {
+    std::size_t deepest = 0;
+    std::vector<std::pair<const json*, std::size_t>> todo{{&value, 0}};
+    while (!todo.empty()) {
+        const auto [node, depth] = todo.back();
+        todo.pop_back();
+        if (!node->is_structured()) continue;
+        deepest = std::max(deepest, depth + 1);
+        if (deepest > scene_json::kMaxNesting) break;
+        for (const json& child : *node) todo.push_back({&child, depth + 1});
+    }
+    return deepest;
+}
+
 // The override's value: JSON when it parses as JSON, else the text as a string.
 json parse_value(const Override& item, const std::string& source) {
     try {
-        return json::parse(item.value);
+        json value = json::parse(item.value);
+        // The same limit as in files (json_parse.h): error messages dump values recursively.
+        if (nesting_depth(value) > scene_json::kMaxNesting)
+            fail(source, item.path,
+                 "value nested deeper than " + std::to_string(scene_json::kMaxNesting) + " levels");
+        return value;
     } catch (const json::out_of_range& error) {
         // "1e400" is a number, just not a finite one: say so instead of treating it as text.
         fail(source, item.path, "invalid value: " + scene_json::json_problem(error.what()));

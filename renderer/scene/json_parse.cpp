@@ -56,6 +56,9 @@ private:
         return path;
     }
     bool open(bool is_object) {
+        if (frames_.size() >= kMaxNesting)
+            throw SceneError(source_ + ": " + child_path() + ": nested deeper than " +
+                             std::to_string(kMaxNesting) + " levels");
         frames_.push_back(Frame{is_object, {}, {}, 0});
         return true;
     }
