@@ -170,8 +170,7 @@ std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, con
             auto raw = std::make_shared<RgbFloatImage>();
             if (!item.raw.empty()) *raw = renderer.read_raw();
             pending.emplace_back(i, pool.submit([item, display, raw]() {
-                if (!item.raw.empty()) write_pfm(item.raw, *raw);
-                write_png(item.out, *display);
+                write_capture_files(item.out, *display, item.raw, *raw);
             }));
         } catch (const std::exception& e) {
             failed.set_value(e.what());

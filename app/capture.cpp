@@ -13,6 +13,11 @@ void Capture::render_to_files(const Scene& scene, const std::string& png_path, c
     const Rgb8Image display = renderer_->read_display();
     RgbFloatImage raw;
     if (!raw_path.empty()) raw = renderer_->read_raw();
+    write_capture_files(png_path, display, raw_path, raw);
+}
+
+void write_capture_files(const std::string& png_path, const Rgb8Image& display, const std::string& raw_path,
+                         const RgbFloatImage& raw) {
     // Both files or neither: a PFM that cannot be written must not leave a new
     // PNG behind, nor the other way round.
     std::vector<FileContents> files = {{png_path, encode_png(display)}};

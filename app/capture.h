@@ -11,6 +11,10 @@
 
 namespace m3055 {
 
+// Writes the PNG and, when raw_path is not empty, the PFM: both or neither.
+void write_capture_files(const std::string& png_path, const Rgb8Image& display, const std::string& raw_path,
+                         const RgbFloatImage& raw);
+
 class Capture {
 public:
     explicit Capture(Backend backend);
