@@ -1,0 +1,211 @@
+// Scene files for the classic models (SPEC 5, docs/models.md): every model and
+// parameter read exactly, defaults, one-line errors naming file and JSON path,
+// the lecture's ambient fields, and the exact scene_to_json round trip.
+#include "scene/load.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace m3055 {
+namespace {
+
+using nlohmann::json;
+
+json base_scene(json material) {
+    return {{"camera", {{"projection", "perspective"}, {"position", {0, 0, 4.5}}, {"target", {0, 0, 0}}, {"fov_y_deg", 30}}},
+            {"lights", json::array({{{"type", "directional"}, {"direction", {1, 1, 1}}}})},
+            {"objects", json::array({{{"shape", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", material}}})}};
+}
+
+Material load_material(const json& material) {
+    return scene_from_json(base_scene(material), "scene.json").objects.at(0).material;
+}
+
+std::string error_of(const json& doc) {
+    try {
+        scene_from_json(doc, "scene.json");
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string material_error(const json& material) { return error_of(base_scene(material)); }
+
+void expect_vec(const dvec3& a, const dvec3& b) {
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_EQ(a.z, b.z);
+}
+
+TEST(ClassicScene, EveryModelNameLoads) {
+    const char* names[] = {"lambert", "half_lambert", "half_lambert_clamped", "half_lambert_normalized",
+                           "oren_nayar", "phong", "blinn_phong", "microfacet", "ward", "heidrich_seidel"};
+    for (const char* name : names) {
+        const Material m = load_material({{"model", name}, {"kd", {0.5, 0.25, 0.125}}});
+        EXPECT_STREQ(to_string(m.model), name);
+        EXPECT_TRUE(is_classic(m.model));
+        expect_vec(m.kd, {0.5, 0.25, 0.125});
+        expect_vec(m.ka, {0.5, 0.25, 0.125});  // ka defaults to kd (seed 001)
+        expect_vec(m.emission, {0, 0, 0});
+    }
+}
+
+TEST(ClassicScene, ParametersAreReadExactly) {
+    const Material phong = load_material({{"model", "phong"}, {"kd", {0.1, 0.2, 0.3}}, {"ka", {0.3, 0.2, 0.1}},
+                                          {"ks", {0.9, 0.8, 0.7}}, {"emission", {0.01, 0.02, 0.03}},
+                                          {"shininess", 42.5}});
+    expect_vec(phong.ka, {0.3, 0.2, 0.1});
+    expect_vec(phong.ks, {0.9, 0.8, 0.7});
+    expect_vec(phong.emission, {0.01, 0.02, 0.03});
+    EXPECT_EQ(phong.shininess, 42.5);
+
+    const Material on = load_material({{"model", "oren_nayar"}, {"kd", {1, 1, 1}}, {"sigma", 0.35}});
+    EXPECT_EQ(on.sigma, 0.35);
+
+    const Material mf = load_material({{"model", "microfacet"}, {"kd", {0, 0, 0}}, {"distribution", "ggx"},
+                                       {"fresnel", "dielectric"}, {"ior", 1.33},
+                                       {"lobes", {{{"w", 0.7}, {"m", 0.1}}, {{"w", 0.3}, {"m", 0.6}}}}});
+    EXPECT_EQ(mf.distribution, Distribution::ggx);
+    EXPECT_EQ(mf.fresnel, Fresnel::dielectric);
+    EXPECT_EQ(mf.ior, 1.33);
+    ASSERT_EQ(mf.lobes.size(), 2u);
+    EXPECT_EQ(mf.lobes[1].w, 0.3);
+    EXPECT_EQ(mf.lobes[1].m, 0.6);
+
+    const Material bp = load_material({{"model", "microfacet"}, {"kd", {0, 0, 0}}, {"distribution", "blinn_phong"},
+                                       {"lobes", {{{"w", 1}, {"n", 250}}}}});
+    EXPECT_EQ(bp.lobes.at(0).m, 250.0);
+
+    const Material ward = load_material({{"model", "ward"}, {"kd", {0, 0, 0}}, {"alpha_x", 0.05}, {"alpha_y", 0.4},
+                                         {"axis", {0, 0, 2}}});
+    EXPECT_EQ(ward.alpha_x, 0.05);
+    EXPECT_EQ(ward.alpha_y, 0.4);
+    expect_vec(ward.axis, {0, 0, 1});  // normalized on load
+}
+
+TEST(ClassicScene, Defaults) {
+    const Material mf = load_material({{"model", "microfacet"}, {"kd", {0, 0, 0}}});
+    EXPECT_EQ(mf.distribution, Distribution::beckmann);
+    EXPECT_EQ(mf.fresnel, Fresnel::schlick);
+    EXPECT_EQ(mf.ior, 1.5);
+    ASSERT_EQ(mf.lobes.size(), 1u);
+    EXPECT_EQ(mf.lobes[0].m, 0.3);
+    expect_vec(mf.ks, {1, 1, 1});
+    const Material bp = load_material({{"model", "microfacet"}, {"kd", {0, 0, 0}}, {"distribution", "blinn_phong"}});
+    EXPECT_EQ(bp.lobes.at(0).m, 100.0);
+    const Material hs = load_material({{"model", "heidrich_seidel"}, {"kd", {0, 0, 0}}});
+    EXPECT_EQ(hs.shininess, 32.0);
+    expect_vec(hs.axis, {0, 1, 0});
+}
+
+TEST(ClassicScene, LectureAmbientFields) {
+    json doc = base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}});
+    doc["ambient"] = {0.1, 0.2, 0.3};
+    doc["lights"][0]["ambient"] = {0.4, 0.5, 0.6};
+    const Scene scene = scene_from_json(doc, "scene.json");
+    expect_vec(scene.ambient, {0.1, 0.2, 0.3});
+    expect_vec(scene.lights[0].ambient, {0.4, 0.5, 0.6});
+    const Scene plain = scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "scene.json");
+    expect_vec(plain.ambient, {0, 0, 0});
+    expect_vec(plain.lights[0].ambient, {0, 0, 0});
+}
+
+TEST(ClassicScene, ErrorsNameTheFileAndThePath) {
+    const std::string m = "scene.json: objects[0].material.";
+    EXPECT_EQ(material_error({{"model", "lambert"}}), m + "kd: is required");
+    EXPECT_EQ(material_error({{"model", "lambert"}, {"kd", {1, 1, 1}}, {"color", {1, 1, 1}}}),
+              m + "color: not a parameter of model lambert (its diffuse colour is \"kd\")");
+    EXPECT_EQ(material_error({{"model", "lambert"}, {"kd", {1, 1, 1}}, {"ks", {1, 1, 1}}}),
+              m + "ks: not a parameter of model lambert");
+    EXPECT_EQ(material_error({{"model", "phong"}, {"kd", {1, 1, 1}}, {"sigma", 0.3}}),
+              m + "sigma: not a parameter of model phong");
+    EXPECT_EQ(material_error({{"model", "highlight"}, {"color", {1, 1, 1}}, {"kd", {1, 1, 1}}}),
+              m + "kd: not a parameter of model highlight");
+    EXPECT_EQ(material_error({{"model", "lambert"}, {"kd", {1, 1.5, 1}}}), m + "kd[1]: must be in [0, 1], got 1.5");
+    EXPECT_EQ(material_error({{"model", "phong"}, {"kd", {1, 1, 1}}, {"shininess", -1}}),
+              m + "shininess: must be in [0, 10000], got -1");
+    EXPECT_EQ(material_error({{"model", "oren_nayar"}, {"kd", {1, 1, 1}}, {"sigma", 11}}),
+              m + "sigma: must be in [0, 10], got 11");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"distribution", "cauchy"}}),
+              m + "distribution: must be \"blinn_phong\", \"gaussian\", \"beckmann\" or \"ggx\", got \"cauchy\"");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"fresnel", 1}}),
+              m + "fresnel: must be \"none\", \"schlick\" or \"dielectric\", got 1");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"ior", 0.9}}),
+              m + "ior: must be in [1, 5], got 0.9");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"lobes", {{{"w", 1}, {"m", 0}}}}}),
+              m + "lobes[0].m: must be in [0.001, 2], got 0");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"lobes", {{{"w", 1.5}, {"m", 0.2}}}}}),
+              m + "lobes[0].w: must be in [0, 1], got 1.5");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"distribution", "blinn_phong"},
+                              {"lobes", {{{"w", 1}, {"m", 0.2}}}}}),
+              m + "lobes[0].m: not a parameter of distribution blinn_phong (its lobes use \"w\" and \"n\")");
+    EXPECT_EQ(material_error({{"model", "microfacet"}, {"kd", {1, 1, 1}}, {"lobes", json::array()}}),
+              m + "lobes: must have 1 to 4 lobes, got 0");
+    EXPECT_EQ(material_error({{"model", "ward"}, {"kd", {1, 1, 1}}, {"alpha_y", 0}}),
+              m + "alpha_y: must be in [0.001, 1], got 0");
+    EXPECT_EQ(material_error({{"model", "ward"}, {"kd", {1, 1, 1}}, {"axis", {0, 0, 0}}}), m + "axis: must be non-zero");
+    json doc = base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}});
+    doc["ambient"] = {0, 0, 2};
+    EXPECT_EQ(error_of(doc), "scene.json: ambient[2]: must be in [0, 1], got 2");
+    doc = base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}});
+    doc["lights"][0]["ambient"] = "dim";
+    EXPECT_EQ(error_of(doc), "scene.json: lights[0].ambient: must be an array of 3 numbers");
+}
+
+TEST(ClassicScene, RoundTripIsExact) {
+    json doc = base_scene({{"model", "microfacet"}, {"kd", {0.1, 0.2, 0.30000000000000004}}, {"ka", {0.7, 0.1, 0.2}},
+                           {"ks", {0.9, 0.9, 0.9}}, {"emission", {0.01, 0, 0}}, {"distribution", "gaussian"},
+                           {"fresnel", "none"}, {"ior", 2.4}, {"lobes", {{{"w", 0.25}, {"m", 0.123456789}}}}});
+    doc["ambient"] = {0.05, 0.05, 0.1};
+    doc["lights"][0]["ambient"] = {0.2, 0.1, 0.0};
+    json more = doc["objects"][0];
+    const json others[] = {
+        {{"model", "ward"}, {"kd", {0, 0, 0}}, {"alpha_x", 0.011}, {"alpha_y", 0.7}, {"axis", {1, 2, 3}}},
+        {{"model", "heidrich_seidel"}, {"kd", {0, 0, 0}}, {"shininess", 7.25}, {"axis", {0, 0, 1}}},
+        {{"model", "oren_nayar"}, {"kd", {0.5, 0.5, 0.5}}, {"sigma", 0.3}},
+        {{"model", "half_lambert_clamped"}, {"kd", {0.5, 0.5, 0.5}}},
+        {{"model", "blinn_phong"}, {"kd", {0.5, 0.5, 0.5}}, {"shininess", 1e4}},
+        {{"model", "microfacet"}, {"kd", {0, 0, 0}}, {"distribution", "blinn_phong"}, {"lobes", {{{"w", 1}, {"n", 3}}}}},
+    };
+    for (const json& material : others) {
+        more["material"] = material;
+        doc["objects"].push_back(more);
+    }
+    const Scene a = scene_from_json(doc, "scene.json");
+    const Scene b = scene_from_json(scene_to_json(a), "roundtrip.json");
+    expect_vec(b.ambient, a.ambient);
+    expect_vec(b.lights[0].ambient, a.lights[0].ambient);
+    ASSERT_EQ(a.objects.size(), b.objects.size());
+    for (std::size_t i = 0; i < a.objects.size(); ++i) {
+        const Material& x = a.objects[i].material;
+        const Material& y = b.objects[i].material;
+        SCOPED_TRACE(to_string(x.model));
+        EXPECT_EQ(x.model, y.model);
+        expect_vec(x.kd, y.kd);
+        expect_vec(x.ka, y.ka);
+        expect_vec(x.ks, y.ks);
+        expect_vec(x.emission, y.emission);
+        expect_vec(x.axis, y.axis);
+        EXPECT_EQ(x.shininess, y.shininess);
+        EXPECT_EQ(x.sigma, y.sigma);
+        EXPECT_EQ(x.ior, y.ior);
+        EXPECT_EQ(x.alpha_x, y.alpha_x);
+        EXPECT_EQ(x.alpha_y, y.alpha_y);
+        EXPECT_EQ(x.distribution, y.distribution);
+        EXPECT_EQ(x.fresnel, y.fresnel);
+        ASSERT_EQ(x.lobes.size(), y.lobes.size());
+        for (std::size_t j = 0; j < x.lobes.size(); ++j) {
+            EXPECT_EQ(x.lobes[j].w, y.lobes[j].w);
+            EXPECT_EQ(x.lobes[j].m, y.lobes[j].m);
+        }
+    }
+    // Scenes without the lecture's ambient write no "ambient" key (old files unchanged).
+    const json plain = scene_to_json(scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "s.json"));
+    EXPECT_FALSE(plain.contains("ambient"));
+    EXPECT_FALSE(plain["lights"][0].contains("ambient"));
+}
+
+}  // namespace
+}  // namespace m3055
