@@ -3,7 +3,10 @@
 // must live beside the target and not in /tmp.
 #include "image/image.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -28,11 +31,25 @@ std::string name_of(const std::string& path) {
     throw ImageError(path + ": " + what + ": " + std::strerror(error));
 }
 
+// TEST-ONLY fault injection (tests/output_failures_test.cpp, docs/limits.md):
+// with M3055_FAULT_WRITE_AFTER_BYTES=N in the environment, writing a file fails
+// with ENOSPC after its first N bytes, as on a full disk, so the disk-full path
+// is tested even where a small tmpfs cannot be mounted. Unset: no limit.
+std::size_t fault_write_limit() {
+    const char* text = std::getenv("M3055_FAULT_WRITE_AFTER_BYTES");
+    if (!text || !*text) return SIZE_MAX;
+    char* end = nullptr;
+    const unsigned long long limit = std::strtoull(text, &end, 10);
+    return *end == '\0' ? std::size_t(limit) : SIZE_MAX;
+}
+
 // Writes everything, retrying short writes and EINTR. Returns 0 or an errno.
 int write_all(int fd, const void* bytes, std::size_t size) {
     const auto* p = static_cast<const unsigned char*>(bytes);
+    std::size_t budget = fault_write_limit();
     while (size > 0) {
-        const ssize_t n = ::write(fd, p, size);
+        if (budget == 0) return ENOSPC;  // the test-only limit above
+        const ssize_t n = ::write(fd, p, std::min(size, budget));
         if (n < 0) {
             if (errno == EINTR) continue;
             return errno;
@@ -40,6 +57,7 @@ int write_all(int fd, const void* bytes, std::size_t size) {
         if (n == 0) return EIO;  // should not happen for regular files; avoid looping forever
         p += n;
         size -= std::size_t(n);
+        if (budget != SIZE_MAX) budget -= std::size_t(n);
     }
     return 0;
 }
