@@ -4,6 +4,7 @@
 #include "passes/camera_frame.h"
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
+#include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
 
@@ -39,6 +40,7 @@ double far_to_near_key(const CameraFrame& frame, const Object& object) {
 struct Renderer::Impl {
     const GlApi& gl;
     ProgramCache programs;
+    MeshPass meshes;  // planes, cubes, cylinders, tori (passes/mesh_pass.h)
     unsigned scene_fbo = 0, colour_texture = 0, depth_texture = 0;
     unsigned display_fbo = 0, display_tex = 0;
     unsigned material_buffer = 0, material_texture = 0;
@@ -46,7 +48,7 @@ struct Renderer::Impl {
     int width = 0, height = 0;
     ShaderMode shader_mode = ShaderMode::specialized;
 
-    explicit Impl(const GlApi& api) : gl(api), programs(api) {
+    explicit Impl(const GlApi& api) : gl(api), programs(api), meshes(api) {
         gl.GenVertexArrays(1, &sphere_vao);
         gl.GenVertexArrays(1, &empty_vao);
         gl.GenBuffers(1, &instance_buffer);
@@ -152,12 +154,16 @@ struct Renderer::Impl {
         gl.Uniform1i(loc("u_materials"), 0);
     }
 
-    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances,
-                      const CameraFrame& frame, const LightUniforms& lights) {
-        if (instances.empty()) return;
+    void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
         gl.UseProgram(program);
         set_camera_uniforms(program, frame);
         upload_lights(gl, program, lights);
+    }
+
+    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances,
+                      const CameraFrame& frame, const LightUniforms& lights) {
+        if (instances.empty()) return;
+        use_program(program, frame, lights);
         gl.BindVertexArray(sphere_vao);
         gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
@@ -179,6 +185,7 @@ struct Renderer::Impl {
         std::vector<std::pair<double, SphereInstance>> sorted;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const Object& object = scene.objects[i];
+            if (object.shape != Shape::sphere) continue;  // a mesh: MeshPass
             auto rect = sphere_ndc_rect(frame, object.center, object.radius);
             if (!rect) continue;
             SphereInstance instance{{float(object.center.x), float(object.center.y), float(object.center.z),
@@ -196,6 +203,7 @@ struct Renderer::Impl {
         std::stable_sort(sorted.begin(), sorted.end(),
                          [](const auto& a, const auto& b) { return a.first > b.first; });
         for (const auto& entry : sorted) translucent.push_back(entry.second);
+        meshes.prepare(scene, frame);
 
         // Pass 1: background and opaque spheres, with depth.
         gl.BindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
@@ -213,19 +221,41 @@ struct Renderer::Impl {
             const auto defines = specialization_defines(shader_mode, opaque_objects, scene.lights);
             draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), opaque, frame, lights);
         }
+        if (!meshes.opaque_objects().empty()) {
+            const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
+            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", defines}), frame, lights);
+            meshes.draw_opaque();
+        }
 
         // Pass 2: translucent spheres over what is behind them (SPEC 4.2), as a
         // premultiplied "over" with a per-channel transmittance: dual-source
         // blending, dst = src0 + src1 * dst. Skipped when there are none.
-        if (!translucent.empty()) {
+        if (!translucent.empty() || !meshes.translucent().empty()) {
             gl.DepthMask(GL_FALSE);
             gl.Enable(GL_BLEND);
             gl.BlendEquation(GL_FUNC_ADD);
             gl.BlendFunc(GL_ONE, GL_SRC1_COLOR);
             auto defines = specialization_defines(shader_mode, translucent_objects, scene.lights);
             defines.push_back("TRANSLUCENT_PASS");
-            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), translucent, frame,
-                         lights);
+            auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
+            mesh_defines.push_back("TRANSLUCENT_PASS");
+            // Spheres and meshes merged far to near: runs of spheres between meshes.
+            std::vector<MeshPass::Translucent> mesh_order = meshes.translucent();
+            std::stable_sort(mesh_order.begin(), mesh_order.end(),
+                             [](const auto& a, const auto& b) { return a.key > b.key; });
+            std::size_t next_sphere = 0;
+            for (std::size_t m = 0; m <= mesh_order.size(); ++m) {
+                std::vector<SphereInstance> run;
+                while (next_sphere < sorted.size() &&
+                       (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
+                    run.push_back(sorted[next_sphere++].second);
+                if (!run.empty())
+                    draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), run, frame,
+                                 lights);
+                if (m == mesh_order.size()) break;
+                use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}), frame, lights);
+                meshes.draw_translucent(mesh_order[m]);
+            }
             gl.Disable(GL_BLEND);
             gl.DepthMask(GL_TRUE);
         }

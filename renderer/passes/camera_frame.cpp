@@ -1,5 +1,8 @@
 #include "passes/camera_frame.h"
 
+#include "geometry/mesh.h"
+#include "passes/mesh_depth_range.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -27,10 +30,20 @@ CameraFrame make_camera_frame(const Camera& camera, const Display& display,
     double z_min = 1e300, z_max = -1e300;
     for (const auto& object : objects) {
         const double z = glm::dot(object.center - camera.position, frame.forward);
-        z_min = std::min(z_min, z - object.radius);
-        z_max = std::max(z_max, z + object.radius);
+        const double reach = geometry::bounding_radius(object);
+        // A mesh reaching behind a perspective camera (a floor under it): only
+        // its part in view counts (passes/mesh_depth_range.h).
+        if (object.shape != Shape::sphere && camera.projection == Projection::perspective && z - reach <= 0) {
+            if (auto range = visible_depth_range(frame, geometry::make_mesh(object))) {
+                z_min = std::min(z_min, range->first);
+                z_max = std::max(z_max, range->second);
+            }
+            continue;
+        }
+        z_min = std::min(z_min, z - reach);
+        z_max = std::max(z_max, z + reach);
     }
-    if (objects.empty()) z_min = 0.1, z_max = 100;
+    if (z_min > z_max) z_min = 0.1, z_max = 100;  // nothing (in view)
     frame.far = std::max(z_max, 1e-3) * 1.001 + 1e-6;
     // Perspective depth needs near > 0; objects reaching behind it are clipped
     // to depth 0 there, which only matters for spheres around the camera.

@@ -3,10 +3,13 @@
 // faces in front of it composited back to front (SPEC 4.2, Fig. 9).
 #include "reference/reference.h"
 
+#include "reference/mesh_hits.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 namespace m3055::ref {
 
@@ -15,13 +18,37 @@ namespace {
 struct Hit {
     double t;
     int object;
+    int part = 0;           // meshes: the triangle's smooth piece (geometry/mesh.h)
+    dvec3 N = dvec3(0.0);   // meshes: the interpolated normal
 };
+
+// The meshes of the scene's non-sphere objects (null for spheres), built once.
+using Meshes = std::vector<std::unique_ptr<MeshIntersector>>;
+
+Meshes build_meshes(const Scene& scene) {
+    Meshes meshes(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].shape != Shape::sphere)
+            meshes[i] = std::make_unique<MeshIntersector>(geometry::make_mesh(scene.objects[i]));
+    return meshes;
+}
 
 // Every front-face hit of the ray, nearest first (ties by object index, so the
 // order never depends on the sort's whims).
-std::vector<Hit> all_hits(const Scene& scene, const Ray& ray) {
+std::vector<Hit> all_hits(const Scene& scene, const Meshes& meshes, const Ray& ray) {
     std::vector<Hit> hits;
     for (int i = 0; i < int(scene.objects.size()); ++i) {
+        if (meshes[i]) {
+            // A mesh's own bounding sphere first: most rays miss most meshes.
+            const Object& object = scene.objects[i];
+            const double reach = geometry::bounding_radius(object) * (1 + 1e-9);
+            const dvec3 oc = ray.origin - object.center;
+            const double b = glm::dot(oc, ray.dir);
+            if (glm::dot(oc, oc) > reach * reach && (b > 0 || glm::dot(oc - b * ray.dir, oc - b * ray.dir) > reach * reach))
+                continue;
+            for (const MeshHit& hit : meshes[i]->intersect_all(ray)) hits.push_back({hit.t, i, hit.part, hit.N});
+            continue;
+        }
         double t = 0.0;
         if (intersect_sphere(ray, scene.objects[i].center, scene.objects[i].radius, &t))
             hits.push_back({t, i});
@@ -36,8 +63,8 @@ std::vector<Hit> all_hits(const Scene& scene, const Ray& ray) {
 // indices); 0 only when nothing is hit.
 std::uint64_t coverage_signature(std::vector<Hit> hits) {
     if (hits.empty()) return 0;
-    std::vector<int> ids;
-    for (const Hit& h : hits) ids.push_back(h.object);
+    std::vector<int> ids;  // object and part: a mesh's creases separate pixels like silhouettes
+    for (const Hit& h : hits) ids.push_back(h.object * 8 + h.part);
     std::sort(ids.begin(), ids.end());
     std::uint64_t sig = 0x9e3779b97f4a7c15ULL;
     for (int id : ids) {
@@ -50,10 +77,12 @@ std::uint64_t coverage_signature(std::vector<Hit> hits) {
 }
 
 // SPEC 3: N = (P - C) / radius (normalized again for rounding), V = -ray direction.
-SurfacePoint surface_point(const Object& object, const Ray& ray, double t) {
+// Meshes: P on the triangle, N the interpolated normal of the hit.
+SurfacePoint surface_point(const Object& object, const Ray& ray, const Hit& hit) {
+    const double t = hit.t;
     SurfacePoint point;
     point.P = ray.origin + t * ray.dir;
-    point.N = glm::normalize((point.P - object.center) / object.radius);
+    point.N = object.shape == Shape::sphere ? glm::normalize((point.P - object.center) / object.radius) : hit.N;
     point.V = -ray.dir;
     return point;
 }
@@ -65,7 +94,7 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     for (const Hit& hit : hits) {
         const Object& object = scene.objects[hit.object];
         if (is_translucent(object.material.model)) continue;
-        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit.t), scene.ambient);
+        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit), scene.ambient);
         t_opaque = hit.t;
         break;
     }
@@ -74,7 +103,7 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
         const Object& object = scene.objects[it->object];
         if (!is_translucent(object.material.model) || !(it->t < t_opaque)) continue;
         const TranslucentShade shade =
-            shade_translucent(object.material, scene.lights, surface_point(object, ray, it->t));
+            shade_translucent(object.material, scene.lights, surface_point(object, ray, *it));
         color = shade.color + shade.transmittance * color;
     }
     return color;
@@ -88,10 +117,11 @@ ReferenceImage render_reference(const Scene& scene) {
     image.height = scene.display.height;
     image.rgb.assign(std::size_t(image.width) * image.height * 3, 0.0);
     image.coverage.assign(std::size_t(image.width) * image.height, 0);
+    const Meshes meshes = build_meshes(scene);
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             const Ray ray = camera_ray(scene.camera, image.width, image.height, x, y);
-            const std::vector<Hit> hits = all_hits(scene, ray);
+            const std::vector<Hit> hits = all_hits(scene, meshes, ray);
             const dvec3 c = shade_pixel(scene, ray, hits);
             const std::size_t i = std::size_t(y) * image.width + x;
             image.rgb[3 * i + 0] = c.r;

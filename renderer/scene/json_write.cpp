@@ -6,6 +6,7 @@
 #include "scene/load.h"
 
 #include "scene/json_classic.h"
+#include "scene/json_shapes.h"
 
 #include <nlohmann/json.hpp>
 
@@ -91,11 +92,11 @@ json scene_to_json(const Scene& scene) {
     json lights = json::array();
     for (const Light& light : scene.lights) lights.push_back(light_json(light));
     json objects = json::array();
-    for (const Object& object : scene.objects)
-        objects.push_back({{"shape", "sphere"},
-                           {"center", vec(object.center)},
-                           {"radius", object.radius},
-                           {"material", material_json(object.material)}});
+    for (const Object& object : scene.objects) {
+        json entry = scene_json::shape_json(object);
+        entry["material"] = material_json(object.material);
+        objects.push_back(std::move(entry));
+    }
     json out = {{"display", display_json(scene.display)},
                 {"background", vec(scene.background)},
                 {"camera", camera_json(scene.camera)},

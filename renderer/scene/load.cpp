@@ -2,9 +2,11 @@
 // scene_json::Node so that each error is one line "SOURCE: json.path: problem".
 #include "scene/load.h"
 
+#include "geometry/mesh.h"
 #include "scene/json_classic.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
+#include "scene/json_shapes.h"
 
 #include <glm/geometric.hpp>
 
@@ -251,11 +253,8 @@ Material read_material(const Node& node) {
 
 Object read_object(const Node& node) {
     node.expect_object();
-    node.check_keys({"shape", "center", "radius", "material"});
     Object object;
-    if (node.has("shape")) node.child("shape").one_of({"sphere"});
-    object.center = node.required("center").vec3_in(kCoordinate);
-    object.radius = node.required("radius").number_in(Range{0.0, 1e6, true, false});
+    scene_json::read_shape(node, object);  // shape, centre and the shape's own keys
     object.material = read_material(node.required("material"));
     return object;
 }
@@ -295,7 +294,15 @@ Scene scene_from_json(const json& doc, const std::string& source) {
     const Node objects = root.required("objects");
     const std::size_t count = objects.array_size(0, kMaxObjects, "at most 100000 objects");
     scene.objects.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) scene.objects.push_back(read_object(objects.at(i)));
+    std::size_t triangles = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        scene.objects.push_back(read_object(objects.at(i)));
+        // Bounded so that no scene file can exhaust memory with meshes.
+        triangles += geometry::triangle_count(scene.objects.back());
+        if (triangles > geometry::kMaxSceneTriangles)
+            objects.at(i).fail("the scene's meshes would have more than " +
+                               std::to_string(geometry::kMaxSceneTriangles) + " triangles (fewer segments?)");
+    }
     return scene;
 }
 

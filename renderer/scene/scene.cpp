@@ -51,6 +51,17 @@ const char* to_string(Fresnel fresnel) {
     return "?";
 }
 
+const char* to_string(Shape shape) {
+    switch (shape) {
+        case Shape::sphere: return "sphere";
+        case Shape::plane: return "plane";
+        case Shape::cube: return "cube";
+        case Shape::cylinder: return "cylinder";
+        case Shape::torus: return "torus";
+    }
+    return "?";
+}
+
 const char* to_string(Projection projection) {
     return projection == Projection::perspective ? "perspective" : "orthographic";
 }

@@ -108,13 +108,25 @@ struct Material {
     dvec3 axis{0.0, 1.0, 0.0};      // ward, heidrich_seidel: T = normalize(axis x N) (unit)
 };
 
-enum class Shape { sphere };
+// Spheres are exact (ray-cast); the other shapes are triangle meshes made by
+// renderer/geometry/ (docs/shapes.md: fields, tessellation, normals, limits).
+enum class Shape { sphere, plane, cube, cylinder, torus };
 
 struct Object {
     Shape shape = Shape::sphere;
     dvec3 center{0.0, 0.0, 0.0};
-    double radius = 1.0;
+    double radius = 1.0;          // sphere, cylinder
     Material material;
+    // The other shapes' own fields (after `material`, so {shape, center, radius,
+    // material} still initializes a sphere).
+    dvec3 axis{0.0, 1.0, 0.0};    // unit: plane's normal ("normal"), cylinder's and torus's axis
+    double size = 1.0;            // plane: side of the square; cube: edge length
+    dvec3 rotation_deg{0.0, 0.0, 0.0};  // cube: about x, then y, then z (degrees, world axes)
+    double height = 1.0;          // cylinder: length along the axis, centred on center
+    bool capped = true;           // cylinder: closed by two flat discs
+    double major_radius = 1.0;    // torus: centre of the tube to the axis
+    double minor_radius = 0.25;   // torus: radius of the tube
+    int segments = 0;             // cylinder, torus: segments a full circle (0 = the default)
 };
 
 struct Scene {
@@ -136,6 +148,7 @@ const char* to_string(LightType type);
 const char* to_string(Projection projection);
 const char* to_string(Distribution distribution);
 const char* to_string(Fresnel fresnel);
+const char* to_string(Shape shape);
 
 // True for models whose output depends on what lies behind (needs the blended pass).
 inline bool is_translucent(Model model) { return model == Model::translucent; }

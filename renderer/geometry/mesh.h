@@ -1,0 +1,71 @@
+// Triangle meshes of the non-sphere shapes (docs/shapes.md), generated in
+// double, in world space. The GPU mesh pass (passes/mesh_pass.cpp) and the CPU
+// reference (reference/mesh_hits.cpp) use the SAME mesh, so they are compared
+// pixel by pixel like the exact spheres; tests/shape_mesh_test.cpp holds the
+// mesh against the analytic shape.
+//
+// Conventions:
+// - triangles are counter-clockwise seen from outside: (b - a) x (c - a)
+//   points out of the solid (for the plane: along its normal), so GL's default
+//   front face and SPEC 3's "only front faces are shaded" agree;
+// - normals are unit, per vertex: the analytic normal where the surface is
+//   smooth (cylinder side, torus), one flat normal per cube face and per
+//   cylinder cap (those vertices are not shared across the crease);
+// - `parts` numbers the smooth pieces of a shape (cube faces 0-5, cylinder
+//   side 0 / bottom 1 / top 2, plane and torus 0): the reference's coverage
+//   signature includes them, so creases are excluded from pixel comparisons
+//   like silhouettes.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace m3055::geometry {
+
+struct Mesh {
+    std::vector<dvec3> positions;
+    std::vector<dvec3> normals;          // unit, one per position
+    std::vector<std::uint32_t> indices;  // 3 per triangle
+    std::vector<std::uint8_t> parts;     // one per triangle
+    std::size_t triangles() const { return indices.size() / 3; }
+};
+
+// Segments a full circle when an object gives none: 64 (an angular step of
+// 5.625 degrees; docs/shapes.md gives the measured error).
+inline constexpr int kDefaultSegments = 64;
+inline constexpr int kMinSegments = 3;
+inline constexpr int kMaxSegments = 512;
+// Every mesh of a scene together: the loader rejects scenes above this.
+inline constexpr std::size_t kMaxSceneTriangles = 4000000;
+
+// The orthonormal frame around a unit axis A used by every shape: T is the
+// world axis least aligned with A (ties: x, then y, then z) made perpendicular
+// to A, and B = A x T, so (T, B, A) is right-handed.
+struct AxisFrame {
+    dvec3 t, b, a;
+};
+AxisFrame axis_frame(const dvec3& axis);
+
+// Rotation of the cube: about world x by rx, then y by ry, then z by rz (degrees).
+dvec3 rotate_xyz(const dvec3& v, const dvec3& rotation_deg);
+
+int segments_of(const Object& object);
+
+Mesh make_plane(const dvec3& center, const dvec3& normal, double size);
+Mesh make_cube(const dvec3& center, double size, const dvec3& rotation_deg);
+Mesh make_cylinder(const dvec3& center, const dvec3& axis, double radius, double height, bool capped,
+                   int segments);
+Mesh make_torus(const dvec3& center, const dvec3& axis, double major_radius, double minor_radius,
+                int segments);
+
+// The mesh of any non-sphere object (empty for a sphere).
+Mesh make_mesh(const Object& object);
+// Triangles make_mesh(object) gives, without building it (0 for a sphere).
+std::size_t triangle_count(const Object& object);
+
+// Radius of a sphere around object.center containing the whole object.
+double bounding_radius(const Object& object);
+
+}  // namespace m3055::geometry

@@ -1,0 +1,59 @@
+// The meshes of the non-sphere shapes (geometry/mesh.h) on the GPU: built and
+// uploaded once per frame, drawn with glsl/passes/mesh.{vert,frag} by the
+// Renderer in its opaque pass (one batch) and its translucent pass (one draw
+// per mesh, interleaved with the spheres back to front).
+#pragma once
+
+#include "gl/gl_api.h"
+#include "passes/camera_frame.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace m3055 {
+
+class MeshPass {
+public:
+    explicit MeshPass(const GlApi& gl);
+    ~MeshPass();
+    MeshPass(const MeshPass&) = delete;
+    MeshPass& operator=(const MeshPass&) = delete;
+
+    // A translucent mesh in draw order terms: `key` sorts like the spheres'
+    // far_to_near_key (larger = farther), see far_to_near_mesh_key.
+    struct Translucent {
+        double key;
+        std::size_t first, count;  // its range in the index buffer
+    };
+
+    // Builds and uploads every non-sphere object's mesh: opaque ones in one
+    // batch; each translucent one with its triangles sorted far to near.
+    void prepare(const Scene& scene, const CameraFrame& frame);
+
+    const std::vector<const Object*>& opaque_objects() const { return opaque_objects_; }
+    const std::vector<const Object*>& translucent_objects() const { return translucent_objects_; }
+    const std::vector<Translucent>& translucent() const { return translucent_; }
+
+    // Draw with the program in use (camera, lights and materials already set).
+    // Back faces are culled: only front faces are shaded (SPEC 3).
+    void draw_opaque() const;
+    void draw_translucent(const Translucent& mesh) const;
+
+private:
+    void draw(std::size_t first, std::size_t count) const;
+    const GlApi& gl_;
+    unsigned vao_ = 0, vertex_buffer_ = 0, index_buffer_ = 0;
+    std::size_t opaque_count_ = 0;
+    std::vector<const Object*> opaque_objects_, translucent_objects_;
+    std::vector<Translucent> translucent_;
+};
+
+// Back-to-front key of a translucent mesh, comparable with the spheres' power
+// key: perspective |eye - center|^2 (the power of a sphere of radius 0),
+// orthographic the centre's depth along f. Meshes are not exactly sortable
+// (docs/shapes.md): this is exact for disjoint convex meshes only when their
+// centres order them.
+double far_to_near_mesh_key(const CameraFrame& frame, const Object& object);
+
+}  // namespace m3055
