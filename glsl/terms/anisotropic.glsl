@@ -27,7 +27,8 @@ float ward_specular(float alpha_x, float alpha_y, float NoL, float NoV, float Ho
     float x = HoT / alpha_x, y = HoB / alpha_y;
     float e = (x * x + y * y) / (HoN * HoN);
     if (e > 80.0) return 0.0;  // below 1e-35 of the peak: skip, no 0 * inf
-    return sqrt(NoL / NoV) * exp(-e) / (4.0 * alpha_x * alpha_y);
+    // N.V floored at 1e-12: finite at the silhouette (a denormal N.V gave Inf).
+    return sqrt(NoL / max(NoV, 1e-12)) * exp(-e) / (4.0 * alpha_x * alpha_y);
 }
 
 // Heidrich & Seidel 1998 (seed 002): ((sin(L,T) sin(V,T) - cos(L,T) cos(V,T))+)^n

@@ -140,7 +140,8 @@ double ward_specular(double alpha_x, double alpha_y, double NoL, double NoV, dou
     const double x = HoT / alpha_x, y = HoB / alpha_y;
     const double exponent = (x * x + y * y) / (HoN * HoN);
     if (exponent > 700.0) return 0.0;
-    return std::sqrt(NoL / NoV) * std::exp(-exponent) / (4.0 * alpha_x * alpha_y);
+    // N.V floored at 1e-12 as in the GLSL: finite at the silhouette.
+    return std::sqrt(NoL / std::max(NoV, 1e-12)) * std::exp(-exponent) / (4.0 * alpha_x * alpha_y);
 }
 
 }  // namespace m3055::ref

@@ -1,0 +1,142 @@
+// Numerical stress of the classic models (SPEC 5) through the stress harness:
+// one input per pixel, the real GLSL (glsl/passes/stress.frag, general
+// program) against the double reference on the same float inputs.
+//   - Hostile inputs (grazing and exactly opposite L and V, N at the tangent
+//     axis's pole, exponents 0 and 10000, roughness 0.001 and 2, IOR 1 and 5):
+//     never NaN or Inf, on the GPU or in the reference.
+//   - Inputs away from the edges (N.L, N.V >= 0.02, lobe widths >= 0.01 rad,
+//     exponents <= 1000): |gpu - ref| <= 1e-3 max(1, |ref|), the GPU test's bound.
+#include "stress_harness.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <random>
+
+namespace m3055 {
+namespace {
+
+using test::StressInput;
+
+// Every number as the GPU reads it (float), so both sides see the same input.
+Material rounded(Material m) {
+    m = test::float_rounded(m);
+    auto f = [](double& x) { x = double(float(x)); };
+    for (dvec3* v : {&m.kd, &m.ka, &m.ks, &m.emission, &m.axis}) f(v->x), f(v->y), f(v->z);
+    f(m.shininess), f(m.sigma), f(m.ior), f(m.alpha_x), f(m.alpha_y);
+    return m;
+}
+
+struct Generated {
+    Material material;
+    bool well_conditioned;  // lobe widths >= 0.01 rad, exponents <= 1000
+};
+
+Generated random_material(std::mt19937& rng, bool hostile) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto pick = [&](std::initializer_list<double> edges, double lo, double hi) {
+        if (hostile && u(rng) < 0.5) return *(edges.begin() + int(u(rng) * edges.size()) % edges.size());
+        return lo + (hi - lo) * u(rng);
+    };
+    Material m;
+    m.model = static_cast<Model>(int(Model::lambert) + int(u(rng) * 10) % 10);
+    m.kd = {u(rng), u(rng), u(rng)};
+    m.ka = {u(rng), u(rng), u(rng)};
+    m.ks = {u(rng), u(rng), u(rng)};
+    m.emission = {0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng)};
+    m.shininess = pick({0.0, 1e-3, 10000.0}, 0.0, 1000.0);
+    m.sigma = pick({0.0, 10.0}, 0.0, 1.5);
+    m.ior = pick({1.0, 5.0}, 1.0, 3.0);
+    m.alpha_x = pick({0.001, 1.0}, 0.02, 1.0);
+    m.alpha_y = pick({0.001, 1.0}, 0.02, 1.0);
+    m.axis = glm::normalize(dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) + dvec3(0, 1e-3, 0));
+    m.distribution = static_cast<Distribution>(int(u(rng) * 4) % 4);
+    m.fresnel = static_cast<Fresnel>(int(u(rng) * 3) % 3);
+    const int lobes = 1 + int(u(rng) * 4) % 4;
+    const bool exponent = m.distribution == Distribution::blinn_phong;
+    m.lobes.clear();
+    for (int j = 0; j < lobes; ++j)
+        m.lobes.push_back({u(rng), exponent ? pick({0.0, 10000.0}, 0.0, 1000.0) : pick({0.001, 2.0}, 0.02, 2.0)});
+    bool ok = m.shininess <= 1000.0 && m.alpha_x >= 0.02 && m.alpha_y >= 0.02;
+    for (const Lobe& lobe : m.lobes) ok = ok && (exponent ? lobe.m <= 1000.0 : lobe.m >= 0.02);
+    return {rounded(m), ok};
+}
+
+dvec3 random_unit(std::mt19937& rng) {
+    std::normal_distribution<double> g(0.0, 1.0);
+    return glm::normalize(dvec3(g(rng), g(rng), g(rng)));
+}
+
+TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
+    test::StressHarness harness;
+    std::mt19937 rng(2024);
+    test::StressBatch batch;
+    batch.light0.intensity = 1.0;
+    batch.light0.ambient = {0.1, 0.1, 0.1};
+    Light fill;
+    fill.direction = glm::normalize(dvec3(-1, 0.3, 0.5));
+    fill.intensity = 0.5;
+    fill.ambient = {0.05, 0.0, 0.05};
+    batch.more_lights = {fill};
+    std::vector<bool> checked;
+    const int count = 200000;
+    for (int i = 0; i < count; ++i) {
+        const bool hostile = i % 2 == 1;
+        Generated g = random_material(rng, hostile);
+        dvec3 N = random_unit(rng), V = random_unit(rng), L = random_unit(rng);
+        if (glm::dot(N, V) < 0) V = -V;
+        if (hostile) {
+            switch (i / 2 % 6) {
+                case 0: L = -V; break;                                             // opposite
+                case 1: L = glm::normalize(L - glm::dot(L, N) * N + 1e-7 * N); break;  // grazing light
+                case 2: V = glm::normalize(V - glm::dot(V, N) * N + 1e-7 * N); break;  // grazing view
+                case 3: N = g.material.axis; break;                                // tangent-frame pole
+                case 4: L = V = N; break;                                          // head on
+                default: break;
+            }
+        }
+        StressInput input;
+        input.N = glm::vec3(N);
+        input.V = glm::vec3(V);
+        input.L = glm::vec3(L);
+        input.material = g.material;
+        batch.inputs.push_back(input);
+        const dvec3 n = glm::normalize(dvec3(input.N)), v = glm::normalize(dvec3(input.V)),
+                    l = glm::normalize(dvec3(input.L));
+        checked.push_back(!hostile && g.well_conditioned && glm::dot(n, l) >= 0.02 && glm::dot(n, v) >= 0.02);
+    }
+    const std::vector<test::StressOutput> gpu = harness.evaluate_gpu(batch);
+    const std::vector<Light> lights = test::stress_lights(batch);
+    long nonfinite_gpu = 0, nonfinite_ref = 0, compared = 0, beyond = 0;
+    double worst = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const dvec3 ref = test::evaluate_reference(batch.inputs[i], lights).color;
+        const dvec3 got = gpu[i].color;
+        for (int c = 0; c < 3; ++c) {
+            if (!std::isfinite(got[c])) ++nonfinite_gpu;
+            if (!std::isfinite(ref[c])) ++nonfinite_ref;
+        }
+        if (!checked[i]) continue;
+        ++compared;
+        double scaled = 0.0;
+        for (int c = 0; c < 3; ++c) scaled = std::max(scaled, std::abs(got[c] - ref[c]) / std::max(1.0, std::abs(ref[c])));
+        worst = std::max(worst, scaled);
+        if (scaled > 1e-3) {
+            ++beyond;
+            if (beyond <= 5)
+                ADD_FAILURE() << to_string(batch.inputs[i].material.model) << " input " << i << ": gpu " << got.x << " "
+                              << got.y << " " << got.z << " ref " << ref.x << " " << ref.y << " " << ref.z;
+        }
+    }
+    std::printf("[ result   ] %ld inputs compared, worst scaled difference %.3g; non-finite gpu %ld ref %ld\n",
+                compared, worst, nonfinite_gpu, nonfinite_ref);
+    EXPECT_EQ(nonfinite_gpu, 0);
+    EXPECT_EQ(nonfinite_ref, 0);
+    EXPECT_GT(compared, 5000);
+    EXPECT_EQ(beyond, 0) << "worst scaled difference " << worst;
+}
+
+}  // namespace
+}  // namespace m3055
