@@ -4,7 +4,7 @@
 //   - Hostile inputs (grazing and exactly opposite L and V, N at the tangent
 //     axis's pole, exponents 0 and 10000, roughness 0.001 and 2, IOR 1 and 5):
 //     never NaN or Inf, on the GPU or in the reference.
-//   - Inputs away from the edges (N.L, N.V >= 0.02, lobe widths >= 0.01 rad,
+//   - Inputs away from the edges (N.L, N.V >= 0.02, lobe widths >= 0.02,
 //     exponents <= 1000): |gpu - ref| <= 1e-3 max(1, |ref|), the GPU test's bound.
 #include "stress_harness.h"
 
