@@ -144,7 +144,7 @@ std::vector<BatchItem> load_manifest(const std::string& path) {
 }
 
 std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
-                      unsigned encoder_threads) {
+                      unsigned encoder_threads, const std::function<bool()>& stop) {
     if (encoder_threads == 0) encoder_threads = std::max(1u, std::thread::hardware_concurrency());
     EncoderPool pool(encoder_threads);
     // Results in flight, oldest first; bounded so that finished images do not
@@ -160,6 +160,7 @@ std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, con
         if (progress) progress(index, items[index], error);
     };
     for (std::size_t i = 0; i < items.size(); ++i) {
+        if (stop && stop()) break;  // the pending writes below still finish
         const BatchItem& item = items[i];
         std::promise<std::string> failed;
         try {

@@ -36,7 +36,9 @@ using BatchProgress = std::function<void(std::size_t index, const BatchItem& ite
 // here); PNG/PFM encoding and writing, which cost more than rendering a
 // 512 x 320 frame on llvmpipe, run on `encoder_threads` workers while the next
 // scene renders (0: one per core). Progress is reported in manifest order.
+// `stop` (e.g. Ctrl-C, app/interrupt.h) is asked before each scene: once true,
+// no further scene is started, and the writes already under way complete.
 std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
-                      unsigned encoder_threads = 0);
+                      unsigned encoder_threads = 0, const std::function<bool()>& stop = {});
 
 }  // namespace m3055

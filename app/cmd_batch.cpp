@@ -3,6 +3,7 @@
 // `m3055 render` of that scene: both go through Capture::render_to_files.
 #include "batch.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "progress.h"
 
 #include <unistd.h>
@@ -24,19 +25,30 @@ void add_batch_command(CLI::App& app) {
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->callback([options]() {
-        std::size_t failures = 0, total = 0;
+        std::size_t failures = 0, total = 0, written = 0;
+        // Ctrl-C stops between scenes: finished files kept, none half-written.
+        const InterruptWatch interrupt;
         try {
             const std::vector<BatchItem> items = load_manifest(options->manifest);
             total = items.size();
             Capture capture(parse_backend(options->backend));
             Progress progress(items.size(), isatty(STDERR_FILENO) == 1);
-            failures = run_batch(capture, items, [&](std::size_t, const BatchItem& item, const std::string& error) {
-                progress.step(item.out, error);
-            });
+            failures = run_batch(
+                capture, items,
+                [&](std::size_t, const BatchItem& item, const std::string& error) {
+                    progress.step(item.out, error);
+                    if (error.empty()) ++written;
+                },
+                0, [&]() { return interrupt.raised(); });
             progress.finish();
         } catch (const std::exception& error) {
             std::cerr << "m3055: " << error.what() << "\n";
             throw CLI::RuntimeError(kExitFailure);
+        }
+        if (interrupt.raised()) {
+            std::cerr << "m3055: interrupted by " << signal_name(interrupt.signal()) << ": " << written << " of "
+                      << total << " scenes written, the rest not started\n";
+            throw CLI::RuntimeError(kExitInterrupted);
         }
         if (failures) {
             std::cerr << "m3055: " << failures << " of " << total << " scenes failed\n";
