@@ -22,10 +22,11 @@ void add_triangle(Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c,
     mesh.parts.push_back(std::uint8_t(part));
 }
 
-// A flat quad centre +- h u +- h v with normal n = u x v (u, v unit, orthogonal):
-// corners (-,-) (+,-) (+,+) (-,+), counter-clockwise around n.
-void add_flat_quad(Mesh& mesh, const dvec3& centre, const dvec3& u, const dvec3& v, double h, int part) {
-    const dvec3 n = glm::cross(u, v);
+// A flat quad centre +- h u +- h v with normal n = u x v (u, v unit, orthogonal;
+// n given, so a plane keeps its loaded normal bit for bit): corners (-,-) (+,-)
+// (+,+) (-,+), counter-clockwise around n.
+void add_flat_quad(Mesh& mesh, const dvec3& centre, const dvec3& u, const dvec3& v, const dvec3& n, double h,
+                   int part) {
     const std::uint32_t a = add_vertex(mesh, centre - h * u - h * v, n);
     const std::uint32_t b = add_vertex(mesh, centre + h * u - h * v, n);
     const std::uint32_t c = add_vertex(mesh, centre + h * u + h * v, n);
@@ -42,7 +43,7 @@ dvec3 radial(const AxisFrame& frame, double angle) {
 }  // namespace
 
 AxisFrame axis_frame(const dvec3& axis) {
-    const dvec3 a = glm::normalize(axis);
+    const dvec3 a = axis;  // unit (the loader normalizes)
     const dvec3 m = glm::abs(a);
     const dvec3 e = m.x <= m.y && m.x <= m.z ? dvec3(1, 0, 0) : m.y <= m.z ? dvec3(0, 1, 0) : dvec3(0, 0, 1);
     const dvec3 t = glm::normalize(e - glm::dot(e, a) * a);
@@ -58,14 +59,17 @@ dvec3 rotate_xyz(const dvec3& v, const dvec3& rotation_deg) {
     return p;
 }
 
-int segments_of(const Object& object) { return object.segments > 0 ? object.segments : kDefaultSegments; }
+int segments_of(const Object& object) {
+    if (object.segments > 0) return object.segments;
+    return object.shape == Shape::torus ? kDefaultTorusSegments : kDefaultSegments;
+}
 
 // A square of side `size` in the plane through `center` with unit `normal`,
 // its edges along the normal's axis frame T and B. Flat: two triangles are exact.
 Mesh make_plane(const dvec3& center, const dvec3& normal, double size) {
     const AxisFrame frame = axis_frame(normal);
     Mesh mesh;
-    add_flat_quad(mesh, center, frame.t, frame.b, size / 2, 0);
+    add_flat_quad(mesh, center, frame.t, frame.b, frame.a, size / 2, 0);
     return mesh;
 }
 
@@ -83,7 +87,7 @@ Mesh make_cube(const dvec3& center, double size, const dvec3& rotation_deg) {
         dvec3 v = rotate_xyz(axes[(i + 2) % 3], rotation_deg);
         if (sign < 0) std::swap(u, v);
         const dvec3 n = rotate_xyz(sign * axes[i], rotation_deg);
-        add_flat_quad(mesh, center + h * n, u, v, h, face);
+        add_flat_quad(mesh, center + h * n, u, v, n, h, face);
     }
     return mesh;
 }
