@@ -2,6 +2,7 @@
 // save a screenshot byte-identical to `m3055 render` of the saved scene, show
 // panels and the emulated display in its window, and sleep when idle.
 #include "image/image.h"
+#include "scene/load.h"
 #include "scene/presets.h"
 #include "test_support.h"
 
@@ -198,6 +199,28 @@ TEST_F(Explorer, ScriptErrorsNameTheLineAndFailTheRun) {
     EXPECT_NE(run.err.find("script.txt:2: "), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("objects[0].material.m"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("script.txt:3: unknown command 'fly'"), std::string::npos) << run.err;
+}
+
+// The Objects panel's shapes (app/explore/shape_editor.h): add each shape,
+// change a sphere's shape; the saved scene loads and renders as the window shows it.
+TEST_F(Explorer, AddsEveryShapeAndChangesAShape) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "figure spec_example\nadd_object cube\nadd_object cylinder\n"
+                                             "add_object torus\nadd_object plane\nselect_object 0\nshape torus\n"
+                                             "screenshot shot.png\nsave scene.json\nadd_object teapot\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    EXPECT_NE(run.exit_code, 0) << "the last line is an error";
+    EXPECT_NE(run.err.find("script.txt:10: unknown shape 'teapot'"), std::string::npos) << run.err;
+    const Scene scene = load_scene_file(dir.file("scene.json"));
+    ASSERT_EQ(scene.objects.size(), 5u);
+    const Shape expected[] = {Shape::torus, Shape::cube, Shape::cylinder, Shape::torus, Shape::plane};
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(scene.objects[i].shape, expected[i]) << i;
+    // The floor is under the other objects.
+    for (int i = 0; i < 4; ++i) EXPECT_GT(scene.objects[i].center.y, scene.objects[4].center.y);
+    const test::RunResult render =
+        test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("render.png")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_EQ(test::read_text(dir.file("render.png")), test::read_text(dir.file("shot.png")));
 }
 
 TEST_F(Explorer, BadStartingSceneIsAOneLineErrorNotACrash) {

@@ -2,6 +2,7 @@
 #include "explore/panels.h"
 
 #include "explore/figure_scenes.h"
+#include "explore/shape_editor.h"
 #include "explore/widgets.h"
 
 #include <imgui.h>
@@ -45,18 +46,14 @@ void objects_section(ExplorerState& state) {
     auto& objects = state.scene.objects;
     for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
         ImGui::PushID(i);
-        const std::string label = "sphere " + std::to_string(i) + ": " + to_string(objects[i].material.model);
+        const std::string label = std::string(to_string(objects[i].shape)) + " " + std::to_string(i) + ": " +
+                                  to_string(objects[i].material.model);
         if (ImGui::Selectable(label.c_str(), state.selected_object == i)) state.selected_object = i;
         if (state.selected_object == i) {
             Object& o = objects[i];
-            double c[3] = {o.center.x, o.center.y, o.center.z};
-            if (ImGui::DragScalarN("centre", ImGuiDataType_Double, c, 3, 0.02f)) {
-                o.center = {c[0], c[1], c[2]};
-                state.changed();
-            }
-            if (slider_double("radius", &o.radius, 0.01, 10.0, "%.3f", true)) state.changed();
+            if (shape_editor(o)) state.changed();  // shape selector and the shape's fields
             ImGui::BeginDisabled(objects.size() <= 1);
-            const bool removed = ImGui::SmallButton("remove this sphere");
+            const bool removed = ImGui::SmallButton("remove this object");
             ImGui::EndDisabled();
             if (removed) {
                 remove_object(state, i);
@@ -66,7 +63,11 @@ void objects_section(ExplorerState& state) {
         }
         ImGui::PopID();
     }
-    if (ImGui::Button("+ add sphere")) add_object(state);
+    ImGui::TextUnformatted("add:");
+    for (const char* name : {"sphere", "plane", "cube", "cylinder", "torus"}) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton((std::string("+ ") + name).c_str())) add_object(state, *parse_shape(name));
+    }
 }
 
 void camera_section(ExplorerState& state) {

@@ -1,6 +1,7 @@
 #include "explore/script.h"
 
 #include "explore/keys.h"
+#include "explore/shape_editor.h"
 #include "scene/light_direction.h"
 #include "scene/load.h"
 
@@ -123,7 +124,17 @@ void Script::run(ExplorerState& state, const std::string& line, double now, long
     } else if (command == "remove_light") {
         if (!remove_light(state, integer())) throw std::runtime_error("no such light");
     } else if (command == "add_object") {
-        add_object(state);
+        std::string name = "sphere";
+        in >> name;  // optional: the shape
+        const auto shape = parse_shape(name);
+        if (!shape) throw std::runtime_error("unknown shape '" + name + "'");
+        add_object(state, *shape);
+    } else if (command == "shape") {
+        const std::string name = word();
+        const auto shape = parse_shape(name);
+        if (!selected_material(state) || !shape) throw std::runtime_error("no object or unknown shape '" + name + "'");
+        set_shape(state.scene.objects[state.selected_object], *shape);  // as the Objects panel's shape selector
+        state.changed();
     } else if (command == "remove_object") {
         if (!remove_object(state, integer())) throw std::runtime_error("cannot remove that object");
     } else if (command == "figure") {

@@ -10,7 +10,8 @@
 //   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
 //   light_angles I AZ EL    light I's azimuth/elevation sliders (degrees)
 //   light_drag I X Y        a drag on light I's sphere widget, disc coordinates (y up)
-//   add_light | remove_light I | add_object | remove_object I
+//   add_light | remove_light I | add_object [SHAPE] | remove_object I
+//   shape NAME              the selected object's shape (sphere, plane, cube, cylinder, torus)
 //   figure NAME             a figure preset (fig05 ... fig13, spec_example)
 //   load PATH               load a scene file (errors show in the window)
 //   display m3055|modern    the Display panel's two preset buttons

@@ -1,6 +1,8 @@
 #include "explore/state.h"
 
 #include "explore/figure_scenes.h"
+#include "explore/shape_editor.h"
+#include "geometry/mesh.h"
 #include "image/image.h"
 #include "scene/load.h"
 
@@ -122,13 +124,27 @@ bool remove_light(ExplorerState& state, int index) {
     return true;
 }
 
-void add_object(ExplorerState& state) {
+void add_object(ExplorerState& state, Shape shape) {
     Object sphere;
     if (Material* material = selected_material(state)) sphere.material = *material;
-    // Beside the right-most sphere, so the new one is visible and does not overlap.
+    // Beside the right-most object (not counting floors), so the new one is
+    // visible and does not overlap.
     double right = -1e300;
-    for (const Object& o : state.scene.objects) right = std::max(right, o.center.x + o.radius);
-    if (!state.scene.objects.empty()) sphere.center = {right + 0.25 + sphere.radius, 0.0, 0.0};
+    for (const Object& o : state.scene.objects)
+        if (o.shape != Shape::plane) right = std::max(right, o.center.x + geometry::bounding_radius(o));
+    if (right > -1e300) sphere.center = {right + 0.25 + sphere.radius, 0.0, 0.0};
+    if (shape == Shape::plane) {  // a floor under everything
+        double bottom = 0.0, reach = 1.0;
+        for (const Object& o : state.scene.objects) {
+            if (o.shape == Shape::plane) continue;
+            bottom = std::min(bottom, o.center.y - geometry::bounding_radius(o));
+            reach = std::max(reach, std::abs(o.center.x) + geometry::bounding_radius(o));
+        }
+        sphere.center = {0.0, bottom, 0.0};
+        sphere.shape = Shape::plane;
+        sphere.size = 4.0 * reach;
+    }
+    set_shape(sphere, shape);
     state.scene.objects.push_back(sphere);
     state.selected_object = static_cast<int>(state.scene.objects.size()) - 1;
     state.changed();

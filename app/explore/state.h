@@ -72,8 +72,10 @@ inline constexpr int kMaxExplorerLights = 8;
 bool add_light(ExplorerState& state);
 bool remove_light(ExplorerState& state, int index);
 
-// Objects: add a sphere beside the others / remove one (at least one stays).
-void add_object(ExplorerState& state);
+// Objects: add one beside the others (a sphere, or another shape as
+// explore/shape_editor.h set_shape makes it; a plane is a floor under all) /
+// remove one (at least one stays).
+void add_object(ExplorerState& state, Shape shape = Shape::sphere);
 bool remove_object(ExplorerState& state, int index);
 
 // Display presets: the M3055 (512 x 320, 5 bits) and a "modern" display of the

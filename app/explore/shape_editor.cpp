@@ -1,0 +1,118 @@
+#include "explore/shape_editor.h"
+
+#include "explore/widgets.h"
+#include "geometry/mesh.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace m3055::explore {
+
+namespace {
+
+constexpr Shape kShapes[] = {Shape::sphere, Shape::plane, Shape::cube, Shape::cylinder, Shape::torus};
+
+// A direction edited as three numbers; kept unit and non-zero.
+bool direction_edit(const char* label, dvec3* direction) {
+    double v[3] = {direction->x, direction->y, direction->z};
+    if (!ImGui::DragScalarN(label, ImGuiDataType_Double, v, 3, 0.01f)) return false;
+    const dvec3 d(v[0], v[1], v[2]);
+    const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(length > 1e-6)) return false;  // SPEC 7: non-zero
+    *direction = d / length;
+    return true;
+}
+
+}  // namespace
+
+std::optional<Shape> parse_shape(const std::string& name) {
+    for (Shape shape : kShapes)
+        if (name == to_string(shape)) return shape;
+    return std::nullopt;
+}
+
+void set_shape(Object& object, Shape shape) {
+    if (object.shape == shape) return;
+    const double r = geometry::bounding_radius(object);  // the old shape's extent
+    const double size = std::max(r, 0.01);
+    object.shape = shape;
+    object.axis = {0.0, 1.0, 0.0};
+    switch (shape) {
+        case Shape::sphere: object.radius = size; break;
+        case Shape::plane:
+            object.center.y -= size;  // a floor under where the object was
+            object.size = 6.0 * size;
+            break;
+        case Shape::cube: object.size = 1.6 * size; break;
+        case Shape::cylinder:
+            object.radius = 0.6 * size;
+            object.height = 1.6 * size;
+            break;
+        case Shape::torus:
+            object.major_radius = 0.72 * size;
+            object.minor_radius = 0.28 * size;
+            break;
+    }
+}
+
+bool shape_editor(Object& o) {
+    bool changed = false;
+    int current = static_cast<int>(o.shape);
+    if (ImGui::Combo("shape", &current, "sphere\0plane\0cube\0cylinder\0torus\0")) {
+        set_shape(o, kShapes[current]);
+        changed = true;
+    }
+    double c[3] = {o.center.x, o.center.y, o.center.z};
+    if (ImGui::DragScalarN("centre", ImGuiDataType_Double, c, 3, 0.02f)) {
+        o.center = {c[0], c[1], c[2]};
+        changed = true;
+    }
+    switch (o.shape) {
+        case Shape::sphere:
+            changed |= slider_double("radius", &o.radius, 0.01, 10.0, "%.3f", true);
+            break;
+        case Shape::plane:
+            changed |= direction_edit("normal", &o.axis);
+            changed |= slider_double("size", &o.size, 0.01, 100.0, "%.3f", true);
+            break;
+        case Shape::cube: {
+            changed |= slider_double("edge", &o.size, 0.01, 20.0, "%.3f", true);
+            double r[3] = {o.rotation_deg.x, o.rotation_deg.y, o.rotation_deg.z};
+            const double lo = -360.0, hi = 360.0;
+            if (ImGui::DragScalarN("rotation x,y,z", ImGuiDataType_Double, r, 3, 0.5f, &lo, &hi, "%.1f deg",
+                                   ImGuiSliderFlags_AlwaysClamp)) {
+                o.rotation_deg = {r[0], r[1], r[2]};
+                changed = true;
+            }
+            break;
+        }
+        case Shape::cylinder:
+            changed |= direction_edit("axis", &o.axis);
+            changed |= slider_double("radius", &o.radius, 0.01, 10.0, "%.3f", true);
+            changed |= slider_double("height", &o.height, 0.01, 20.0, "%.3f", true);
+            changed |= ImGui::Checkbox("capped", &o.capped);
+            break;
+        case Shape::torus:
+            changed |= direction_edit("axis", &o.axis);
+            changed |= slider_double("major radius", &o.major_radius, 0.02, 10.0, "%.3f", true);
+            changed |= slider_double("minor radius", &o.minor_radius, 0.01, 10.0, "%.3f", true);
+            // The loader's rule: the tube is thinner than the ring.
+            o.minor_radius = std::min(o.minor_radius, o.major_radius * 0.99);
+            break;
+    }
+    if (o.shape == Shape::cylinder || o.shape == Shape::torus) {
+        int segments = geometry::segments_of(o);
+        if (ImGui::SliderInt("segments", &segments, geometry::kMinSegments, geometry::kMaxSegments, "%d",
+                             ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic)) {
+            o.segments = segments;
+            changed = true;
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("%zu triangles", geometry::triangle_count(o));
+    }
+    return changed;
+}
+
+}  // namespace m3055::explore
