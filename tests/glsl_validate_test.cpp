@@ -111,6 +111,11 @@ std::vector<ProgramCase> renderer_programs() {
         {"translucent_spot_lobes", vert, frag,
          {"SPECIALIZED", "LIGHT_COUNT 3", "HAS_LIGHT_LOBES", "HAS_POINT_LIGHTS", "HAS_SPOT_LIGHTS",
           "TRANSLUCENT_PASS"}},
+        // The mesh pass (planes, cubes, cylinders, tori: passes/mesh_pass.cpp).
+        {"mesh_general_opaque", "passes/mesh.vert", "passes/mesh.frag", {}},
+        {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", {"TRANSLUCENT_PASS"}},
+        {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag",
+         {"SPECIALIZED", "LIGHT_COUNT 1", "HAS_HIGHLIGHT"}},
     };
 }
 

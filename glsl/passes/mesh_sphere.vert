@@ -6,6 +6,7 @@
 //            the fragment shader shades;
 //   GOURAUD: per vertex - this shader shades, the colour is interpolated.
 #include "common/camera.glsl"
+#include "common/projection.glsl"
 #ifdef GOURAUD
 #include "models/shade.glsl"
 uniform int u_material;
@@ -19,16 +20,6 @@ layout(location = 0) in vec3 a_unit;  // point on the unit sphere = its normal
 
 uniform vec4 u_sphere;  // centre xyz, radius
 
-// The same camera as camera_ray() (SPEC 3) as a projection: x and y over the
-// view extent, w = distance along f for perspective; depth as window_depth().
-vec4 clip_position(vec3 P) {
-    vec3 d = P - u_cam_position;
-    float z = dot(d, u_cam_forward);
-    vec2 xy = vec2(dot(d, u_cam_right), dot(d, u_cam_up)) / u_cam_extent;
-    float n = u_depth_range.x, f = u_depth_range.y;
-    if (u_projection == 0) return vec4(xy, (f + n) / (f - n) * z - 2.0 * f * n / (f - n), z);
-    return vec4(xy, 2.0 * (z - n) / (f - n) - 1.0, 1.0);
-}
 
 void main() {
     vec3 P = u_sphere.xyz + u_sphere.w * a_unit;
