@@ -2,6 +2,7 @@
 
 #include "gl/program.h"
 #include "passes/camera_frame.h"
+#include "passes/camera_uniforms.h"
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
 #include "passes/mesh_pass.h"
@@ -140,23 +141,9 @@ struct Renderer::Impl {
         gl.TexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, material_buffer);
     }
 
-    void set_camera_uniforms(unsigned program, const CameraFrame& frame) {
-        auto loc = [&](const char* name) { return gl.GetUniformLocation(program, name); };
-        auto vec3 = [&](const char* name, const dvec3& v) { gl.Uniform3f(loc(name), float(v.x), float(v.y), float(v.z)); };
-        gl.Uniform2f(loc("u_viewport"), float(frame.width), float(frame.height));
-        gl.Uniform1i(loc("u_projection"), frame.projection == Projection::perspective ? 0 : 1);
-        vec3("u_cam_position", frame.position);
-        vec3("u_cam_forward", frame.forward);
-        vec3("u_cam_right", frame.right);
-        vec3("u_cam_up", frame.up);
-        gl.Uniform2f(loc("u_cam_extent"), float(frame.extent_x), float(frame.extent_y));
-        gl.Uniform2f(loc("u_depth_range"), float(frame.near), float(frame.far));
-        gl.Uniform1i(loc("u_materials"), 0);
-    }
-
     void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
         gl.UseProgram(program);
-        set_camera_uniforms(program, frame);
+        set_camera_uniforms(gl, program, frame);
         upload_lights(gl, program, lights);
     }
 

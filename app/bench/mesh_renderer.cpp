@@ -2,6 +2,7 @@
 
 #include "uv_sphere.h"
 #include "passes/camera_frame.h"
+#include "passes/camera_uniforms.h"
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
 
@@ -121,17 +122,8 @@ void MeshRenderer::render(const Scene& scene, Interpolation interpolation, Shade
     gl_.Enable(GL_CULL_FACE);  // default: back faces of counter-clockwise triangles
 
     gl_.UseProgram(program);
+    set_camera_uniforms(gl_, program, frame);
     auto loc = [&](const char* name) { return gl_.GetUniformLocation(program, name); };
-    auto vec3 = [&](const char* name, const dvec3& v) { gl_.Uniform3f(loc(name), float(v.x), float(v.y), float(v.z)); };
-    gl_.Uniform2f(loc("u_viewport"), float(frame.width), float(frame.height));
-    gl_.Uniform1i(loc("u_projection"), frame.projection == Projection::perspective ? 0 : 1);
-    vec3("u_cam_position", frame.position);
-    vec3("u_cam_forward", frame.forward);
-    vec3("u_cam_right", frame.right);
-    vec3("u_cam_up", frame.up);
-    gl_.Uniform2f(loc("u_cam_extent"), float(frame.extent_x), float(frame.extent_y));
-    gl_.Uniform2f(loc("u_depth_range"), float(frame.near), float(frame.far));
-    gl_.Uniform1i(loc("u_materials"), 0);
     upload_lights(gl_, program, lights);
     gl_.BindVertexArray(vao_);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
