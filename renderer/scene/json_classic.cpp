@@ -37,23 +37,9 @@ std::vector<std::string> keys_of(Model model) {
 // Microfacet lobes: {"w", "m"} (roughness) or {"w", "n"} (blinn_phong exponent).
 std::vector<Lobe> read_lobes(const Node& node, Distribution distribution) {
     const bool exponent = distribution == Distribution::blinn_phong;
-    const std::string key = exponent ? "n" : "m", other = exponent ? "m" : "n";
-    const std::size_t count = node.array_size(1, kMaxLobes, "1 to 4 lobes");
-    std::vector<Lobe> lobes;
-    for (std::size_t i = 0; i < count; ++i) {
-        const Node entry = node.at(i);
-        entry.expect_object();
-        entry.check_keys({"w", key}, [&](const std::string& k) {
-            if (k != other) return std::string();
-            return std::string("not a parameter of distribution ") + to_string(distribution) +
-                   " (its lobes use \"w\" and \"" + key + "\")";
-        });
-        Lobe lobe;
-        lobe.w = entry.required("w").number_in(kLobeWeight);
-        lobe.m = entry.required(key).number_in(exponent ? kExponent : kRoughness);
-        lobes.push_back(lobe);
-    }
-    return lobes;
+    return read_lobe_list(node, exponent ? "n" : "m", exponent ? "m" : "n", kLobeWeight,
+                          exponent ? kExponent : kRoughness,
+                          std::string("distribution ") + to_string(distribution));
 }
 
 }  // namespace

@@ -198,4 +198,23 @@ dvec3 unit_vector(const dvec3& v) {
     return s / std::sqrt(s.x * s.x + s.y * s.y + s.z * s.z);
 }
 
+std::vector<Lobe> read_lobe_list(const Node& node, const std::string& key, const std::string& other,
+                                 const Range& weight, const Range& value, const std::string& owner) {
+    const std::size_t count = node.array_size(1, kMaxLobes, "1 to 4 lobes");
+    std::vector<Lobe> lobes;
+    for (std::size_t i = 0; i < count; ++i) {
+        const Node entry = node.at(i);
+        entry.expect_object();
+        entry.check_keys({"w", key}, [&](const std::string& k) {
+            if (k != other) return std::string();
+            return "not a parameter of " + owner + " (its lobes use \"w\" and \"" + key + "\")";
+        });
+        Lobe lobe;
+        lobe.w = entry.required("w").number_in(weight);
+        lobe.m = entry.required(key).number_in(value);
+        lobes.push_back(lobe);
+    }
+    return lobes;
+}
+
 }  // namespace m3055::scene_json

@@ -95,4 +95,10 @@ private:
 // gives back exactly the same directions. Scales first so tiny or huge inputs work.
 dvec3 unit_vector(const dvec3& v);
 
+// A list of 1 to kMaxLobes lobes {"w", KEY}: weights in `weight`, KEY values in
+// `value`. The other lobe key (`other`) is rejected as "not a parameter of
+// OWNER (its lobes use "w" and "KEY")", e.g. owner = "model metal_blinn".
+std::vector<Lobe> read_lobe_list(const Node& node, const std::string& key, const std::string& other,
+                                 const Range& weight, const Range& value, const std::string& owner);
+
 }  // namespace m3055::scene_json

@@ -94,24 +94,8 @@ Camera read_camera(const Node& node) {
 // Material lobes: every entry {"w", key} where key is "m" (metal) or "n".
 std::vector<Lobe> read_material_lobes(const Node& node, Model model) {
     const bool beckmann = model == Model::metal;
-    const std::string key = beckmann ? "m" : "n";
-    const std::string other = beckmann ? "n" : "m";
-    const std::size_t count = node.array_size(1, kMaxLobes, "1 to 4 lobes");
-    std::vector<Lobe> lobes;
-    for (std::size_t i = 0; i < count; ++i) {
-        const Node entry = node.at(i);
-        entry.expect_object();
-        entry.check_keys({"w", key}, [&](const std::string& k) {
-            if (k != other) return std::string();
-            return std::string("not a parameter of model ") + to_string(model) +
-                   " (its lobes use \"w\" and \"" + key + "\")";
-        });
-        Lobe lobe;
-        lobe.w = entry.required("w").number_in(kLobeWeight);
-        lobe.m = entry.required(key).number_in(beckmann ? kBeckmannM : kExponent);
-        lobes.push_back(lobe);
-    }
-    return lobes;
+    return read_lobe_list(node, beckmann ? "m" : "n", beckmann ? "n" : "m", kLobeWeight,
+                          beckmann ? kBeckmannM : kExponent, std::string("model ") + to_string(model));
 }
 
 // A light's own lobes: all Beckmann {"w","m"} or all exponent {"w","n"}.
