@@ -1,47 +1,25 @@
 #include "batch.h"
 
+#include "gl/program.h"
 #include "image/image.h"
+#include "io/message_text.h"
+#include "io/run_files.h"
 #include "scene/load.h"
 
-#include <nlohmann/json.hpp>
+#include <malloc.h>
 
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <future>
-#include <map>
 #include <memory>
 #include <mutex>
-#include <sstream>
 #include <thread>
-#include <tuple>
 
 namespace m3055 {
 namespace {
-
-namespace fs = std::filesystem;
-
-// A manifest path relative to its folder; absolute paths are kept as written.
-std::string resolve(const fs::path& folder, const std::string& path) {
-    const fs::path p(path);
-    return p.is_absolute() ? p.string() : (folder / p).lexically_normal().string();
-}
-
-// The string at `key` of entry `index`, or "" when absent and optional.
-std::string read_path(const nlohmann::json& entry, const char* key, bool required, const std::string& prefix) {
-    const auto found = entry.find(key);
-    if (found == entry.end()) {
-        if (required) throw ManifestError(prefix + "." + key + ": is required");
-        return "";
-    }
-    if (!found->is_string()) throw ManifestError(prefix + "." + key + ": must be a string, got " + found->dump());
-    if (found->get<std::string>().empty()) throw ManifestError(prefix + "." + key + ": must not be empty");
-    return found->get<std::string>();
-}
 
 // Runs jobs on worker threads; each job's future holds "" or its error line.
 class EncoderPool {
@@ -98,88 +76,126 @@ private:
 
 }  // namespace
 
-std::vector<BatchItem> load_manifest(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ManifestError(path + ": cannot read the file");
-    std::stringstream text;
-    text << file.rdbuf();
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& error) {
-        throw ManifestError(path + ": invalid JSON at byte " + std::to_string(error.byte));
+void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest) {
+    constexpr io::RunFiles::Owner kManifest = ~io::RunFiles::Owner(0);
+    io::RunFiles files;
+    if (!manifest.empty()) files.add_input(kManifest, "the manifest", manifest);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const std::string entry = "[" + std::to_string(items[i].entry) + "]";
+        files.add_input(i, entry + ".scene", items[i].scene);
+        files.add_output(i, entry + ".out", items[i].out);
+        if (!items[i].raw.empty()) files.add_output(i, entry + ".raw", items[i].raw);
     }
-    if (!doc.is_array()) throw ManifestError(path + ": must be a JSON array of {\"scene\", \"out\", \"raw\"} objects");
-
-    const fs::path folder = fs::path(path).parent_path();
-    std::vector<BatchItem> items;
-    std::map<std::string, std::size_t> first_writer;  // output file -> entry that writes it
-    for (std::size_t i = 0; i < doc.size(); ++i) {
-        const std::string prefix = path + ": [" + std::to_string(i) + "]";
-        const nlohmann::json& entry = doc[i];
-        if (!entry.is_object()) throw ManifestError(prefix + ": must be an object, got " + entry.dump());
-        for (const auto& [key, value] : entry.items()) {
-            (void)value;
-            if (key != "scene" && key != "out" && key != "raw")
-                throw ManifestError(prefix + "." + key + ": unknown key (expected scene, out, raw)");
-        }
-        BatchItem item;
-        item.scene = resolve(folder, read_path(entry, "scene", true, prefix));
-        const std::string out = read_path(entry, "out", true, prefix);
-        const std::string raw = read_path(entry, "raw", false, prefix);
-        item.out = resolve(folder, out);
-        if (!raw.empty()) item.raw = resolve(folder, raw);
-        // Two entries writing one file would make the result depend on the order.
-        for (const auto& [key, written, target] :
-             {std::tuple{"out", out, item.out}, std::tuple{"raw", raw, item.raw}}) {
-            if (target.empty()) continue;
-            const auto [it, inserted] = first_writer.emplace(target, i);
-            if (!inserted)
-                throw ManifestError(prefix + "." + key + ": " + written + " is also written by entry [" +
-                                    std::to_string(it->second) + "]");
-        }
-        items.push_back(item);
-    }
-    return items;
+    const std::string prefix = manifest.empty() ? "" : text::quote_name(manifest) + ": ";
+    for (const auto& [owner, problem] : files.check(prefix))
+        if (owner != kManifest && items[owner].problem.empty()) items[owner].problem = problem;
 }
 
-std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
-                      unsigned encoder_threads, const std::function<bool()>& stop) {
-    if (encoder_threads == 0) encoder_threads = std::max(1u, std::thread::hardware_concurrency());
-    EncoderPool pool(encoder_threads);
-    // Results in flight, oldest first; bounded so that finished images do not
-    // pile up in memory when encoding is slower than rendering.
-    std::deque<std::pair<std::size_t, std::future<std::string>>> pending;
-    const std::size_t max_pending = 2 * std::size_t(encoder_threads);
+namespace {
+
+// Bytes an item's images hold until they are written: the 8-bit display, its
+// PNG (at most about as large), and the raw floats (written from the image
+// itself, image.h: pfm_file).
+std::size_t images_in_flight(int width, int height, bool raw) {
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    return pixels * 3 * 2 + (raw ? pixels * 12 : 0);
+}
+
+// Pass 1: every scene is loaded, and dropped, before anything is drawn, with
+// no GL context yet. A broken or hostile scene is refused at the memory cost
+// of loading it alone (docs/limits.md), its line comes at once, and a
+// manifest of broken scenes never starts a context. Returns each item's error.
+std::vector<std::string> check_scenes(const std::vector<BatchItem>& items) {
+    std::vector<std::string> errors(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (!items[i].problem.empty()) {
+            errors[i] = items[i].problem;  // its files clash: not even read
+            continue;
+        }
+        try {
+            load_scene_file(items[i].scene);
+        } catch (const std::exception& e) {
+            errors[i] = e.what();
+        }
+    }
+#ifdef __GLIBC__
+    // What loading freed goes back to the system before the GL context is
+    // made, instead of staying in the heap's free lists under it.
+    malloc_trim(0);
+#endif
+    return errors;
+}
+
+}  // namespace
+
+std::size_t run_batch(const std::function<Capture&()>& capture, const std::vector<BatchItem>& items,
+                      const BatchProgress& progress, const BatchOptions& options) {
     std::size_t failures = 0;
+    const std::vector<std::string> errors = check_scenes(items);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (errors[i].empty()) continue;
+        ++failures;
+        if (progress) progress(i, items[i], errors[i]);
+    }
+
+    // Pass 2: the scenes that loaded, rendered in manifest order.
+    const unsigned encoder_threads =
+        options.encoder_threads ? options.encoder_threads : std::max(1u, std::thread::hardware_concurrency());
+    EncoderPool pool(encoder_threads);
+    // Results in flight, oldest first, with the bytes their images hold;
+    // bounded in count and in bytes, so that finished images do not pile up in
+    // memory when encoding is slower than rendering: six 8192 x 8192 scenes
+    // with --raw are in memory one at a time, not all at once.
+    struct Pending {
+        std::size_t index, bytes;
+        std::future<std::string> result;
+    };
+    std::deque<Pending> pending;
+    std::size_t bytes_in_flight = 0;
+    const std::size_t max_pending = 2 * std::size_t(encoder_threads);
     auto report_front = [&]() {
-        const std::size_t index = pending.front().first;
-        const std::string error = pending.front().second.get();
+        Pending front = std::move(pending.front());
         pending.pop_front();
+        const std::string error = front.result.get();
+        bytes_in_flight -= front.bytes;
         if (!error.empty()) ++failures;
-        if (progress) progress(index, items[index], error);
+        if (progress) progress(front.index, items[front.index], error);
     };
     for (std::size_t i = 0; i < items.size(); ++i) {
-        if (stop && stop()) break;  // the pending writes below still finish
+        if (!errors[i].empty()) continue;
         const BatchItem& item = items[i];
         std::promise<std::string> failed;
         try {
-            Renderer& renderer = capture.renderer();
-            renderer.render(load_scene_file(item.scene));
+            const auto start = std::chrono::steady_clock::now();
+            const Scene scene = load_scene_file(item.scene);
+            Renderer& renderer = capture().renderer();
+            renderer.set_deadline(scene_deadline(start, options.scene_timeout_s));
+            try {
+                renderer.render(scene);
+            } catch (const RenderTimeout&) {
+                throw std::runtime_error(over_budget_message(item.scene, options.scene_timeout_s));
+            }
+            // Read back only once the images already in flight leave room
+            // (always when none is: one scene's images may exceed the budget).
+            const std::size_t bytes = images_in_flight(renderer.width(), renderer.height(), !item.raw.empty());
+            while (!pending.empty() && bytes_in_flight + bytes > options.image_memory_budget) report_front();
             // The same steps, and so the same bytes, as Capture::render_to_files.
             auto display = std::make_shared<Rgb8Image>(renderer.read_display());
             auto raw = std::make_shared<RgbFloatImage>();
             if (!item.raw.empty()) *raw = renderer.read_raw();
-            pending.emplace_back(i, pool.submit([item, display, raw]() {
-                write_capture_files(item.out, *display, item.raw, *raw);
-            }));
+            bytes_in_flight += bytes;
+            pending.push_back({i, bytes, pool.submit([&item, display, raw, &options]() {
+                                   write_capture_files(item.out, *display, item.raw, *raw, options.on_written);
+                               })});
+        } catch (const ShaderError&) {
+            throw;  // a broken build fails every scene: the batch stops, the log printed whole
         } catch (const std::exception& e) {
             failed.set_value(e.what());
-            pending.emplace_back(i, failed.get_future());
+            pending.push_back({i, 0, failed.get_future()});
         }
         while (!pending.empty() &&
                (pending.size() > max_pending ||
-                pending.front().second.wait_for(std::chrono::seconds(0)) == std::future_status::ready))
+                pending.front().result.wait_for(std::chrono::seconds(0)) == std::future_status::ready))
             report_front();
     }
     while (!pending.empty()) report_front();

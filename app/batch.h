@@ -1,44 +1,51 @@
-// `m3055 batch`: many scenes in one process (issue 4, "Batch capture").
-// The manifest is a JSON array of {"scene": "a.json", "out": "a.png", "raw": "a.pfm"}
-// ("raw" optional), paths relative to the manifest's own folder.
+// `m3055 batch`: many scenes in one process (issue 4, "Batch capture"); the
+// manifest format is in io/manifest.h.
 #pragma once
 
 #include "capture.h"
+#include "io/manifest.h"
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace m3055 {
 
-// A manifest that cannot be used at all; what() names the manifest file and the
-// JSON path, e.g. "m.json: [3].out: is required".
-class ManifestError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-struct BatchItem {
-    std::string scene, out, raw;  // resolved against the manifest's folder; raw may be empty
-};
-
-// Reads and validates the whole manifest before anything is rendered, so a
-// typo in entry 150 does not cost the 149 renders before it.
-std::vector<BatchItem> load_manifest(const std::string& path);
+// Checks every file the run reads and writes together, before anything is
+// written (io/run_files.h): an output that is the manifest, a scene, or
+// another output, or that is not a regular file, or whose folder is missing,
+// sets the item's `problem` (both items of a clash), naming both entries.
+// `manifest` may be empty when the items come from elsewhere.
+void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest);
 
 // Called after each item: index (0-based), item, and the error line ("" on success).
 using BatchProgress = std::function<void(std::size_t index, const BatchItem& item, const std::string& error)>;
 
-// Renders every item with one context and renderer. A scene that fails to load
-// or render is reported through `progress` and skipped. Returns the number of
-// failed items. Rendering stays on this thread (the GL context is current
-// here); PNG/PFM encoding and writing, which cost more than rendering a
-// 512 x 320 frame on llvmpipe, run on `encoder_threads` workers while the next
-// scene renders (0: one per core). Progress is reported in manifest order.
-// `stop` (e.g. Ctrl-C, app/interrupt.h) is asked before each scene: once true,
-// no further scene is started, and the writes already under way complete.
-std::size_t run_batch(Capture& capture, const std::vector<BatchItem>& items, const BatchProgress& progress,
-                      unsigned encoder_threads = 0, const std::function<bool()>& stop = {});
+struct BatchOptions {
+    unsigned encoder_threads = 0;  // 0: one per core
+    double scene_timeout_s = 0;    // each scene's time budget (capture.h: scene_deadline); 0: none
+    // Bytes of finished images (display, PNG, raw floats) waiting to be
+    // written; a scene is read back only when its images fit beside them, or
+    // when none are waiting (docs/limits.md: the memory bound of batch).
+    std::size_t image_memory_budget = std::size_t(512) << 20;
+    // Runs under the file-commit lock each time an item's files are all in
+    // place (app/interrupt.h counts them there, so its count is exact).
+    std::function<void()> on_written;
+};
+
+// Renders every item with one context and renderer, made by `capture` when
+// the first scene is drawn (never, when no scene loads). First every scene is
+// loaded once without a context: an item with a `problem`, or whose scene
+// fails to load, is reported then (so every such line comes first, and a
+// hostile scene costs only its own loading). Then the rest are rendered in
+// manifest order; a scene over its time budget or failing to render or write
+// is reported and skipped. Returns the number of failed items.
+// Rendering stays on this thread (the GL context is current here); PNG/PFM
+// encoding and writing, which cost more than rendering a 512 x 320 frame on
+// llvmpipe, run on encoder threads while the next scene renders, bounded by
+// image_memory_budget. An interrupt ends the process wherever it is
+// (app/interrupt.h).
+std::size_t run_batch(const std::function<Capture&()>& capture, const std::vector<BatchItem>& items,
+                      const BatchProgress& progress, const BatchOptions& options = {});
 
 }  // namespace m3055

@@ -1,28 +1,61 @@
 #include "capture.h"
 
+#include "interrupt.h"
+#include "progress.h"
+
+#include "gl/shader_cache.h"
 #include "image/image.h"
+#include "io/message_text.h"
+
+#include <iostream>
 
 namespace m3055 {
 
-Capture::Capture(Backend backend)
-    : context_(HeadlessContext::create(backend)), renderer_(std::make_unique<Renderer>(context_->gl())) {}
+namespace {
 
-void Capture::render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path) {
+// Before the first context: a shader cache on a full or unwritable disk is
+// switched off (Mesa would die of SIGBUS writing it), with a one-line note.
+std::unique_ptr<HeadlessContext> make_context(Backend backend) {
+    const std::string note = disable_shader_cache_if_unusable();
+    if (!note.empty()) std::cerr << error_line(note) << "\n";
+    report_bus_errors(mesa_shader_cache_folder());
+    return HeadlessContext::create(backend);
+}
+
+}  // namespace
+
+Capture::Capture(Backend backend)
+    : context_(make_context(backend)), renderer_(std::make_unique<Renderer>(context_->gl())) {}
+
+void Capture::render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path,
+                              const std::function<void()>& committed) {
     renderer_->render(scene);
     // Read both images before writing either, so a GL failure leaves no file.
     const Rgb8Image display = renderer_->read_display();
     RgbFloatImage raw;
     if (!raw_path.empty()) raw = renderer_->read_raw();
-    write_capture_files(png_path, display, raw_path, raw);
+    write_capture_files(png_path, display, raw_path, raw, committed);
+}
+
+std::optional<std::chrono::steady_clock::time_point> scene_deadline(std::chrono::steady_clock::time_point start,
+                                                                    double seconds) {
+    if (!(seconds > 0)) return std::nullopt;
+    return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+std::string over_budget_message(const std::string& scene_path, double seconds) {
+    const std::string shown = text::format_number(seconds);
+    return text::quote_name(scene_path) + ": over its time budget: not drawn within " + shown +
+           " s (--scene-timeout " + shown + ")";
 }
 
 void write_capture_files(const std::string& png_path, const Rgb8Image& display, const std::string& raw_path,
-                         const RgbFloatImage& raw) {
+                         const RgbFloatImage& raw, const std::function<void()>& committed) {
     // Both files or neither: a PFM that cannot be written must not leave a new
     // PNG behind, nor the other way round.
     std::vector<FileContents> files = {{png_path, encode_png(display)}};
-    if (!raw_path.empty()) files.push_back({raw_path, encode_pfm(raw)});
-    write_files_atomic(files);
+    if (!raw_path.empty()) files.push_back(pfm_file(raw_path, raw));  // borrows raw's pixels, no 768 MiB copy
+    write_files_atomic(files, committed);
 }
 
 }  // namespace m3055

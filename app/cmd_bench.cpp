@@ -13,11 +13,14 @@ void add_bench_command(CLI::App& app) {
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
-        "bench", "Benchmark run time against error; writes bench.md, bench.csv and bench.png");
+        "bench", "Benchmark run time against error; writes bench.md, bench.csv, bench.gp and bench.png (gnuplot)");
     command->add_option("--out", options->bench.out, "Output folder (default: bench)");
     command->add_option("--scenes", options->bench.scenes,
                         "Folder with the paper's scenes (default: ./scenes, then scenes/ beside the build folder)");
     command->add_flag("--quick", options->bench.quick, "Few repetitions and a small batch: a smoke run, rough numbers");
+    command->add_flag("--replot", options->bench.replot,
+                      "Measure nothing: redraw bench.gp and bench.png from the bench.csv in --out")
+        ->excludes("--quick");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->callback([options]() {

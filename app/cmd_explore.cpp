@@ -1,11 +1,21 @@
-// `m3055 explore`: the interactive explorer (app/explore/).
+// `m3055 explore`: the interactive explorer (app/explore/), and plain `m3055`.
+// Built with -DM3055_BUILD_EXPLORER=OFF (no GLFW, no ImGui), the subcommand is
+// still there so that `m3055 explore ...` says in one line why it cannot open.
+#include "commands.h"
+
+#ifdef M3055_HAVE_EXPLORER
 #include "explore/explore.h"
+#endif
 
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
+#include <iostream>
 #include <memory>
 
 namespace m3055 {
+
+#ifdef M3055_HAVE_EXPLORER
 
 void add_explore_command(CLI::App& app) {
     auto options = std::make_shared<ExploreOptions>();
@@ -32,5 +42,40 @@ void add_explore_command(CLI::App& app) {
         if (status != 0) throw CLI::RuntimeError(status);
     });
 }
+
+int run_without_subcommand(const CLI::App& app) {
+    // Plain `m3055`: the explorer when there is a display to show it on.
+    const char* display = std::getenv("DISPLAY");
+    if (display && *display) return run_explorer(ExploreOptions{});
+    std::cerr << app.help() << "\nm3055: no display ($DISPLAY is unset): use a subcommand, e.g. m3055 render\n";
+    return kExitUsage;
+}
+
+#else  // built without the explorer
+
+namespace {
+constexpr const char* kNoExplorer =
+    "m3055: this build has no explorer (configured with -DM3055_BUILD_EXPLORER=OFF): use m3055 render, "
+    "or rebuild with scripts/setup, which installs GLFW and Dear ImGui";
+}
+
+void add_explore_command(CLI::App& app) {
+    // No options and no --help of its own: whatever follows `explore` (scripts/run
+    // probes `explore --help`) gets the one line and a failing exit status.
+    CLI::App* explore = app.add_subcommand("explore", "Not in this build (configured with -DM3055_BUILD_EXPLORER=OFF)");
+    explore->set_help_flag();
+    explore->prefix_command();  // every later argument is an extra, never a parse error
+    explore->callback([]() {
+        std::cerr << kNoExplorer << "\n";
+        throw CLI::RuntimeError(kExitFailure);
+    });
+}
+
+int run_without_subcommand(const CLI::App& app) {
+    std::cerr << app.help() << "\n" << kNoExplorer << "\n";
+    return kExitUsage;
+}
+
+#endif
 
 }  // namespace m3055

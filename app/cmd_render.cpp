@@ -1,9 +1,15 @@
-// `m3055 render`: one scene to PNG (and PFM), headless (SPEC section 8).
+// `m3055 render`: one scene to PNG (and PFM), headless (docs/spec.md#8-command-line).
 #include "capture.h"
 #include "commands.h"
+#include "interrupt.h"
+#include "progress.h"
 
+#include "io/message_text.h"
+#include "io/run_files.h"
 #include "scene/load.h"
 
+#include <atomic>
+#include <chrono>
 #include <iostream>
 
 namespace m3055 {
@@ -12,24 +18,52 @@ void add_render_command(CLI::App& app) {
     struct Options {
         std::string scene, out, raw, backend = "auto";
         std::vector<std::string> sets;
+        double scene_timeout = 0;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene headless to PNG (and PFM)");
-    command->add_option("--scene", options->scene, "Scene JSON file (SPEC section 7)")->required();
+    command->add_option("--scene", options->scene, "Scene JSON file (docs/spec.md#7-scene-files)")->required();
     command->add_option("--out", options->out, "Output PNG (8-bit RGB, quantized to display.bits)")->required();
     command->add_option("--raw", options->raw, "Also write the unquantized linear colour as PFM");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->add_option("--set", options->sets, "Override a scene value: path=value, e.g. objects[0].material.m=40");
+    command->add_option("--scene-timeout", options->scene_timeout,
+                        "Give up on a scene not drawn within SECONDS of starting to load it (default 0: no limit)")
+        ->check(CLI::NonNegativeNumber);
     command->callback([options]() {
+        // SIGINT, SIGTERM, SIGHUP: temporaries removed, one line, ended by the signal.
+        std::atomic<bool> written{false};
+        const InterruptGuard interrupt([&](int signal) {
+            const std::string files = text::quote_name(options->out) +
+                                      (options->raw.empty() ? "" : " and " + text::quote_name(options->raw));
+            return error_line("interrupted by " + signal_name(signal) + ": " +
+                              (written ? files + " already written" : "nothing written"));
+        });
         try {
             std::vector<Override> overrides;
             for (const auto& text : options->sets) overrides.push_back(parse_override(text));
+            // Before anything is read or written: no output may be the scene or the other output.
+            io::RunFiles files;
+            files.add_input(0, "--scene", options->scene);
+            files.add_output(0, "--out", options->out);
+            if (!options->raw.empty()) files.add_output(0, "--raw", options->raw);
+            if (const auto problems = files.check(); !problems.empty()) throw std::runtime_error(problems.begin()->second);
+            const auto start = std::chrono::steady_clock::now();
             const Scene scene = load_scene_file(options->scene, overrides);
+            const auto loaded = std::chrono::steady_clock::now();
             Capture capture(parse_backend(options->backend));
-            capture.render_to_files(scene, options->out, options->raw);
+            // The budget covers loading and drawing, not making the GL context.
+            capture.renderer().set_deadline(
+                scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));
+            try {
+                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; });
+            } catch (const RenderTimeout&) {
+                throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +
+                                         "; nothing written");
+            }
         } catch (const std::exception& error) {
-            std::cerr << "m3055: " << error.what() << "\n";
+            std::cerr << error_text(error) << "\n";
             throw CLI::RuntimeError(kExitFailure);
         }
     });

@@ -11,6 +11,10 @@ void add_batch_command(CLI::App& app);    // app/cmd_batch.cpp
 void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
 void add_explore_command(CLI::App& app);  // app/cmd_explore.cpp
 
+// Plain `m3055` (app/cmd_explore.cpp): the explorer when this build has one and
+// $DISPLAY is set; otherwise the usage and one line saying why, kExitUsage.
+int run_without_subcommand(const CLI::App& app);
+
 // Exit codes shared by the subcommands.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;  // bad input, render or write failure

@@ -3,12 +3,9 @@
 //   m3055 figures --out screenshots/
 //   m3055 batch MANIFEST.json [--backend ...]
 //   m3055 bench [--out DIR] [--quick]
-//   m3055 explore [--scene S.json]     (also plain `m3055` when $DISPLAY is set)
+//   m3055 explore [--scene S.json]     (also plain `m3055` when $DISPLAY is set;
+//                                       not in a -DM3055_BUILD_EXPLORER=OFF build)
 #include "commands.h"
-#include "explore/explore.h"
-
-#include <cstdlib>
-#include <iostream>
 
 int main(int argc, char** argv) {
     CLI::App app{"M3055 material explorer: the reflection models of Yokoi et al. on an emulated 512x320, 5-bit display"};
@@ -25,12 +22,6 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? m3055::kExitOk : m3055::kExitUsage;
     }
-    if (app.get_subcommands().empty()) {
-        // Plain `m3055`: the explorer when there is a display to show it on.
-        const char* display = std::getenv("DISPLAY");
-        if (display && *display) return m3055::run_explorer(m3055::ExploreOptions{});
-        std::cerr << app.help() << "\nm3055: no display ($DISPLAY is unset): use a subcommand, e.g. m3055 render\n";
-        return m3055::kExitUsage;
-    }
+    if (app.get_subcommands().empty()) return m3055::run_without_subcommand(app);
     return m3055::kExitOk;
 }

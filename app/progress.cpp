@@ -1,8 +1,18 @@
 #include "progress.h"
 
+#include "gl/program.h"
+#include "io/message_text.h"
+
 #include <cstdio>
 
 namespace m3055 {
+
+std::string error_line(const std::string& error) { return text::one_line("m3055: " + error); }
+
+std::string error_text(const std::exception& error) {
+    if (dynamic_cast<const ShaderError*>(&error)) return std::string("m3055: ") + error.what();
+    return error_line(error.what());
+}
 
 std::string progress_line(std::size_t done, std::size_t total, double per_second, int width) {
     const double fraction = total ? double(done) / double(total) : 1.0;
@@ -36,14 +46,14 @@ void Progress::step(const std::string& label, const std::string& error) {
     if (!error.empty()) ++failed_;
     if (interactive_) {
         // An error gets its own permanent line above the bar.
-        if (!error.empty()) std::fprintf(stream_, "\r\033[Km3055: %s\n", error.c_str());
+        if (!error.empty()) std::fprintf(stream_, "\r\033[K%s\n", error_line(error).c_str());
         draw_bar();
         return;
     }
     if (error.empty())
-        std::fprintf(stream_, "[%zu/%zu] %s\n", done_, total_, label.c_str());
+        std::fprintf(stream_, "[%zu/%zu] %s\n", done_, total_, text::quote_name(label).c_str());
     else
-        std::fprintf(stream_, "m3055: %s\n", error.c_str());
+        std::fprintf(stream_, "%s\n", error_line(error).c_str());
     std::fflush(stream_);
 }
 

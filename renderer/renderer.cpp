@@ -1,10 +1,12 @@
 #include "renderer.h"
 
+#include "geometry/mesh.h"
 #include "gl/program.h"
+#include "models/model_spec.h"
 #include "passes/camera_frame.h"
 #include "passes/camera_uniforms.h"
+#include "passes/frame_targets.h"
 #include "passes/light_uniforms.h"
-#include "passes/material_buffer.h"
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
@@ -12,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace m3055 {
@@ -41,108 +44,62 @@ double far_to_near_key(const CameraFrame& frame, const Object& object) {
 struct Renderer::Impl {
     const GlApi& gl;
     ProgramCache programs;
-    MeshPass meshes;  // planes, cubes, cylinders, tori (passes/mesh_pass.h)
-    unsigned scene_fbo = 0, colour_texture = 0, depth_texture = 0;
-    unsigned display_fbo = 0, display_tex = 0;
-    unsigned material_buffer = 0, material_texture = 0;
-    unsigned instance_buffer = 0, sphere_vao = 0, empty_vao = 0;
-    int width = 0, height = 0;
+    FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
+    MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
+    unsigned instance_buffer = 0, sphere_vao = 0;
     ShaderMode shader_mode = ShaderMode::specialized;
+    ChunkedDraws::Deadline deadline;  // set_deadline
+    std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
-    explicit Impl(const GlApi& api) : gl(api), programs(api), meshes(api) {
+    explicit Impl(const GlApi& api) : gl(api), programs(api), targets(api, programs), meshes(api) {
         gl.GenVertexArrays(1, &sphere_vao);
-        gl.GenVertexArrays(1, &empty_vao);
         gl.GenBuffers(1, &instance_buffer);
-        gl.GenBuffers(1, &material_buffer);
-        gl.GenTextures(1, &material_texture);
-
         gl.BindVertexArray(sphere_vao);
         gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
-        const GLsizei stride = sizeof(SphereInstance);
-        gl.EnableVertexAttribArray(0);
-        gl.VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, (void*)offsetof(SphereInstance, sphere));
-        gl.VertexAttribDivisor(0, 1);
-        gl.EnableVertexAttribArray(1);
-        gl.VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, (void*)offsetof(SphereInstance, rect));
-        gl.VertexAttribDivisor(1, 1);
-        gl.EnableVertexAttribArray(2);
-        gl.VertexAttribIPointer(2, 1, GL_INT, stride, (void*)offsetof(SphereInstance, material));
-        gl.VertexAttribDivisor(2, 1);
+        for (unsigned attribute = 0; attribute < 3; ++attribute) {
+            gl.EnableVertexAttribArray(attribute);
+            gl.VertexAttribDivisor(attribute, 1);
+        }
+        point_instances(0);
         gl.BindVertexArray(0);
     }
 
+    // The sphere VAO's attributes start at instance `first` of the instance
+    // buffer (bound to GL_ARRAY_BUFFER): chunked draws have no base instance in GL 3.3.
+    void point_instances(std::size_t first) {
+        const GLsizei stride = sizeof(SphereInstance);
+        const std::size_t base = first * sizeof(SphereInstance);
+        gl.VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, (void*)(base + offsetof(SphereInstance, sphere)));
+        gl.VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, (void*)(base + offsetof(SphereInstance, rect)));
+        gl.VertexAttribIPointer(2, 1, GL_INT, stride, (void*)(base + offsetof(SphereInstance, material)));
+    }
+
+    // Draws the opaque meshes, or the index range of one translucent mesh
+    // (`only`), in chunks, deadline or not: llvmpipe keeps every triangle's
+    // set-up data of one draw call until it is rasterized, and 4 million
+    // triangles in one call took 2.3 GB more at 8192 x 8192 than in chunks
+    // (docs/limits.md). The pixels are the same.
+    void draw_meshes(const CameraFrame& frame, std::size_t lights, const MeshPass::Translucent* only) {
+        std::vector<DrawSpan> spans;
+        std::vector<MeshPass::Range> ranges = meshes.opaque_ranges();
+        if (only) ranges = {{only->first, only->count, only->object}};
+        for (const MeshPass::Range& range : ranges) {
+            const auto rect = sphere_ndc_rect(frame, range.object->center, geometry::bounding_radius(*range.object));
+            if (rect) spans.push_back(chunks->span_of(range.first, range.count, range.count / 3, rect->data(), lights));
+            else spans.push_back(DrawSpan{range.first, range.count, kPrimitiveWork * double(range.count / 3), 0, 0});
+        }
+        chunks->run(plan_chunks(spans, kChunkWork, 3),
+                    [&](std::size_t first, std::size_t count) { meshes.draw(first, count); });
+    }
+
     ~Impl() {
-        release_targets();
         gl.DeleteVertexArrays(1, &sphere_vao);
-        gl.DeleteVertexArrays(1, &empty_vao);
         gl.DeleteBuffers(1, &instance_buffer);
-        gl.DeleteBuffers(1, &material_buffer);
-        gl.DeleteTextures(1, &material_texture);
-    }
-
-    void release_targets() {
-        if (!scene_fbo) return;
-        gl.DeleteFramebuffers(1, &scene_fbo);
-        gl.DeleteFramebuffers(1, &display_fbo);
-        unsigned textures[] = {colour_texture, depth_texture, display_tex};
-        gl.DeleteTextures(3, textures);
-        scene_fbo = display_fbo = 0;
-    }
-
-    unsigned make_texture(GLint internal_format, GLenum format, GLenum type, int w, int h) {
-        unsigned texture = 0;
-        gl.GenTextures(1, &texture);
-        gl.BindTexture(GL_TEXTURE_2D, texture);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, internal_format, w, h, 0, format, type, nullptr);
-        // Nearest: the explorer shows the display's dots as they are.
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        return texture;
-    }
-
-    void ensure_targets(int w, int h) {
-        if (scene_fbo && w == width && h == height) return;
-        release_targets();
-        width = w, height = h;
-        // Float colour: the raw output is unquantized and unclamped (metals exceed 1).
-        colour_texture = make_texture(GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
-        depth_texture = make_texture(GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, w, h);
-        display_tex = make_texture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
-        gl.GenFramebuffers(1, &scene_fbo);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_texture, 0);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_texture, 0);
-        check_framebuffer("scene");
-        gl.GenFramebuffers(1, &display_fbo);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, display_fbo);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_tex, 0);
-        check_framebuffer("display");
-    }
-
-    void check_framebuffer(const char* name) {
-        const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error(std::string("the ") + name + " framebuffer is incomplete (status " +
-                                     std::to_string(status) + ") at " + std::to_string(width) + "x" +
-                                     std::to_string(height));
-    }
-
-    void upload_materials(const Scene& scene) {
-        std::vector<float> records;
-        records.reserve(scene.objects.size() * kMaterialTexels * 4);
-        for (const auto& object : scene.objects) pack_material(object.material, records);
-        if (records.empty()) records.resize(kMaterialTexels * 4, 0.0f);
-        gl.BindBuffer(GL_TEXTURE_BUFFER, material_buffer);
-        gl.BufferData(GL_TEXTURE_BUFFER, GLsizeiptr(records.size() * sizeof(float)), records.data(), GL_STREAM_DRAW);
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_BUFFER, material_texture);
-        gl.TexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, material_buffer);
     }
 
     void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
         gl.UseProgram(program);
+        targets.set_material_uniforms(program);
         set_camera_uniforms(gl, program, frame);
         upload_lights(gl, program, lights);
     }
@@ -156,20 +113,29 @@ struct Renderer::Impl {
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
                       GL_STREAM_DRAW);
         // Instances are drawn, and blended, in buffer order: back to front.
-        gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
+        if (!deadline) return gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
+        std::vector<DrawSpan> spans;
+        for (std::size_t i = 0; i < instances.size(); ++i)
+            spans.push_back(chunks->span_of(i, 1, 1, instances[i].rect, std::size_t(lights.count)));
+        struct Rewind {  // the next draw starts at instance 0 again, even after a RenderTimeout
+            Impl& impl;
+            ~Rewind() { impl.point_instances(0); }
+        } rewind{*this};
+        chunks->run(plan_chunks(spans, kChunkWork, 1), [&](std::size_t first, std::size_t count) {
+            point_instances(first);
+            gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count));
+        });
     }
 
-    void render(const Scene& scene) {
-        const Display& display = scene.display;
-        ensure_targets(display.width, display.height);
-        const CameraFrame frame = make_camera_frame(scene.camera, display, scene.objects);
-        const LightUniforms lights = pack_lights(scene.lights, scene.ambient);
-        upload_materials(scene);
-
-        // Split by pass; translucent spheres sorted far to near.
-        std::vector<SphereInstance> opaque, translucent;
+    // The spheres on screen by pass: opaque ones, and translucent ones sorted far to near.
+    struct SphereSets {
+        std::vector<SphereInstance> opaque;
         std::vector<const Object*> opaque_objects, translucent_objects;
-        std::vector<std::pair<double, SphereInstance>> sorted;
+        std::vector<std::pair<double, SphereInstance>> translucent;  // (far_to_near_key, instance), sorted
+    };
+
+    SphereSets sort_spheres(const Scene& scene, const CameraFrame& frame) const {
+        SphereSets sets;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const Object& object = scene.objects[i];
             if (object.shape != Shape::sphere) continue;  // a mesh: MeshPass
@@ -179,119 +145,100 @@ struct Renderer::Impl {
                                      float(object.radius)},
                                     {(*rect)[0], (*rect)[1], (*rect)[2], (*rect)[3]},
                                     int(i)};
-            if (is_translucent(object.material.model)) {
-                sorted.emplace_back(far_to_near_key(frame, object), instance);
-                translucent_objects.push_back(&object);
+            if (is_translucent(object.material)) {
+                sets.translucent.emplace_back(far_to_near_key(frame, object), instance);
+                sets.translucent_objects.push_back(&object);
             } else {
-                opaque.push_back(instance);
-                opaque_objects.push_back(&object);
+                sets.opaque.push_back(instance);
+                sets.opaque_objects.push_back(&object);
             }
         }
-        std::stable_sort(sorted.begin(), sorted.end(),
+        std::stable_sort(sets.translucent.begin(), sets.translucent.end(),
                          [](const auto& a, const auto& b) { return a.first > b.first; });
-        for (const auto& entry : sorted) translucent.push_back(entry.second);
-        meshes.prepare(scene, frame);
+        return sets;
+    }
 
-        // Pass 1: background and opaque spheres, with depth.
-        gl.BindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
-        gl.Viewport(0, 0, width, height);
-        const float background[4] = {float(scene.background.r), float(scene.background.g),
-                                     float(scene.background.b), 1.0f};
-        gl.ClearBufferfv(GL_COLOR, 0, background);
-        const float far_depth = 1.0f;
-        gl.ClearBufferfv(GL_DEPTH, 0, &far_depth);
-        gl.Enable(GL_DEPTH_TEST);
-        gl.DepthFunc(GL_LESS);
-        gl.DepthMask(GL_TRUE);
-        gl.Disable(GL_BLEND);
-        if (!opaque.empty()) {
-            const auto defines = specialization_defines(shader_mode, opaque_objects, scene.lights);
-            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), opaque, frame, lights);
+    // Pass 1: opaque spheres and meshes, with depth.
+    void draw_opaque(const Scene& scene, const SphereSets& spheres, const CameraFrame& frame,
+                     const LightUniforms& lights) {
+        if (!spheres.opaque.empty()) {
+            const auto defines = specialization_defines(shader_mode, spheres.opaque_objects, scene.lights);
+            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), spheres.opaque, frame,
+                         lights);
         }
         if (!meshes.opaque_objects().empty()) {
             const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
             use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", defines}), frame, lights);
-            meshes.draw_opaque();
+            draw_meshes(frame, std::size_t(lights.count), nullptr);
         }
+    }
 
-        // Pass 2: translucent spheres over what is behind them (SPEC 4.2), as a
-        // premultiplied "over" with a per-channel transmittance: dual-source
-        // blending, dst = src0 + src1 * dst. Skipped when there are none.
-        if (!translucent.empty() || !meshes.translucent().empty()) {
-            gl.DepthMask(GL_FALSE);
-            gl.Enable(GL_BLEND);
-            gl.BlendEquation(GL_FUNC_ADD);
-            gl.BlendFunc(GL_ONE, GL_SRC1_COLOR);
-            auto defines = specialization_defines(shader_mode, translucent_objects, scene.lights);
-            defines.push_back("TRANSLUCENT_PASS");
-            auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
-            mesh_defines.push_back("TRANSLUCENT_PASS");
-            // Spheres and meshes merged far to near: runs of spheres between meshes.
-            std::vector<MeshPass::Translucent> mesh_order = meshes.translucent();
-            std::stable_sort(mesh_order.begin(), mesh_order.end(),
-                             [](const auto& a, const auto& b) { return a.key > b.key; });
-            std::size_t next_sphere = 0;
-            for (std::size_t m = 0; m <= mesh_order.size(); ++m) {
-                std::vector<SphereInstance> run;
-                while (next_sphere < sorted.size() &&
-                       (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
-                    run.push_back(sorted[next_sphere++].second);
-                if (!run.empty())
-                    draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), run, frame,
-                                 lights);
-                if (m == mesh_order.size()) break;
-                use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}), frame, lights);
-                meshes.draw_translucent(mesh_order[m]);
-            }
-            gl.Disable(GL_BLEND);
+    // Pass 2: translucent spheres and meshes over what is behind them (docs/spec.md#42-translucent),
+    // as a premultiplied "over" with a per-channel transmittance: dual-source
+    // blending, dst = src0 + src1 * dst. Spheres and meshes merged far to near:
+    // runs of spheres between meshes. Skipped when there are none.
+    void draw_translucent(const Scene& scene, const SphereSets& spheres, const CameraFrame& frame,
+                          const LightUniforms& lights) {
+        if (spheres.translucent.empty() && meshes.translucent().empty()) return;
+        gl.DepthMask(GL_FALSE);
+        gl.Enable(GL_BLEND);
+        gl.BlendEquation(GL_FUNC_ADD);
+        gl.BlendFunc(GL_ONE, GL_SRC1_COLOR);
+        auto defines = specialization_defines(shader_mode, spheres.translucent_objects, scene.lights);
+        defines.push_back("TRANSLUCENT_PASS");
+        auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
+        mesh_defines.push_back("TRANSLUCENT_PASS");
+        std::vector<MeshPass::Translucent> mesh_order = meshes.translucent();
+        std::stable_sort(mesh_order.begin(), mesh_order.end(),
+                         [](const auto& a, const auto& b) { return a.key > b.key; });
+        const auto& sorted = spheres.translucent;
+        std::size_t next_sphere = 0;
+        for (std::size_t m = 0; m <= mesh_order.size(); ++m) {
+            std::vector<SphereInstance> run;
+            while (next_sphere < sorted.size() &&
+                   (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
+                run.push_back(sorted[next_sphere++].second);
+            if (!run.empty())
+                draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), run, frame, lights);
+            if (m == mesh_order.size()) break;
+            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}), frame, lights);
+            draw_meshes(frame, std::size_t(lights.count), &mesh_order[m]);
+        }
+        gl.Disable(GL_BLEND);
+        gl.DepthMask(GL_TRUE);
+    }
+
+    // A render that stops part way (RenderTimeout, a GL error) leaves the GL
+    // state the next one assumes: a depth write mask left off would even stop
+    // the next frame's depth clear.
+    void render(const Scene& scene) {
+        try {
+            draw_scene(scene);
+        } catch (...) {
             gl.DepthMask(GL_TRUE);
+            gl.Disable(GL_BLEND);
+            gl.Disable(GL_SCISSOR_TEST);
+            gl.Disable(GL_CULL_FACE);
+            gl.Disable(GL_DEPTH_TEST);
+            gl.BindVertexArray(0);
+            gl.UseProgram(0);
+            gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+            throw;
         }
-        gl.Disable(GL_DEPTH_TEST);
-
-        // Pass 3: quantize to the display's levels (SPEC 2).
-        const unsigned quantize = programs.get({"passes/fullscreen.vert", "passes/quantize.frag", {}});
-        gl.BindFramebuffer(GL_FRAMEBUFFER, display_fbo);
-        gl.Viewport(0, 0, width, height);
-        gl.UseProgram(quantize);
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_2D, colour_texture);
-        gl.Uniform1i(gl.GetUniformLocation(quantize, "u_colour"), 0);
-        gl.Uniform1i(gl.GetUniformLocation(quantize, "u_bits"), display.bits);
-        gl.Uniform1i(gl.GetUniformLocation(quantize, "u_dither"), display.dither ? 1 : 0);
-        gl.BindVertexArray(empty_vao);
-        gl.DrawArrays(GL_TRIANGLES, 0, 3);
-        gl.BindVertexArray(0);
-        gl.UseProgram(0);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
-    Rgb8Image read_display() const {
-        std::vector<unsigned char> rgba(std::size_t(width) * height * 4);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, display_fbo);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-        gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-        Rgb8Image image;
-        image.width = width, image.height = height;
-        image.pixels.resize(std::size_t(width) * height * 3);
-        for (int y = 0; y < height; ++y) {  // GL rows run bottom to top, PNG rows top to bottom
-            const unsigned char* src = &rgba[std::size_t(height - 1 - y) * width * 4];
-            unsigned char* dst = &image.pixels[std::size_t(y) * width * 3];
-            for (int x = 0; x < width; ++x)
-                for (int c = 0; c < 3; ++c) dst[x * 3 + c] = src[x * 4 + c];
-        }
-        return image;
-    }
-
-    RgbFloatImage read_raw() const {
-        RgbFloatImage image;
-        image.width = width, image.height = height;
-        image.pixels.resize(std::size_t(width) * height * 3);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, scene_fbo);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-        gl.ReadPixels(0, 0, width, height, GL_RGB, GL_FLOAT, image.pixels.data());
-        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-        return image;
+    void draw_scene(const Scene& scene) {
+        chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
+        chunks->check_deadline();  // loading the scene may have taken it all
+        const CameraFrame frame = make_camera_frame(scene.camera, scene.display, scene.objects);
+        const LightUniforms lights = pack_lights(scene.lights, scene.ambient);
+        const SphereSets spheres = sort_spheres(scene, frame);
+        meshes.prepare(scene, frame);
+        chunks->check_deadline();  // up to 4 million triangles tessellated
+        targets.begin(scene);  // background and depth cleared
+        draw_opaque(scene, spheres, frame, lights);
+        draw_translucent(scene, spheres, frame, lights);
+        targets.quantize(scene.display);  // Pass 3: the display's levels (docs/spec.md#2-display)
     }
 };
 
@@ -299,11 +246,14 @@ Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
 void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
+void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
+    impl_->deadline = deadline;
+}
 std::size_t Renderer::compiled_programs() const { return impl_->programs.size(); }
-unsigned Renderer::display_texture() const { return impl_->display_tex; }
-int Renderer::width() const { return impl_->width; }
-int Renderer::height() const { return impl_->height; }
-Rgb8Image Renderer::read_display() const { return impl_->read_display(); }
-RgbFloatImage Renderer::read_raw() const { return impl_->read_raw(); }
+unsigned Renderer::display_texture() const { return impl_->targets.display_texture(); }
+int Renderer::width() const { return impl_->targets.width(); }
+int Renderer::height() const { return impl_->targets.height(); }
+Rgb8Image Renderer::read_display() const { return impl_->targets.read_display(); }
+RgbFloatImage Renderer::read_raw() const { return impl_->targets.read_raw(); }
 
 }  // namespace m3055

@@ -1,5 +1,5 @@
 // The GPU renderer: draws a Scene through the GLSL 3.3 pipeline into offscreen
-// targets at the display's own size (SPEC sections 2-4):
+// targets at the display's own size (docs/spec.md#2-display to #4-paper-models):
 //   opaque spheres -> translucent spheres, back to front -> quantize pass.
 // It needs a current GL 3.3 core context whose functions are in `gl`; it makes
 // no context itself (see gl/context.h for headless ones; the explorer makes a
@@ -8,10 +8,14 @@
 
 #include "gl/gl_api.h"
 #include "image/image.h"
+#include "passes/draw_chunks.h"  // RenderTimeout
 #include "passes/shader_plan.h"
 #include "scene/scene.h"
 
+#include <chrono>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace m3055 {
@@ -30,6 +34,15 @@ public:
     // Specialized programs (the default) are compiled per scene shape and
     // cached; general ones serve every scene. Both give the same pixels.
     void set_shader_mode(ShaderMode mode);
+    // A time budget for the following renders (issue 11, class 10): with a
+    // deadline, each draw is split into chunks of bounded work
+    // (passes/draw_chunks.h), the GPU is waited for between them, and render()
+    // throws RenderTimeout at the first boundary past the deadline. The pixels
+    // are the same as without one (the draws are only split). std::nullopt,
+    // the default: no waiting; spheres in one draw call a pass, meshes still
+    // in chunks (with a flush between, which bounds llvmpipe's memory).
+    void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
+
     // Number of programs compiled so far (the cache's size).
     std::size_t compiled_programs() const;
 

@@ -1,4 +1,4 @@
-// Numerical stress of the classic models (SPEC 5) through the stress harness:
+// Numerical stress of the classic models (docs/spec.md#5-classic-models) through the stress harness:
 // one input per pixel, the real GLSL (glsl/passes/stress.frag, general
 // program) against the double reference on the same float inputs.
 //   - Hostile inputs (grazing and exactly opposite L and V, N at the tangent
@@ -6,6 +6,8 @@
 //     never NaN or Inf, on the GPU or in the reference.
 //   - Inputs away from the edges (N.L, N.V >= 0.02, lobe widths >= 0.02,
 //     exponents <= 1000): |gpu - ref| <= 1e-3 max(1, |ref|), the GPU test's bound.
+#include "material_support.h"
+#include "reference/classic.h"
 #include "stress_harness.h"
 
 #include <gtest/gtest.h>
@@ -20,48 +22,62 @@ namespace {
 
 using test::StressInput;
 
-// Every number as the GPU reads it (float), so both sides see the same input.
-Material rounded(Material m) {
-    m = test::float_rounded(m);
-    auto f = [](double& x) { x = double(float(x)); };
-    for (dvec3* v : {&m.kd, &m.ka, &m.ks, &m.emission, &m.axis}) f(v->x), f(v->y), f(v->z);
-    f(m.shininess), f(m.sigma), f(m.ior), f(m.alpha_x), f(m.alpha_y);
-    return m;
-}
+// The classic models, in the model table's order (the random model is an
+// index into this list: the same inputs as when the models were an enum).
+const char* const kClassicModels[] = {"lambert", "half_lambert", "half_lambert_clamped", "half_lambert_normalized",
+                                      "oren_nayar", "phong", "blinn_phong", "microfacet", "ward", "heidrich_seidel"};
 
 struct Generated {
     Material material;
     bool well_conditioned;  // lobe widths >= 0.01 rad, exponents <= 1000
+    dvec3 axis;             // the drawn tangent axis (the material's, where its model has one), as a float
 };
 
+// Every parameter is drawn for every model (so the random sequence does not
+// depend on the model); the material takes those its model has.
 Generated random_material(std::mt19937& rng, bool hostile) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     auto pick = [&](std::initializer_list<double> edges, double lo, double hi) {
         if (hostile && u(rng) < 0.5) return *(edges.begin() + int(u(rng) * edges.size()) % edges.size());
         return lo + (hi - lo) * u(rng);
     };
-    Material m;
-    m.model = static_cast<Model>(int(Model::lambert) + int(u(rng) * 10) % 10);
-    m.kd = {u(rng), u(rng), u(rng)};
-    m.ka = {u(rng), u(rng), u(rng)};
-    m.ks = {u(rng), u(rng), u(rng)};
-    m.emission = {0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng)};
-    m.shininess = pick({0.0, 1e-3, 10000.0}, 0.0, 1000.0);
-    m.sigma = pick({0.0, 10.0}, 0.0, 1.5);
-    m.ior = pick({1.0, 5.0}, 1.0, 3.0);
-    m.alpha_x = pick({0.001, 1.0}, 0.02, 1.0);
-    m.alpha_y = pick({0.001, 1.0}, 0.02, 1.0);
-    m.axis = glm::normalize(dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) + dvec3(0, 1e-3, 0));
-    m.distribution = static_cast<Distribution>(int(u(rng) * 4) % 4);
-    m.fresnel = static_cast<Fresnel>(int(u(rng) * 3) % 3);
-    const int lobes = 1 + int(u(rng) * 4) % 4;
-    const bool exponent = m.distribution == Distribution::blinn_phong;
-    m.lobes.clear();
-    for (int j = 0; j < lobes; ++j)
-        m.lobes.push_back({u(rng), exponent ? pick({0.0, 10000.0}, 0.0, 1000.0) : pick({0.001, 2.0}, 0.02, 2.0)});
-    bool ok = m.shininess <= 1000.0 && m.alpha_x >= 0.02 && m.alpha_y >= 0.02;
-    for (const Lobe& lobe : m.lobes) ok = ok && (exponent ? lobe.m <= 1000.0 : lobe.m >= 0.02);
-    return {rounded(m), ok};
+    Material m = Material::of(kClassicModels[int(u(rng) * 10) % 10]);
+    const dvec3 kd{u(rng), u(rng), u(rng)};
+    const dvec3 ka{u(rng), u(rng), u(rng)};
+    const dvec3 ks{u(rng), u(rng), u(rng)};
+    const dvec3 emission{0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng)};
+    const double shininess = pick({0.0, 1e-3, 10000.0}, 0.0, 1000.0);
+    const double sigma = pick({0.0, 10.0}, 0.0, 1.5);
+    const double ior = pick({1.0, 5.0}, 1.0, 3.0);
+    const double alpha_x = pick({0.001, 1.0}, 0.02, 1.0);
+    const double alpha_y = pick({0.001, 1.0}, 0.02, 1.0);
+    const dvec3 axis = glm::normalize(dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5) + dvec3(0, 1e-3, 0));
+    const auto distribution = static_cast<ref::Distribution>(int(u(rng) * 4) % 4);
+    const auto fresnel = static_cast<ref::Fresnel>(int(u(rng) * 3) % 3);
+    const int count = 1 + int(u(rng) * 4) % 4;
+    const bool exponent = distribution == ref::Distribution::blinn_phong;
+    std::vector<Lobe> lobes;
+    for (int j = 0; j < count; ++j)
+        lobes.push_back({u(rng), exponent ? pick({0.0, 10000.0}, 0.0, 1000.0) : pick({0.001, 2.0}, 0.02, 2.0)});
+    bool ok = shininess <= 1000.0 && alpha_x >= 0.02 && alpha_y >= 0.02;
+    for (const Lobe& lobe : lobes) ok = ok && (exponent ? lobe.m <= 1000.0 : lobe.m >= 0.02);
+
+    m.set_vec3("kd", kd);
+    m.set_vec3("ka", ka);
+    m.set_vec3("emission", emission);
+    if (m.has("ks")) m.set_vec3("ks", ks);
+    if (m.has("shininess")) m.set_number("shininess", shininess);
+    if (m.has("sigma")) m.set_number("sigma", sigma);
+    if (m.has("ior")) m.set_number("ior", ior);
+    if (m.has("alpha_x")) m.set_number("alpha_x", alpha_x), m.set_number("alpha_y", alpha_y);
+    if (m.has("axis")) m.set_vec3("axis", axis);
+    if (m.has("distribution")) {
+        m.set_choice("distribution", int(distribution));
+        m.set_choice("fresnel", int(fresnel));
+        m.set_lobes(lobes);
+    }
+    // Every number as the GPU reads it (float), so both sides see the same input.
+    return {test::float_rounded(m), ok, dvec3(glm::vec3(axis))};
 }
 
 dvec3 random_unit(std::mt19937& rng) {
@@ -92,7 +108,7 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
                 case 0: L = -V; break;                                             // opposite
                 case 1: L = glm::normalize(L - glm::dot(L, N) * N + 1e-7 * N); break;  // grazing light
                 case 2: V = glm::normalize(V - glm::dot(V, N) * N + 1e-7 * N); break;  // grazing view
-                case 3: N = g.material.axis; break;                                // tangent-frame pole
+                case 3: N = g.axis; break;                                         // tangent-frame pole
                 case 4: L = V = N; break;                                          // head on
                 default: break;
             }
@@ -126,7 +142,7 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
         if (scaled > 1e-3) {
             ++beyond;
             if (beyond <= 5)
-                ADD_FAILURE() << to_string(batch.inputs[i].material.model) << " input " << i << ": gpu " << got.x << " "
+                ADD_FAILURE() << test::describe(batch.inputs[i].material) << " input " << i << ": gpu " << got.x << " "
                               << got.y << " " << got.z << " ref " << ref.x << " " << ref.y << " " << ref.z;
         }
     }

@@ -1,4 +1,4 @@
-// End-to-end tests of the m3055 executable (SPEC sections 7 and 8): each test
+// End-to-end tests of the m3055 executable (docs/spec.md#7-scene-files and #8-command-line): each test
 // forks the built binary, then checks its exit status, its stderr line and the
 // files it left (or did not leave) behind.
 #include "image/image.h"
@@ -25,13 +25,13 @@ using test::RunResult;
 using test::TempDir;
 using test::run_m3055;
 
-// SPEC 4: the unquantized colour agrees with the reference to 1e-4; the PNG is
+// docs/spec.md#4-paper-models: the unquantized colour agrees with the reference to 1e-4; the PNG is
 // exact but for rare pixels on a level boundary (at most 0.5 %, one level off).
 constexpr double kRawTolerance = 1e-4;
 constexpr double kMaxOneLevelOffShare = 0.005;
 
 std::string spec_example() { return test::source_path("scenes/spec_example.json"); }
-std::string reference_file(const std::string& name) { return test::shared_path("reference-images/" + name); }
+std::string reference_file(const std::string& name) { return test::reference_image_path(name); }
 
 // Names (sorted) of the plain files in `dir`; temporaries left behind show up here.
 std::vector<std::string> files_in(const std::string& dir) {
@@ -61,7 +61,7 @@ bool is_one_line(const std::string& text) {
     return !text.empty() && text.back() == '\n' && std::count(text.begin(), text.end(), '\n') == 1;
 }
 
-// SPEC 7: "No input may ... produce NaN pixels" (nor Inf).
+// docs/spec.md#7-scene-files: "No input may ... produce NaN pixels" (nor Inf).
 void expect_finite(const RgbFloatImage& raw, const std::string& label) {
     long bad = 0;
     for (float v : raw.pixels) bad += std::isfinite(v) ? 0 : 1;
@@ -104,12 +104,12 @@ TEST(RenderCommand, SpecExampleWritesA512x320PngAndPfm) {
     EXPECT_EQ(files_in(out.path()), (std::vector<std::string>{"spec.pfm", "spec.png"}));
 }
 
-// Against the independent double-precision images in shared/reference-images/.
+// Against the independent double-precision images in tests/data/reference-images/.
 // All pixels are compared, silhouettes included: the raw colour passes 1e-4
 // everywhere, so no interior mask is needed.
-class SharedReference : public ::testing::TestWithParam<std::string> {};
+class IndependentReference : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(SharedReference, PngAndRawMatchTheReferenceImages) {
+TEST_P(IndependentReference, PngAndRawMatchTheReferenceImages) {
     TempDir out;
     const Rendered r = render_ok(reference_file(GetParam() + ".json"), out.path(), GetParam());
     const Rgb8Image want_png = read_png(reference_file(GetParam() + ".png"));
@@ -148,7 +148,7 @@ TEST_P(SharedReference, PngAndRawMatchTheReferenceImages) {
     RecordProperty("max_raw_difference", diff.str());
 }
 
-INSTANTIATE_TEST_SUITE_P(Cli, SharedReference,
+INSTANTIATE_TEST_SUITE_P(Cli, IndependentReference,
                          ::testing::Values("spec_example", "metal_two_lobes", "translucent_over_opaque"));
 
 TEST(RenderCommand, EglAndOsmesaBackendsWriteByteIdenticalPngs) {
@@ -196,7 +196,7 @@ TEST(SetOption, OutOfRangeOverrideFailsWithTheSpecMessageAndWritesNothing) {
     EXPECT_TRUE(files_in(out.path()).empty());
 }
 
-// Edge parameters of SPEC 4 through the whole program: still no NaN or Inf.
+// Edge parameters of docs/spec.md#4-paper-models through the whole program: still no NaN or Inf.
 class EdgeOverride : public ::testing::TestWithParam<std::vector<std::string>> {};
 
 TEST_P(EdgeOverride, RendersFiniteColours) {
@@ -231,7 +231,7 @@ TEST(AllScenes, EveryRepositorySceneRendersWithoutNanOrInf) {
     }
 }
 
-// ---- Bad input (SPEC 7) --------------------------------------------------------
+// ---- Bad input (docs/spec.md#7-scene-files) --------------------------------------------------------
 
 const char* const kGoodScene = R"({
   "display":    { "width": 64, "height": 40, "bits": 5 },
@@ -356,7 +356,7 @@ TEST(OutputFolder, MissingFolderIsAnErrorNamingThePath) {
     const RunResult run = run_m3055({"render", "--scene", spec_example(), "--out", png});
     EXPECT_NE(run.exit_code, 0);
     EXPECT_TRUE(is_one_line(run.err)) << run.err;
-    EXPECT_EQ(run.err.rfind("m3055: " + png + ": ", 0), 0u) << run.err;
+    EXPECT_EQ(run.err, "m3055: --out " + png + ": cannot write into its folder: No such file or directory\n");
     EXPECT_TRUE(files_in(out.path()).empty()) << "the folder must not be created";
 }
 
@@ -367,7 +367,7 @@ TEST(OutputFolder, MissingRawFolderWritesNoPng) {
         run_m3055({"render", "--scene", spec_example(), "--out", out.file("o.png"), "--raw", pfm});
     EXPECT_NE(run.exit_code, 0);
     EXPECT_TRUE(is_one_line(run.err)) << run.err;
-    EXPECT_EQ(run.err.rfind("m3055: " + pfm + ": ", 0), 0u) << run.err;
+    EXPECT_EQ(run.err, "m3055: --raw " + pfm + ": cannot write into its folder: No such file or directory\n");
     EXPECT_TRUE(files_in(out.path()).empty());
 }
 
@@ -378,7 +378,7 @@ TEST(OutputFolder, MissingPngFolderWritesNoPfm) {
     const RunResult run = run_m3055({"render", "--scene", spec_example(), "--out", png, "--raw", out.file("o.pfm")});
     EXPECT_EQ(run.exit_code, 1);
     EXPECT_TRUE(is_one_line(run.err)) << run.err;
-    EXPECT_EQ(run.err.rfind("m3055: " + png + ": ", 0), 0u) << run.err;
+    EXPECT_EQ(run.err, "m3055: --out " + png + ": cannot write into its folder: No such file or directory\n");
     EXPECT_TRUE(files_in(out.path()).empty()) << "no PFM and no temporary file may be left";
 }
 

@@ -2,6 +2,7 @@
 // save a screenshot byte-identical to `m3055 render` of the saved scene, show
 // panels and the emulated display in its window, and sleep when idle.
 #include "image/image.h"
+#include "models/model_table.h"
 #include "scene/load.h"
 #include "scene/presets.h"
 #include "test_support.h"
@@ -221,6 +222,23 @@ TEST_F(Explorer, AddsEveryShapeAndChangesAShape) {
         test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("render.png")});
     ASSERT_EQ(render.exit_code, 0) << render.err;
     EXPECT_EQ(test::read_text(dir.file("render.png")), test::read_text(dir.file("shot.png")));
+}
+
+// The Material panel's model selector lists every model of the table (it is
+// built from it), and choosing each one through the selector's own code path
+// gives a material the scene file format accepts.
+TEST_F(Explorer, ModelSelectorListsEveryModelOfTheTable) {
+    TempDir dir;
+    std::string script = "print_models\n";
+    for (const ModelSpec& model : model_table().models())
+        script += "model " + model.name + "\nsave " + model.name + ".json\n";
+    test::write_text(dir.file("script.txt"), script);
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const ModelSpec& model : model_table().models()) {
+        EXPECT_NE(run.out.find("model " + model.name + "\t" + model.label + "\n"), std::string::npos) << model.name;
+        EXPECT_EQ(load_scene_file(dir.file(model.name + ".json")).objects[0].material.model_name(), model.name);
+    }
 }
 
 TEST_F(Explorer, BadStartingSceneIsAOneLineErrorNotACrash) {

@@ -4,7 +4,7 @@
 // a finite, in-range scene or a one-line SceneError, never another exception,
 // a NaN or a scene that does not reload. Crashes and sanitizer reports fail
 // the test process itself.
-#include "fuzz/scene_fuzz_check.h"
+#include "fuzz/manifest_fuzz_check.h"
 
 #include "test_support.h"
 
@@ -19,7 +19,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-using m3055::test::shared_path;
 using m3055::test::source_path;
 
 std::vector<fs::path> files_under(const std::string& folder, const std::string& extension = "") {
@@ -35,7 +34,7 @@ std::vector<fs::path> files_under(const std::string& folder, const std::string& 
 std::string check_file(const fs::path& path) {
     std::ifstream file(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    return m3055::fuzz::check_scene_input(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+    return m3055::fuzz::check_fuzz_input(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
 TEST(FuzzRegressions, EveryInputThatOnceFailedNowPasses) {
@@ -46,8 +45,8 @@ TEST(FuzzRegressions, EveryInputThatOnceFailedNowPasses) {
 
 TEST(FuzzRegressions, SeedCorpusPasses) {
     std::vector<fs::path> files = files_under(source_path("scenes"), ".json");
-    for (const auto& more : {files_under(shared_path("reference-images"), ".json"),
-                             files_under(source_path("tests/data"), ".json"),
+    // tests/data/ holds the reference images' scenes (tests/data/reference-images/) too.
+    for (const auto& more : {files_under(source_path("tests/data"), ".json"),
                              files_under(source_path("tests/fuzz/seeds"))})
         files.insert(files.end(), more.begin(), more.end());
     ASSERT_GE(files.size(), 10u);
@@ -112,7 +111,7 @@ TEST(FuzzRegressions, CheckerRejectsNonFiniteScenesAndMultiLineErrors) {
     m3055::Scene scene;
     scene.objects.push_back(m3055::Object{});
     EXPECT_EQ(m3055::fuzz::check_loaded_scene(scene), "");
-    scene.objects[0].material.m = std::nan("");
+    scene.objects[0].material.set_number("m", std::nan(""));
     EXPECT_EQ(m3055::fuzz::check_loaded_scene(scene), "objects[0].material.m is not finite");
     EXPECT_NE(m3055::fuzz::check_error_message("fuzz.json: a\nb", true), "");
     EXPECT_NE(m3055::fuzz::check_error_message("other.json: a", true), "");

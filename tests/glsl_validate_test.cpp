@@ -3,6 +3,7 @@
 // (glslangValidator): a shader that only llvmpipe accepts would break on
 // stricter drivers. A missing glslangValidator is a failure, not a skip.
 #include "gl/shader_source.h"
+#include "models/model_table.h"
 #include "passes/shader_plan.h"
 #include "scene/load.h"
 #include "test_support.h"
@@ -87,35 +88,72 @@ struct ProgramCase {
 // gtest prints parameters in failure messages; a name beats a byte dump.
 void PrintTo(const ProgramCase& c, std::ostream* os) { *os << c.name; }
 
+// The defines renderer.cpp asks for (passes/shader_plan.cpp) for a pass that
+// draws one object of each of `models` under `lights`.
+std::vector<std::string> defines_for(ShaderMode mode, const std::vector<std::string>& models,
+                                     const std::vector<Light>& lights, bool translucent_pass = false) {
+    std::vector<Object> objects(models.size());
+    std::vector<const Object*> pointers;
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        objects[i].material = Material::of(models[i]);
+        pointers.push_back(&objects[i]);
+    }
+    std::vector<std::string> defines = specialization_defines(mode, pointers, lights);
+    if (translucent_pass) defines.push_back("TRANSLUCENT_PASS");
+    return defines;
+}
+
+std::vector<std::string> general(bool translucent_pass = false) {
+    return defines_for(ShaderMode::general, {}, {}, translucent_pass);
+}
+
+std::vector<std::string> specialized(const std::vector<std::string>& models, const std::vector<Light>& lights,
+                                     bool translucent_pass = false) {
+    return defines_for(ShaderMode::specialized, models, lights, translucent_pass);
+}
+
+Light light_of(LightType type, std::vector<Lobe> lobes = {}) {
+    Light light;
+    light.type = type;
+    light.lobes = std::move(lobes);
+    return light;
+}
+
+// Every opaque model of the table (all but the translucent pass's).
+std::vector<std::string> every_opaque_model() {
+    std::vector<std::string> names;
+    for (const ModelSpec& model : model_table().models())
+        if (model.family != Family::translucent) names.push_back(model.name);
+    return names;
+}
+
 // The programs renderer.cpp builds: general sphere programs (ShaderMode::general:
-// no defines, every model and light kind chosen at run time), specialized ones
+// every model and light kind chosen at run time), specialized ones
 // (passes/shader_plan.cpp: SPECIALIZED, LIGHT_COUNT n and the HAS_* flags of
 // one scene), each opaque and translucent, and the quantize pass. The
 // specialized sets are representative corners: no lights, one light, every
 // flag, each metal variant alone (metal.glsl branches on them).
 std::vector<ProgramCase> renderer_programs() {
     const std::string vert = "passes/sphere.vert", frag = "passes/sphere.frag";
+    const Light directional = light_of(LightType::directional);
+    const Light beckmann_lobes = light_of(LightType::directional, {{0.01, 0.4}});
+    const Light point = light_of(LightType::point), spot = light_of(LightType::spot);
     return {
         {"quantize", "passes/fullscreen.vert", "passes/quantize.frag", {}},
-        {"general_opaque", vert, frag, {}},
-        {"general_translucent", vert, frag, {"TRANSLUCENT_PASS"}},
-        {"highlight_no_light", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 0", "HAS_HIGHLIGHT"}},
-        {"highlight_one_light", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 1", "HAS_HIGHLIGHT"}},
-        {"metal_only", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 2", "HAS_METAL"}},
-        {"metal_blinn_only", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 1", "HAS_METAL_BLINN"}},
-        {"metal_phong_only", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 1", "HAS_METAL_PHONG"}},
-        {"every_flag", vert, frag,
-         {"SPECIALIZED", "LIGHT_COUNT 4", "HAS_HIGHLIGHT", "HAS_LIGHT_LOBES", "HAS_METAL", "HAS_METAL_BLINN",
-          "HAS_METAL_PHONG", "HAS_POINT_LIGHTS", "HAS_SPOT_LIGHTS"}},
-        {"translucent_no_light", vert, frag, {"SPECIALIZED", "LIGHT_COUNT 0", "TRANSLUCENT_PASS"}},
-        {"translucent_spot_lobes", vert, frag,
-         {"SPECIALIZED", "LIGHT_COUNT 3", "HAS_LIGHT_LOBES", "HAS_POINT_LIGHTS", "HAS_SPOT_LIGHTS",
-          "TRANSLUCENT_PASS"}},
+        {"general_opaque", vert, frag, general()},
+        {"general_translucent", vert, frag, general(true)},
+        {"highlight_no_light", vert, frag, specialized({"highlight"}, {})},
+        {"highlight_one_light", vert, frag, specialized({"highlight"}, {directional})},
+        {"metal_only", vert, frag, specialized({"metal"}, {directional, directional})},
+        {"metal_blinn_only", vert, frag, specialized({"metal_blinn"}, {directional})},
+        {"metal_phong_only", vert, frag, specialized({"metal_phong"}, {directional})},
+        {"every_flag", vert, frag, specialized(every_opaque_model(), {beckmann_lobes, point, spot, directional})},
+        {"translucent_no_light", vert, frag, specialized({"translucent"}, {}, true)},
+        {"translucent_spot_lobes", vert, frag, specialized({"translucent"}, {beckmann_lobes, point, spot}, true)},
         // The mesh pass (planes, cubes, cylinders, tori: passes/mesh_pass.cpp).
-        {"mesh_general_opaque", "passes/mesh.vert", "passes/mesh.frag", {}},
-        {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", {"TRANSLUCENT_PASS"}},
-        {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag",
-         {"SPECIALIZED", "LIGHT_COUNT 1", "HAS_HIGHLIGHT"}},
+        {"mesh_general_opaque", "passes/mesh.vert", "passes/mesh.frag", general()},
+        {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", general(true)},
+        {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag", specialized({"highlight"}, {directional})},
     };
 }
 
@@ -127,7 +165,7 @@ protected:
         const ComposedShader shader = compose_shader(glsl_path, GetParam().defines);
         EXPECT_FALSE(shader.files.empty());
         if (!shader.files.empty()) {
-            EXPECT_EQ(shader.files.front(), glsl_path);
+            EXPECT_EQ(shader.files.front(), "glsl/" + glsl_path);  // files name the source as a log shows it
         }
         EXPECT_EQ(shader.text.rfind("#version 330 core\n", 0), 0u) << glsl_path;
         const std::string file = dir_.file(GetParam().name + "." + ext);
@@ -161,12 +199,12 @@ INSTANTIATE_TEST_SUITE_P(Renderer, ComposedProgram, ::testing::ValuesIn(renderer
                          [](const ::testing::TestParamInfo<ProgramCase>& info) { return info.param.name; });
 
 // The specialized programs the renderer really builds for the repository's
-// scenes and the shared reference scenes (keys from passes/shader_plan.cpp,
+// scenes and the independent reference scenes (keys from passes/shader_plan.cpp,
 // split into opaque and translucent passes as renderer.cpp splits them).
 TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
     namespace fs = std::filesystem;
     std::vector<fs::path> scenes;
-    for (const std::string& dir : {test::source_path("scenes"), test::shared_path("reference-images")})
+    for (const std::string& dir : {test::source_path("scenes"), test::reference_image_path("")})
         for (const auto& entry : fs::directory_iterator(dir))
             if (entry.path().extension() == ".json") scenes.push_back(entry.path());
     ASSERT_GE(scenes.size(), 13u);  // fig05..fig13, spec_example, three reference scenes
@@ -176,7 +214,7 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
         const Scene scene = load_scene_file(path.string());
         std::vector<const Object*> opaque, translucent;
         for (const Object& object : scene.objects)
-            (is_translucent(object.material.model) ? translucent : opaque).push_back(&object);
+            (is_translucent(object.material) ? translucent : opaque).push_back(&object);
         if (!opaque.empty()) keys.insert(specialization_defines(ShaderMode::specialized, opaque, scene.lights));
         if (!translucent.empty()) {
             auto defines = specialization_defines(ShaderMode::specialized, translucent, scene.lights);
@@ -236,22 +274,22 @@ TEST(ComposeShader, UnknownFileThrowsNamingIt) {
 // ---- annotate_shader_log -------------------------------------------------------
 
 TEST(AnnotateShaderLog, MesaPrefixBecomesGlslPathLineColumn) {
-    EXPECT_EQ(annotate_shader_log("0:12(5): error: x", {"a.glsl"}), "glsl/a.glsl:12:5: error: x");
+    EXPECT_EQ(annotate_shader_log("0:12(5): error: x", {"glsl/a.glsl"}), "glsl/a.glsl:12:5: error: x");
 }
 
 TEST(AnnotateShaderLog, EachLineUsesItsOwnSourceNumber) {
-    const std::vector<std::string> files = {"passes/sphere.frag", "terms/beckmann.glsl"};
+    const std::vector<std::string> files = {"glsl/passes/sphere.frag", "glsl/terms/beckmann.glsl"};
     EXPECT_EQ(annotate_shader_log("0:3(1): error: a\n1:20(7): warning: b\n", files),
               "glsl/passes/sphere.frag:3:1: error: a\nglsl/terms/beckmann.glsl:20:7: warning: b\n");
 }
 
 TEST(AnnotateShaderLog, OtherDriversStyleAndUnknownNumbers) {
     // "N(LINE)" without a column (other drivers' style).
-    EXPECT_EQ(annotate_shader_log("0(7) : error C0000: y", {"a.glsl"}), "glsl/a.glsl:7 : error C0000: y");
+    EXPECT_EQ(annotate_shader_log("0(7) : error C0000: y", {"glsl/a.glsl"}), "glsl/a.glsl:7 : error C0000: y");
     // A source number beyond the file list is named as a number, not invented.
-    EXPECT_EQ(annotate_shader_log("3:4(2): error: z", {"a.glsl"}), "source 3:4:2: error: z");
+    EXPECT_EQ(annotate_shader_log("3:4(2): error: z", {"glsl/a.glsl"}), "source 3:4:2: error: z");
     // Text without a prefix is left alone.
-    EXPECT_EQ(annotate_shader_log("link error: no main", {"a.glsl"}), "link error: no main");
+    EXPECT_EQ(annotate_shader_log("link error: no main", {"glsl/a.glsl"}), "link error: no main");
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// Image files: PNG/PFM round trips, the PFM header, the shared reference
-// images, and the atomic-write guarantees of SPEC section 8.
+// Image files: PNG/PFM round trips, the PFM header, the independent reference
+// images (tests/data/reference-images/), and the atomic-write guarantees of docs/spec.md#8-command-line.
 #include "image/image.h"
 #include "image/quantize.h"
 #include "test_support.h"
@@ -40,13 +40,7 @@ RgbFloatImage varied_float(int width, int height) {
     return image;
 }
 
-// test::shared_path reads M3055_SHARED_DIR in the support library, where the
-// definition is not set (tests/CMakeLists.txt defines it only on the test
-// executables), so it falls back to a relative "../shared". This file does get
-// the definition, so build the absolute path here.
-std::string reference_image(const std::string& name) {
-    return std::string(M3055_SHARED_DIR) + "/reference-images/" + name;
-}
+std::string reference_image(const std::string& name) { return test::reference_image_path(name); }
 
 std::vector<std::string> folder_entries(const std::string& folder) {
     std::vector<std::string> names;

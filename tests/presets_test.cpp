@@ -10,17 +10,26 @@
 namespace m3055 {
 namespace {
 
+// A material of `model` with d and the lobes given.
+Material metal(const char* model, double d, const std::vector<Lobe>& lobes) {
+    Material material = Material::of(model);
+    material.set_number("d", d);
+    material.set_lobes(lobes);
+    return material;
+}
+
 TEST(Eq14, PaperFig10WeightsAlreadySatisfyIt) {
-    // SPEC 4.3: w = 0.013, m = 0.2 and w = 0.1, m = 0.4 give 0.95 = 1 - d, d = 0.05.
-    const std::vector<Lobe> lobes = {{0.013, 0.2}, {0.1, 0.4}};
-    EXPECT_NEAR(highlight_peak(Model::metal, 0.05, lobes), 0.05 + 0.325 + 0.625, 1e-12);
-    EXPECT_NEAR(highlight_peak(Model::metal, 0.05, lobes), 1.0, 1e-12);
+    // docs/spec.md#43-metal: w = 0.013, m = 0.2 and w = 0.1, m = 0.4 give 0.95 = 1 - d, d = 0.05.
+    const Material fig10 = metal("metal", 0.05, {{0.013, 0.2}, {0.1, 0.4}});
+    EXPECT_NEAR(highlight_peak(fig10), 0.05 + 0.325 + 0.625, 1e-12);
+    EXPECT_NEAR(highlight_peak(fig10), 1.0, 1e-12);
 }
 
 TEST(Eq14, RescaleKeepsProportionsAndMeetsOne) {
-    std::vector<Lobe> lobes = {{0.02, 0.2}, {0.3, 0.5}};
-    ASSERT_TRUE(rescale_to_eq14(Model::metal, 0.1, lobes));
-    EXPECT_NEAR(highlight_peak(Model::metal, 0.1, lobes), 1.0, 1e-12);
+    Material material = metal("metal", 0.1, {{0.02, 0.2}, {0.3, 0.5}});
+    ASSERT_TRUE(rescale_to_eq14(material));
+    EXPECT_NEAR(highlight_peak(material), 1.0, 1e-12);
+    const LobeList lobes = material.lobes();
     EXPECT_NEAR(lobes[0].w / lobes[1].w, 0.02 / 0.3, 1e-12);  // ratio kept
     EXPECT_EQ(lobes[0].m, 0.2);                               // roughness untouched
     EXPECT_EQ(lobes[1].m, 0.5);
@@ -29,25 +38,29 @@ TEST(Eq14, RescaleKeepsProportionsAndMeetsOne) {
 }
 
 TEST(Eq14, ExponentLobesPeakAtTheirWeightSum) {
-    std::vector<Lobe> lobes = {{0.2, 20}, {0.8, 3}};
-    EXPECT_NEAR(highlight_peak(Model::metal_phong, 0.05, lobes), 1.05, 1e-12);
-    ASSERT_TRUE(rescale_to_eq14(Model::metal_blinn, 0.05, lobes));
-    EXPECT_NEAR(lobes[0].w + lobes[1].w, 0.95, 1e-12);
+    const std::vector<Lobe> lobes = {{0.2, 20}, {0.8, 3}};
+    EXPECT_NEAR(highlight_peak(metal("metal_phong", 0.05, lobes)), 1.05, 1e-12);
+    Material blinn = metal("metal_blinn", 0.05, lobes);
+    ASSERT_TRUE(rescale_to_eq14(blinn));
+    EXPECT_NEAR(blinn.lobes()[0].w + blinn.lobes()[1].w, 0.95, 1e-12);
 }
 
 TEST(Eq14, ImpossibleCasesLeaveTheLobesAlone) {
-    std::vector<Lobe> zero = {{0.0, 0.3}};
-    EXPECT_FALSE(rescale_to_eq14(Model::metal, 0.05, zero));
-    EXPECT_EQ(zero[0].w, 0.0);
-    std::vector<Lobe> lobes = {{0.1, 0.4}};
-    EXPECT_FALSE(rescale_to_eq14(Model::metal, 1.0, lobes));  // d already 1
-    EXPECT_EQ(lobes[0].w, 0.1);
-    // The roughest lobe SPEC 7 allows, m = 2, needs w = (1 - d) m^2 = 4 with d = 0.
-    std::vector<Lobe> rough = {{0.001, 2.0}};
-    ASSERT_TRUE(rescale_to_eq14(Model::metal, 0.0, rough));
-    EXPECT_NEAR(rough[0].w, 4.0, 1e-12);
-    std::vector<Lobe> none;
-    EXPECT_FALSE(rescale_to_eq14(Model::highlight, 0.5, none));
+    Material zero = metal("metal", 0.05, {{0.0, 0.3}});
+    EXPECT_FALSE(rescale_to_eq14(zero));
+    EXPECT_EQ(zero.lobes()[0].w, 0.0);
+    Material full = metal("metal", 1.0, {{0.1, 0.4}});
+    EXPECT_FALSE(rescale_to_eq14(full));  // d already 1
+    EXPECT_EQ(full.lobes()[0].w, 0.1);
+    // The roughest lobe docs/spec.md#7-scene-files allows, m = 2, needs w = (1 - d) m^2 = 4 with d = 0.
+    Material rough = metal("metal", 0.0, {{0.001, 2.0}});
+    ASSERT_TRUE(rescale_to_eq14(rough));
+    EXPECT_NEAR(rough.lobes()[0].w, 4.0, 1e-12);
+    Material highlight = Material::of("highlight");  // no lobes
+    highlight.set_number("d", 0.5);
+    const Material before = highlight;
+    EXPECT_FALSE(rescale_to_eq14(highlight));
+    EXPECT_EQ(highlight, before);
 }
 
 TEST(LightPresets, NamesRoundTrip) {
@@ -110,11 +123,14 @@ TEST(LightPresets, EveryPresetMakesAValidScene) {
     }
 }
 
+// The defaults come from the model table (models/builtin_models.cpp).
 TEST(DefaultLobes, MetalDefaultsMeetEq14WithThePapersD) {
-    EXPECT_NEAR(highlight_peak(Model::metal, 0.05, default_lobes(Model::metal)), 1.0, 1e-12);
-    EXPECT_NEAR(highlight_peak(Model::metal_blinn, 0.05, default_lobes(Model::metal_blinn)), 1.0,
-                1e-12);
-    EXPECT_TRUE(default_lobes(Model::highlight).empty());
+    for (const char* model : {"metal", "metal_blinn"}) {
+        Material material = Material::of(model);
+        material.set_number("d", 0.05);
+        EXPECT_NEAR(highlight_peak(material), 1.0, 1e-12) << model;
+    }
+    EXPECT_FALSE(Material::of("highlight").has("lobes"));
 }
 
 TEST(DefaultScene, IsTheSpecExample) {
@@ -123,7 +139,7 @@ TEST(DefaultScene, IsTheSpecExample) {
     EXPECT_EQ(scene.display.height, 320);
     EXPECT_EQ(scene.display.bits, 5);
     ASSERT_EQ(scene.objects.size(), 1u);
-    EXPECT_EQ(scene.objects[0].material.model, Model::highlight);
+    EXPECT_EQ(scene.objects[0].material.model_name(), "highlight");
     ASSERT_EQ(scene.lights.size(), 1u);
     EXPECT_NEAR(scene.lights[0].direction.x, 1.0 / std::sqrt(3.0), 1e-12);
 }

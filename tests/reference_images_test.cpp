@@ -1,5 +1,5 @@
 // The CPU reference against the independent reference images in
-// shared/reference-images/ (JSON scene + raw PFM + quantized PNG each): away
+// tests/data/reference-images/ (JSON scene + raw PFM + quantized PNG each): away
 // from silhouettes the raw colour must agree to 1e-4 and the quantized PNG
 // exactly, but for rare pixels sitting on a level boundary (one level off).
 #include "image/image.h"
@@ -23,17 +23,7 @@ namespace {
 
 constexpr double kRawTolerance = 1e-4;
 
-// shared/reference-images/NAME. tests/CMakeLists.txt defines M3055_SHARED_DIR
-// (absolute) on each test executable; test::shared_path is compiled into the
-// support library, which does not see that definition and falls back to a
-// path relative to the working directory, so prefer the macro here.
-std::string reference_path(const std::string& name) {
-#ifdef M3055_SHARED_DIR
-    return std::string(M3055_SHARED_DIR) + "/reference-images/" + name;
-#else
-    return test::shared_path("reference-images/" + name);
-#endif
-}
+std::string reference_path(const std::string& name) { return test::reference_image_path(name); }
 constexpr double kMinExactShare = 0.999;
 
 // Every NAME.json in the folder that has its NAME.pfm and NAME.png beside it.

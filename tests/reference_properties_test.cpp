@@ -1,7 +1,8 @@
-// The paper's properties (SPEC 4), checked on the CPU reference: what w = 1,
+// The paper's properties (docs/spec.md#4-paper-models), checked on the CPU reference: what w = 1,
 // eq. 14, t_p = 0 and a single white light must give, that lights never
 // depend on their order, that lights facing away contribute nothing, and that
 // extreme parameters stay finite.
+#include "models/model_table.h"
 #include "reference/reference.h"
 
 #include <glm/geometric.hpp>
@@ -35,29 +36,27 @@ SurfacePoint point_with(dvec3 N, dvec3 V) {
 }
 
 Material highlight(dvec3 C0, double d, double w, double m) {
-    Material mat;
-    mat.model = Model::highlight;
-    mat.color = C0;
-    mat.d = d;
-    mat.w = w;
-    mat.m = m;
+    Material mat = Material::of("highlight");
+    mat.set_vec3("color", C0);
+    mat.set_number("d", d);
+    mat.set_number("w", w);
+    mat.set_number("m", m);
     return mat;
 }
 
+// highlight(C0, 0.5, 1, 10) switched to the translucent model (keeps colour, d, w, m).
 Material translucent(dvec3 C0, double t_n, double t_p) {
-    Material mat = highlight(C0, 0.5, 1.0, 10.0);
-    mat.model = Model::translucent;
-    mat.t_n = t_n;
-    mat.t_p = t_p;
+    Material mat = with_model(highlight(C0, 0.5, 1.0, 10.0), model_table().get("translucent"));
+    mat.set_number("t_n", t_n);
+    mat.set_number("t_p", t_p);
     return mat;
 }
 
-Material metal(Model model, dvec3 C0, double d, std::vector<Lobe> lobes) {
-    Material mat;
-    mat.model = model;
-    mat.color = C0;
-    mat.d = d;
-    mat.lobes = std::move(lobes);
+Material metal(const char* model, dvec3 C0, double d, std::vector<Lobe> lobes) {
+    Material mat = Material::of(model);
+    mat.set_vec3("color", C0);
+    mat.set_number("d", d);
+    mat.set_lobes(lobes);
     return mat;
 }
 
@@ -65,14 +64,14 @@ Material metal(Model model, dvec3 C0, double d, std::vector<Lobe> lobes) {
 std::vector<Material> every_model() {
     return {highlight({0.8, 0.2, 0.2}, 0.5, 0.9, 12.0),
             translucent({0.2, 0.5, 0.9}, 0.7, 1.0),
-            metal(Model::metal, {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}}),
-            metal(Model::metal_blinn, {0.7, 0.7, 0.8}, 0.05, {{0.5, 13.0}}),
-            metal(Model::metal_phong, {0.9, 0.8, 0.3}, 0.05, {{0.2, 20.0}, {0.8, 3.0}})};
+            metal("metal", {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}}),
+            metal("metal_blinn", {0.7, 0.7, 0.8}, 0.05, {{0.5, 13.0}}),
+            metal("metal_phong", {0.9, 0.8, 0.3}, 0.05, {{0.2, 20.0}, {0.8, 3.0}})};
 }
 
 // Translucent models are compared through their composite over a fixed C_B.
 dvec3 shade_any(const Material& mat, const std::vector<Light>& lights, const SurfacePoint& p) {
-    if (mat.model != Model::translucent) return shade_opaque(mat, lights, p);
+    if (!is_translucent(mat)) return shade_opaque(mat, lights, p);
     const TranslucentShade s = shade_translucent(mat, lights, p);
     return s.color + s.transmittance * dvec3(0.3, 0.6, 0.1);
 }
@@ -117,14 +116,14 @@ TEST(MetalModel, EquationFourteenGivesC0AtTheMainHighlightCentre) {
     const Light light = directional({0, 0, 1});
     // Fig. 10's lobes: 0.013 / 0.2^2 + 0.1 / 0.4^2 = 0.95 = 1 - d.
     for (dvec3 C0 : {dvec3(0.9, 0.6, 0.4), dvec3(0.3, 0.3, 0.9)}) {
-        const Material fig10 = metal(Model::metal, C0, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
+        const Material fig10 = metal("metal", C0, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
         expect_near(shade_opaque(fig10, {light}, p), C0, kTight, "Fig. 10 lobes");
     }
     // Any lobes rescaled to meet eq. 14.
     const double d = 0.1, m1 = 0.15, m2 = 0.5, share1 = 0.3;
     const double w1 = share1 * (1.0 - d) * m1 * m1, w2 = (1.0 - share1) * (1.0 - d) * m2 * m2;
-    const Material rescaled = metal(Model::metal, {0.5, 0.7, 0.2}, d, {{w1, m1}, {w2, m2}});
-    expect_near(shade_opaque(rescaled, {light}, p), rescaled.color, kTight, "rescaled");
+    const Material rescaled = metal("metal", {0.5, 0.7, 0.2}, d, {{w1, m1}, {w2, m2}});
+    expect_near(shade_opaque(rescaled, {light}, p), rescaled.vec3("color"), kTight, "rescaled");
 }
 
 // ---- 4.2: t_p = 0 is Newell's constant opacity -----------------------------
@@ -137,7 +136,7 @@ TEST(TranslucentModel, PowerZeroGivesConstantOpacityAtEveryAngle) {
             // No lights: no highlight, so the transmittance is exactly 1 - t.
             const TranslucentShade s = shade_translucent(mat, {}, p);
             expect_near(s.transmittance, dvec3(1.0 - t_n), kTight, "transmittance");
-            expect_near(s.color, t_n * mat.d * mat.color, kTight, "colour");
+            expect_near(s.color, t_n * mat.number("d") * mat.vec3("color"), kTight, "colour");
         }
 }
 
@@ -184,7 +183,7 @@ TEST(AllModels, PermutingTheLightsChangesNothing) {
             while (std::next_permutation(order.begin(), order.end())) {
                 std::vector<Light> permuted;
                 for (int i : order) permuted.push_back(lights[i]);
-                expect_near(shade_any(mat, permuted, p), first, kTight, to_string(mat.model));
+                expect_near(shade_any(mat, permuted, p), first, kTight, mat.model_name().c_str());
             }
         }
     }
@@ -209,37 +208,39 @@ TEST(AllModels, OneWhiteLightReproducesThePapersFormulas) {
 
         // eq. 3-4: C = C1 + w cos^m a (1 - C1), C1 = [d + (1 - d) cos th] C0.
         const Material hl = highlight({0.8, 0.3, 0.1}, 0.5, 0.8, 15.0);
-        const dvec3 C1 = (hl.d + (1.0 - hl.d) * cos_theta) * hl.color;
-        const dvec3 eq4 = C1 + hl.w * std::pow(cos_alpha, hl.m) * (dvec3(1.0) - C1);
+        const double d = hl.number("d"), w = hl.number("w"), m = hl.number("m");
+        const dvec3 C1 = (d + (1.0 - d) * cos_theta) * hl.vec3("color");
+        const dvec3 eq4 = C1 + w * std::pow(cos_alpha, m) * (dvec3(1.0) - C1);
         expect_near(shade_opaque(hl, lights, p), eq4, kTight, "eq. 4");
 
         // eq. 5-8: the same blend towards white over C1 = (1 - t) C_B + t C1.
         const Material tr = translucent({0.2, 0.5, 0.9}, 0.7, 1.3);
         const dvec3 C_B(0.3, 0.6, 0.1);
-        const double t = tr.t_n * std::pow(1.0 - NoV, tr.t_p);
-        const dvec3 C1t = (1.0 - t) * C_B + t * (tr.d + (1.0 - tr.d) * cos_theta) * tr.color;
-        const dvec3 eq8 = C1t + tr.w * std::pow(cos_alpha, tr.m) * (dvec3(1.0) - C1t);
+        const double t = tr.number("t_n") * std::pow(1.0 - NoV, tr.number("t_p"));
+        const double td = tr.number("d");
+        const dvec3 C1t = (1.0 - t) * C_B + t * (td + (1.0 - td) * cos_theta) * tr.vec3("color");
+        const dvec3 eq8 = C1t + tr.number("w") * std::pow(cos_alpha, tr.number("m")) * (dvec3(1.0) - C1t);
         expect_near(shade_any(tr, lights, p), eq8, kTight, "eq. 5-8");
 
         // eq. 12-13: C = {d + sum_j w_j delta(m_j, a) G / (N.V)} C0, with the
         // textbook delta = exp(-tan^2 a / m^2) / (m^2 cos^4 a) and G as printed.
-        const Material mt = metal(Model::metal, {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
+        const Material mt = metal("metal", {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
         const double alpha = std::acos(std::min(NoH, 1.0));
         const double G = std::min({1.0, 2.0 * NoH * NoV / VoH, 2.0 * NoH * cos_theta / VoH});
         double lobes = 0.0;
-        for (const Lobe& lobe : mt.lobes)
+        for (const Lobe& lobe : mt.lobes())
             lobes += lobe.w * std::exp(-std::pow(std::tan(alpha), 2) / (lobe.m * lobe.m)) /
                      (lobe.m * lobe.m * std::pow(std::cos(alpha), 4));
-        const dvec3 eq12 = (mt.d + lobes * G / NoV) * mt.color;
+        const dvec3 eq12 = (mt.number("d") + lobes * G / NoV) * mt.vec3("color");
         expect_near(shade_opaque(mt, lights, p), eq12, 1e-10, "eq. 12");  // acos/tan round-trip
 
         // eq. 15 and eq. 16.
-        const Material bl = metal(Model::metal_blinn, {0.7, 0.7, 0.8}, 0.05, {{0.6, 13.0}, {0.3, 2.0}});
-        const dvec3 eq15 = (bl.d + 0.6 * std::pow(NoH, 13.0) + 0.3 * std::pow(NoH, 2.0)) * bl.color;
+        const Material bl = metal("metal_blinn", {0.7, 0.7, 0.8}, 0.05, {{0.6, 13.0}, {0.3, 2.0}});
+        const dvec3 eq15 = (bl.number("d") + 0.6 * std::pow(NoH, 13.0) + 0.3 * std::pow(NoH, 2.0)) * bl.vec3("color");
         expect_near(shade_opaque(bl, lights, p), eq15, kTight, "eq. 15");
-        const Material ph = metal(Model::metal_phong, {0.9, 0.8, 0.3}, 0.05, {{0.2, 20.0}, {0.8, 3.0}});
+        const Material ph = metal("metal_phong", {0.9, 0.8, 0.3}, 0.05, {{0.2, 20.0}, {0.8, 3.0}});
         const dvec3 eq16 =
-            (ph.d + 0.2 * std::pow(cos_alpha, 20.0) + 0.8 * std::pow(cos_alpha, 3.0)) * ph.color;
+            (ph.number("d") + 0.2 * std::pow(cos_alpha, 20.0) + 0.8 * std::pow(cos_alpha, 3.0)) * ph.vec3("color");
         expect_near(shade_opaque(ph, lights, p), eq16, kTight, "eq. 16");
     }
 }
@@ -251,10 +252,10 @@ TEST(AllModels, OneWhiteLightReproducesThePapersFormulas) {
 void expect_no_contribution(const Light& light, const SurfacePoint& p, const char* what) {
     std::vector<Material> materials = every_model();
     materials.push_back(highlight({0.5, 0.5, 0.5}, 0.5, 1.0, 0.0));
-    materials.push_back(metal(Model::metal_phong, {0.5, 0.5, 0.5}, 0.05, {{1.0, 0.0}}));
-    materials.push_back(metal(Model::metal_blinn, {0.5, 0.5, 0.5}, 0.05, {{1.0, 0.0}}));
+    materials.push_back(metal("metal_phong", {0.5, 0.5, 0.5}, 0.05, {{1.0, 0.0}}));
+    materials.push_back(metal("metal_blinn", {0.5, 0.5, 0.5}, 0.05, {{1.0, 0.0}}));
     for (const Material& mat : materials)
-        EXPECT_EQ(shade_any(mat, {light}, p), shade_any(mat, {}, p)) << what << " " << to_string(mat.model);
+        EXPECT_EQ(shade_any(mat, {light}, p), shade_any(mat, {}, p)) << what << " " << mat.model_name();
 }
 
 TEST(AllModels, LightBehindTheSurfaceContributesNothing) {
@@ -280,7 +281,7 @@ TEST(RenderReference, LightExactlyBehindTheObjectLeavesOnlyTheAmbientTerm) {
         Scene dark = lit;
         dark.lights.clear();
         const ReferenceImage a = render_reference(lit), b = render_reference(dark);
-        EXPECT_EQ(a.rgb, b.rgb) << to_string(mat.model);
+        EXPECT_EQ(a.rgb, b.rgb) << mat.model_name();
         EXPECT_NE(a.coverage[16 * 48 + 24], 0u);  // the sphere is in view
     }
 }
@@ -290,7 +291,7 @@ TEST(HighlightModel, ExponentZeroLightsEveryPointFacingTheLight) {
     const Material mat = highlight({0.8, 0.2, 0.2}, 0.5, 0.5, 0.0);
     const dvec3 L = glm::normalize(dvec3(0.8, 0, 0.6));
     const SurfacePoint p = point_with({0, 0, 1}, {0.8, 0, 0.6});  // R.V = 0.28 - 0.64 < 0
-    const dvec3 C1 = (0.5 + 0.5 * 0.6) * mat.color;
+    const dvec3 C1 = (0.5 + 0.5 * 0.6) * mat.vec3("color");
     expect_near(shade_opaque(mat, {directional(L)}, p), C1 + 0.5 * (dvec3(1.0) - C1), kTight, "m = 0");
 }
 
@@ -300,9 +301,9 @@ TEST(AllModels, ExtremeParametersStayFinite) {
     std::vector<Material> extremes = {
         highlight({1, 1, 1}, 1.0, 1.0, 10000.0), highlight({0, 0, 0}, 0.0, 1.0, 0.0),
         translucent({1, 0, 0}, 1.0, 10.0), translucent({0, 1, 0}, 0.0, 0.0),
-        metal(Model::metal, {1, 1, 1}, 1.0, {{100.0, 0.001}, {100.0, 2.0}, {0.0, 0.001}, {1.0, 0.5}}),
-        metal(Model::metal_blinn, {1, 1, 1}, 1.0, {{100.0, 10000.0}, {100.0, 0.0}}),
-        metal(Model::metal_phong, {1, 1, 1}, 1.0, {{100.0, 10000.0}, {100.0, 0.0}})};
+        metal("metal", {1, 1, 1}, 1.0, {{100.0, 0.001}, {100.0, 2.0}, {0.0, 0.001}, {1.0, 0.5}}),
+        metal("metal_blinn", {1, 1, 1}, 1.0, {{100.0, 10000.0}, {100.0, 0.0}}),
+        metal("metal_phong", {1, 1, 1}, 1.0, {{100.0, 10000.0}, {100.0, 0.0}})};
     Light strong = directional({0.3, 0.2, 1.0}, 10.0);
     Light near_lamp;
     near_lamp.type = LightType::spot;
@@ -321,7 +322,7 @@ TEST(AllModels, ExtremeParametersStayFinite) {
     for (const Material& mat : extremes)
         for (const SurfacePoint& p : points) {
             const dvec3 C = shade_any(mat, lights, p);
-            for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(C[c])) << to_string(mat.model);
+            for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(C[c])) << mat.model_name();
         }
 }
 
@@ -330,7 +331,7 @@ TEST(RenderReference, GrazingSilhouettesOfExtremeMaterialsStayFinite) {
     scene.display = {97, 61, 8, false};
     scene.lights = {directional({1, 1, 1}, 10.0), directional({0, 0, 1})};
     double x = -2.0;
-    for (const Material& mat : {metal(Model::metal, {1, 1, 1}, 0.0, {{100.0, 0.001}}),
+    for (const Material& mat : {metal("metal", {1, 1, 1}, 0.0, {{100.0, 0.001}}),
                                 highlight({1, 1, 1}, 0.5, 1.0, 10000.0), translucent({1, 1, 1}, 1.0, 10.0)}) {
         scene.objects.push_back({Shape::sphere, {x, 0.0, 0.0}, 0.9, mat});
         x += 2.0;
@@ -389,19 +390,22 @@ TEST(Lights, DirectionalLightScaleIsIntensityTimesColour) {
     const LightSample s = sample_light(light, {5, 5, 5});
     EXPECT_EQ(s.L, dvec3(0, 1, 0));
     expect_near(s.scale, {0.7, 0.35, 0.0}, kTight, "scale");
-    ASSERT_NE(s.lobes, nullptr);
-    EXPECT_EQ(s.lobes->size(), 1u);
+    // The light's own lobes are what a metal reads for it (lobes_for; no longer carried by the sample).
+    const LobeList lobes = lobes_for(light, Material::of("metal"));
+    ASSERT_EQ(lobes.size(), 1u);
+    EXPECT_EQ(lobes[0].w, 0.01);
+    EXPECT_EQ(lobes[0].m, 0.4);
 }
 
 TEST(MetalModel, PerLightLobesReplaceTheMaterialsForThatLight) {
     const SurfacePoint p = point_with({0, 0, 1}, {0, 0, 1});
     Light light = directional({0, 0, 1});
     light.lobes = {{0.01, 0.4}};  // Fig. 11's secondary light
-    const Material mat = metal(Model::metal, {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
-    expect_near(shade_opaque(mat, {light}, p), (0.05 + 0.01 / 0.16) * mat.color, kTight, "override");
+    const Material mat = metal("metal", {0.9, 0.6, 0.4}, 0.05, {{0.013, 0.2}, {0.1, 0.4}});
+    expect_near(shade_opaque(mat, {light}, p), (0.05 + 0.01 / 0.16) * mat.vec3("color"), kTight, "override");
     // Beckmann lobes do not apply to metal_blinn, which keeps its own.
-    const Material blinn = metal(Model::metal_blinn, {0.5, 0.5, 0.5}, 0.05, {{0.5, 13.0}});
-    expect_near(shade_opaque(blinn, {light}, p), (0.05 + 0.5) * blinn.color, kTight, "kind");
+    const Material blinn = metal("metal_blinn", {0.5, 0.5, 0.5}, 0.05, {{0.5, 13.0}});
+    expect_near(shade_opaque(blinn, {light}, p), (0.05 + 0.5) * blinn.vec3("color"), kTight, "kind");
 }
 
 // ---- Compositing -----------------------------------------------------------------

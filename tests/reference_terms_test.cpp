@@ -1,4 +1,4 @@
-// The CPU reference's single terms and geometry (SPEC 3, 4): each checked
+// The CPU reference's single terms and geometry (docs/spec.md#3-geometry, #4-paper-models): each checked
 // against its definition at points where the answer is known in closed form.
 #include "reference/reference.h"
 

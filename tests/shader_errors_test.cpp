@@ -6,6 +6,7 @@
 #include "gl/context.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
+#include "passes/shader_plan.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace m3055 {
 namespace {
@@ -43,12 +45,21 @@ std::string build_error(const ProgramKey& key) {
     return "";
 }
 
+// The general sphere program's defines (every model, as the renderer builds it:
+// a model's GLSL is included only under its HAS_* define) plus `extra`.
+std::vector<std::string> general_defines_and(const std::string& extra) {
+    std::vector<std::string> defines = specialization_defines(ShaderMode::general, {}, {});
+    defines.push_back(extra);
+    return defines;
+}
+
 // Defining a function's name to a number turns its declaration into a syntax
 // error in that function's own file.
 TEST(ShaderErrors, CompileErrorNamesTheGlslFileAndLine) {
     const int line = line_of("terms/highlight_blend.glsl", "vec3 highlight_to_white(");
     ASSERT_GT(line, 0) << "glsl/terms/highlight_blend.glsl no longer declares highlight_to_white";
-    const std::string error = build_error({"passes/sphere.vert", "passes/sphere.frag", {"highlight_to_white 0"}});
+    const std::string error =
+        build_error({"passes/sphere.vert", "passes/sphere.frag", general_defines_and("highlight_to_white 0")});
     ASSERT_NE(error, "") << "the broken shader compiled";
     EXPECT_EQ(error.rfind("cannot compile glsl/passes/sphere.frag:\n", 0), 0u) << error;
     EXPECT_NE(error.find("glsl/terms/highlight_blend.glsl:" + std::to_string(line) + ":"), std::string::npos)
@@ -82,7 +93,8 @@ TEST(ShaderErrors, LinkErrorNamesBothStagesAndCarriesTheLog) {
 }
 
 TEST(ShaderErrors, ContextStaysUsableAfterFailures) {
-    EXPECT_NE(build_error({"passes/sphere.vert", "passes/sphere.frag", {"highlight_to_white 0"}}), "");
+    EXPECT_NE(build_error({"passes/sphere.vert", "passes/sphere.frag", general_defines_and("highlight_to_white 0")}),
+              "");
     EXPECT_EQ(build_error({"passes/fullscreen.vert", "passes/quantize.frag", {}}), "");
 }
 

@@ -220,7 +220,7 @@ struct ShadingError {
 
 // Pixels whose ray meets a smooth part of the mesh and the analytic surface,
 // away from the silhouette (N.V >= 0.2 on the analytic surface): highlight
-// m = 10, the SPEC example's material and light.
+// m = 10, the spec example's material and light.
 ShadingError shading_error(const Object& object, const Analytic& shape) {
     Scene scene;
     scene.display = {256, 160, 5, false};

@@ -6,6 +6,7 @@
 //   |gpu - ref| <= 1e-3 * max(1, |ref|), >= 99.5 % of pixels on the same
 //   display level, none more than one level off, no NaN or Inf.
 #include "gpu_compare.h"
+#include "models/model_table.h"
 #include "reference/reference.h"
 
 #include <gtest/gtest.h>
@@ -23,33 +24,31 @@ constexpr double kTolerance = 1e-3;
 constexpr double kSameLevelShare = 0.995;
 
 Material highlight(dvec3 color, double m = 10.0) {
-    Material material;
-    material.model = Model::highlight;
-    material.color = color, material.m = m;
+    Material material = Material::of("highlight");
+    material.set_vec3("color", color), material.set_number("m", m);
     return material;
 }
 
 Material metal() {
-    Material material;
-    material.model = Model::metal;
-    material.color = {0.9, 0.6, 0.4};
-    material.d = 0.05;
-    material.lobes = {{0.013, 0.2}, {0.1, 0.4}};
+    Material material = Material::of("metal");
+    material.set_vec3("color", {0.9, 0.6, 0.4});
+    material.set_number("d", 0.05);
+    material.set_lobes({{0.013, 0.2}, {0.1, 0.4}});
     return material;
 }
 
 Material blinn_phong() {
-    Material material;
-    material.model = Model::blinn_phong;
-    material.kd = material.ka = {0.3, 0.5, 0.8};
-    material.shininess = 40;
+    Material material = Material::of("blinn_phong");
+    material.set_vec3("kd", {0.3, 0.5, 0.8});
+    material.set_vec3("ka", {0.3, 0.5, 0.8});
+    material.set_number("shininess", 40);
     return material;
 }
 
+// highlight({0.2, 0.5, 0.9}) switched to the translucent model (keeps colour, d, w, m).
 Material translucent(double t_n, double t_p) {
-    Material material = highlight({0.2, 0.5, 0.9});
-    material.model = Model::translucent;
-    material.t_n = t_n, material.t_p = t_p;
+    Material material = with_model(highlight({0.2, 0.5, 0.9}), model_table().get("translucent"));
+    material.set_number("t_n", t_n), material.set_number("t_p", t_p);
     return material;
 }
 

@@ -66,7 +66,7 @@ TEST(ShapesLoader, ReadsEveryFieldExactly) {
     EXPECT_EQ(torus.major_radius, 1.0);
     EXPECT_EQ(torus.minor_radius, 0.2);
     EXPECT_EQ(torus.segments, 48);
-    EXPECT_EQ(torus.material.model, Model::metal);
+    EXPECT_EQ(torus.material.model_name(), "metal");
 }
 
 TEST(ShapesLoader, DefaultsForOptionalFields) {
@@ -178,7 +178,7 @@ TEST(ShapesLoader, SceneToJsonRoundTripsEveryShape) {
         EXPECT_EQ(a.major_radius, b.major_radius);
         EXPECT_EQ(a.minor_radius, b.minor_radius);
         EXPECT_EQ(a.segments, b.segments);
-        EXPECT_EQ(a.material.model, b.material.model);
+        EXPECT_EQ(a.material.model_name(), b.material.model_name());
         if (a.shape == Shape::cylinder) {
             EXPECT_EQ(a.radius, b.radius);
         }

@@ -5,6 +5,8 @@
 // the same float inputs. Checked: no NaN/Inf, the models' bounds, GPU within
 // 1e-3 * max(1, |ref|) of the reference, and, along fine one-parameter sweeps,
 // no jumps that the reference does not have.
+#include "material_support.h"
+#include "models/model_spec.h"
 #include "stress_harness.h"
 
 #include <glm/geometric.hpp>
@@ -16,9 +18,11 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,8 +38,21 @@ constexpr double kGpuSlack = 9.5367431640625e-07;  // 2^-20: rounding of float u
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kWidth = 1024;
 
-const Model kModels[] = {Model::highlight, Model::translucent, Model::metal, Model::metal_blinn,
-                         Model::metal_phong};
+// The paper's models (the classic ones: classic_stress_test.cpp).
+const char* const kModels[] = {"highlight", "translucent", "metal", "metal_blinn", "metal_phong"};
+constexpr int kModelCount = int(std::size(kModels));
+
+// The index of `material`'s model in kModels.
+int model_index(const Material& material) {
+    for (int i = 0; i < kModelCount; ++i)
+        if (material.model_name() == kModels[i]) return i;
+    throw std::logic_error("stress test: model " + material.model_name() + " is not one of the paper's");
+}
+
+bool is_metal(const Material& material) { return material.model().family == Family::metal; }
+
+// The material's lobes, or none for a model without lobes.
+LobeList lobes_of(const Material& material) { return material.has("lobes") ? material.lobes() : LobeList(); }
 
 // ---- input generation ---------------------------------------------------------
 
@@ -71,19 +88,22 @@ double t_p_value(Rng& rng) {  // [0, 10]
     return uniform(rng, 0.0, 10.0);
 }
 
-Material random_material(Rng& rng, Model model) {
-    Material m;
-    m.model = model;
-    m.color = dvec3(unit_value(rng), unit_value(rng), unit_value(rng));
-    m.d = unit_value(rng);
-    m.w = unit_value(rng);
-    m.m = exponent_value(rng);
-    m.t_n = unit_value(rng);
-    m.t_p = t_p_value(rng);
-    if (uses_lobes(model)) {
+// Every paper parameter is drawn for every model (so the random sequence does
+// not depend on the model); the material takes those its model has.
+Material random_material(Rng& rng, const char* model) {
+    Material m = Material::of(model);
+    m.set_vec3("color", dvec3(unit_value(rng), unit_value(rng), unit_value(rng)));
+    const double d = unit_value(rng), w = unit_value(rng), exponent = exponent_value(rng);
+    const double t_n = unit_value(rng), t_p = t_p_value(rng);
+    m.set_number("d", d);
+    if (m.has("w")) m.set_number("w", w), m.set_number("m", exponent);
+    if (m.has("t_n")) m.set_number("t_n", t_n), m.set_number("t_p", t_p);
+    if (is_metal(m)) {
         const int count = std::uniform_int_distribution<int>(1, 4)(rng);
+        std::vector<Lobe> lobes;
         for (int j = 0; j < count; ++j)
-            m.lobes.push_back({lobe_weight(rng), model == Model::metal ? beckmann_m(rng) : exponent_value(rng)});
+            lobes.push_back({lobe_weight(rng), m.model_name() == "metal" ? beckmann_m(rng) : exponent_value(rng)});
+        m.set_lobes(lobes);
     }
     return float_rounded(m);
 }
@@ -144,7 +164,8 @@ double special_angle(Rng& rng, double lobe_m) {
 
 // N, V, L (unit, double) for one input; the kinds of configuration the issue lists.
 void random_geometry(Rng& rng, const Material& material, dvec3& N, dvec3& V, dvec3& L) {
-    const double lobe_m = material.lobes.empty() ? 0.1 : material.lobes[0].m;
+    const LobeList lobes = lobes_of(material);
+    const double lobe_m = lobes.empty() ? 0.1 : lobes[0].m;
     const int kind = std::uniform_int_distribution<int>(0, 9)(rng);
     if (kind <= 1) {  // anything, including N.V < 0 and N.L < 0
         N = random_unit(rng), V = random_unit(rng), L = random_unit(rng);
@@ -187,7 +208,7 @@ void random_geometry(Rng& rng, const Material& material, dvec3& N, dvec3& V, dve
 
 StressInput random_input(Rng& rng) {
     StressInput in;
-    in.material = random_material(rng, pick(rng, std::vector<Model>(std::begin(kModels), std::end(kModels))));
+    in.material = random_material(rng, pick(rng, std::vector<const char*>(std::begin(kModels), std::end(kModels))));
     dvec3 N, V, L;
     random_geometry(rng, in.material, N, V, L);
     in.N = raw(rng, N), in.V = raw(rng, V), in.L = raw(rng, L);
@@ -258,13 +279,15 @@ dvec3 metal_upper_bound(const StressInput& in, const std::vector<Light>& lights,
         const dvec3 L = l == 0 ? glm::normalize(dvec3(in.L)) : lights[l].direction;
         const double VoH = glm::length(L + V) / 2.0 - slack;
         const double G_over_NoV = std::min(NoV > 0 ? 1.0 / NoV : HUGE_VAL, VoH > 0 ? 2.0 / VoH : HUGE_VAL);
-        double lobes = 0.0;
-        for (const Lobe& lobe : lobes_for(lights[l], in.material))
-            lobes += in.material.model == Model::metal ? times(lobe.w * beckmann_max(lobe.m), G_over_NoV) : lobe.w;
+        double lobes = 0.0;  // none for a model without lobes (the bound is then d C0)
+        for (const Lobe& lobe : is_metal(in.material) ? lobes_for(lights[l], in.material) : LobeList())
+            lobes += in.material.model_name() == "metal" ? times(lobe.w * beckmann_max(lobe.m), G_over_NoV) : lobe.w;
         for (int c = 0; c < 3; ++c) sum[c] += times(lights[l].intensity * lights[l].color[c], lobes);
     }
     dvec3 bound;
-    for (int c = 0; c < 3; ++c) bound[c] = times(in.material.d + sum[c], in.material.color[c]);
+    const double d = in.material.number("d");
+    const dvec3 color = in.material.vec3("color");
+    for (int c = 0; c < 3; ++c) bound[c] = times(d + sum[c], color[c]);
     return bound;
 }
 
@@ -275,12 +298,12 @@ std::string bound_violation(const StressInput& in, const dvec3& metal_bound, con
     std::ostringstream why;
     for (int c = 0; c < 3; ++c) {
         const double C = out.color[c], T = out.transmittance[c];
-        if (uses_lobes(in.material.model)) {
-            const double hi = metal_bound[c], lo = in.material.d * in.material.color[c];
+        if (is_metal(in.material)) {
+            const double hi = metal_bound[c], lo = in.material.number("d") * in.material.vec3("color")[c];
             if (below(C, lo) || above(C, hi)) why << "metal colour " << C << " outside [" << lo << ", " << hi << "] ";
         } else {
             if (below(C, 0.0) || above(C, 1.0)) why << "colour " << C << " outside [0, 1] ";
-            if (in.material.model == Model::translucent) {
+            if (is_translucent(in.material)) {
                 if (below(T, 0.0) || above(T, 1.0)) why << "transmittance " << T << " outside [0, 1] ";
                 if (above(C + T, 1.0)) why << "colour + transmittance " << C + T << " > 1 ";
             }
@@ -308,22 +331,18 @@ double scaled_error(const StressOutput& gpu, const StressOutput& ref) {
 
 std::string describe(const StressInput& in, const StressOutput& gpu, const StressOutput& ref) {
     char text[1400];
-    const Material& m = in.material;
     const dvec3 N = glm::normalize(dvec3(in.N)), V = glm::normalize(dvec3(in.V)), L = glm::normalize(dvec3(in.L));
     char cosines[200];
     std::snprintf(cosines, sizeof cosines, " [N.V=%.3g N.L=%.3g |L+V|=%.3g R.V-1=%.3g]", glm::dot(N, V), glm::dot(N, L),
                   glm::length(L + V), glm::dot(2.0 * glm::dot(N, L) * N - L, V) - 1.0);
-    std::string lobes;
-    for (const Lobe& lobe : m.lobes) lobes += "(" + std::to_string(lobe.w) + "," + std::to_string(lobe.m) + ")";
     std::snprintf(text, sizeof text,
-                  "%s N=(%.9g,%.9g,%.9g) V=(%.9g,%.9g,%.9g) L=(%.9g,%.9g,%.9g) C0=(%g,%g,%g) d=%g w=%g m=%g t_n=%g "
-                  "t_p=%g lobes=%s | gpu=(%.9g,%.9g,%.9g)/(%.9g,%.9g,%.9g) ref=(%.9g,%.9g,%.9g)/(%.9g,%.9g,%.9g)",
-                  to_string(m.model), in.N.x, in.N.y, in.N.z, in.V.x, in.V.y, in.V.z, in.L.x, in.L.y, in.L.z,
-                  m.color.r, m.color.g, m.color.b, m.d, m.w, m.m, m.t_n, m.t_p, lobes.c_str(), gpu.color.r,
+                  " N=(%.9g,%.9g,%.9g) V=(%.9g,%.9g,%.9g) L=(%.9g,%.9g,%.9g) | gpu=(%.9g,%.9g,%.9g)/(%.9g,%.9g,%.9g) "
+                  "ref=(%.9g,%.9g,%.9g)/(%.9g,%.9g,%.9g)",
+                  in.N.x, in.N.y, in.N.z, in.V.x, in.V.y, in.V.z, in.L.x, in.L.y, in.L.z, gpu.color.r,
                   gpu.color.g, gpu.color.b, gpu.transmittance.r, gpu.transmittance.g, gpu.transmittance.b,
                   ref.color.r, ref.color.g, ref.color.b, ref.transmittance.r, ref.transmittance.g,
                   ref.transmittance.b);
-    return text + std::string(cosines);
+    return test::describe(in.material) + text + std::string(cosines);
 }
 
 // ---- conditioning: what float rounding of the input alone can change ---------------
@@ -424,17 +443,19 @@ bool singular(const StressInput& in, const std::vector<Light>& lights) {
     const dvec3 N = glm::normalize(dvec3(in.N)), V = glm::normalize(dvec3(in.V));
     const double near = std::ldexp(1.0, -20);
     auto edge = [&](double x, double e) { return e > 0.0 && e < 1.0 && std::abs(x) < near; };
-    if (m.model == Model::translucent && edge(1.0 - glm::dot(N, V), m.t_p)) return true;
+    if (is_translucent(m) && edge(1.0 - glm::dot(N, V), m.number("t_p"))) return true;
     for (std::size_t l = 0; l < lights.size(); ++l) {
         const dvec3 L = l == 0 ? glm::normalize(dvec3(in.L)) : lights[l].direction;
         const double lv = glm::length(L + V);
-        if (uses_lobes(m.model) && lv < std::ldexp(1.0, -12)) return true;
+        if (is_metal(m) && lv < std::ldexp(1.0, -12)) return true;
         const dvec3 H = lv > 0 ? (L + V) / lv : N;
         const double RoV = glm::dot(2.0 * glm::dot(N, L) * N - L, V);
-        if ((m.model == Model::highlight || m.model == Model::translucent) && edge(RoV, m.m)) return true;
+        if ((m.model_name() == "highlight" || m.model_name() == "translucent") && edge(RoV, m.number("m")))
+            return true;
+        if (!is_metal(m)) continue;  // only the metals have lobes
         for (const Lobe& lobe : lobes_for(lights[l], m)) {
-            if (m.model == Model::metal_phong && edge(RoV, lobe.m)) return true;
-            if (m.model == Model::metal_blinn && edge(glm::dot(N, H), lobe.m)) return true;
+            if (m.model_name() == "metal_phong" && edge(RoV, lobe.m)) return true;
+            if (m.model_name() == "metal_blinn" && edge(glm::dot(N, H), lobe.m)) return true;
         }
     }
     return false;
@@ -493,13 +514,13 @@ TEST(StressTest, MillionRandomAndExtremeInputsAreFiniteBoundedAndMatchTheReferen
 
         for (std::size_t i = 0; i < batch.inputs.size(); ++i) {
             const StressInput& in = batch.inputs[i];
-            const int model = int(in.material.model);
+            const int model = model_index(in.material);
             ++evaluations, ++per_model[model];
             if (!all_finite(gpu[i])) ++nonfinite_gpu, note("GPU non-finite: " + describe(in, gpu[i], ref[i]));
             if (!all_finite(ref[i])) ++nonfinite_ref, note("reference non-finite: " + describe(in, gpu[i], ref[i]));
             const double error = scaled_error(gpu[i], ref[i]);
             const dvec3 plain_bound =
-                uses_lobes(in.material.model) ? metal_upper_bound(in, lights, kReferenceSlack) : dvec3(0.0);
+                is_metal(in.material) ? metal_upper_bound(in, lights, kReferenceSlack) : dvec3(0.0);
             const bool plain_ok = error <= kTolerance && bound_violation(in, plain_bound, gpu[i]).empty();
             if (!bound_violation(in, plain_bound, ref[i]).empty())
                 ++out_of_bounds, note("reference out of bounds: " + bound_violation(in, plain_bound, ref[i]) +
@@ -527,13 +548,13 @@ TEST(StressTest, MillionRandomAndExtremeInputsAreFiniteBoundedAndMatchTheReferen
     }
     std::printf("stress: %ld evaluations on %s (GPU %.2f s, reference %.2f s)\n", evaluations,
                 harness().renderer_string().c_str(), gpu_seconds, ref_seconds);
-    for (Model model : kModels)
+    for (int model = 0; model < kModelCount; ++model)
         std::printf("stress: %-12s %7ld inputs, worst |gpu - ref| / max(1, |ref|) = %.3g (%.3g where the plain "
                     "check passes, %ld of them above 1e-5); %ld past the plain check, %ld of them not determined at float "
                     "precision\n",
-                    to_string(model), per_model[int(model)], worst[int(model)], worst_plain[int(model)],
-                    above_1e5[int(model)],
-                    ill_conditioned[int(model)], undetermined[int(model)]);
+                    kModels[model], per_model[model], worst[model], worst_plain[model],
+                    above_1e5[model],
+                    ill_conditioned[model], undetermined[model]);
     for (const std::string& example : examples) ADD_FAILURE() << example;
     EXPECT_GE(evaluations, 1000000);
     EXPECT_EQ(nonfinite_gpu, 0);
@@ -551,20 +572,20 @@ struct Sweep {
     std::function<void(double s, dvec3& N, dvec3& V, dvec3& L)> geometry;
 };
 
-Material lobed(Model model, std::vector<Lobe> lobes, double d = 0.05) {
-    Material m;
-    m.model = model;
-    m.color = dvec3(1.0, 0.75, 0.5);
-    m.d = d;
-    m.lobes = std::move(lobes);
+Material lobed(const char* model, std::vector<Lobe> lobes, double d = 0.05) {
+    Material m = Material::of(model);
+    m.set_vec3("color", dvec3(1.0, 0.75, 0.5));
+    m.set_number("d", d);
+    m.set_lobes(lobes);
     return float_rounded(m);
 }
 
-Material shiny(Model model, double exponent, double t_p = 1.0) {
-    Material m;
-    m.model = model;
-    m.color = dvec3(0.8, 0.25, 0.125);
-    m.d = 0.5, m.w = 1.0, m.m = exponent, m.t_n = 0.75, m.t_p = t_p;
+// highlight or translucent (t_n and t_p: translucent only).
+Material shiny(const char* model, double exponent, double t_p = 1.0) {
+    Material m = Material::of(model);
+    m.set_vec3("color", dvec3(0.8, 0.25, 0.125));
+    m.set_number("d", 0.5), m.set_number("w", 1.0), m.set_number("m", exponent);
+    if (m.has("t_n")) m.set_number("t_n", 0.75), m.set_number("t_p", t_p);
     return float_rounded(m);
 }
 
@@ -596,40 +617,40 @@ void view_at(double NoV, dvec3 L, dvec3& N, dvec3& V, dvec3& Lout) {
 }
 
 std::vector<Sweep> sweeps() {
-    const Material paper_metal = lobed(Model::metal, {{0.013, 0.2}, {0.1, 0.4}});
+    const Material paper_metal = lobed("metal", {{0.013, 0.2}, {0.1, 0.4}});
     return {
         {"metal N.V 0..1", paper_metal, [](double s, dvec3& N, dvec3& V, dvec3& L) { view_at(s, {-0.6, 0.2, 0.77}, N, V, L); }},
-        {"metal N.V 0..0.01 (G/N.V)", lobed(Model::metal, {{1.0, 0.5}}),
+        {"metal N.V 0..0.01 (G/N.V)", lobed("metal", {{1.0, 0.5}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { view_at(0.01 * s, {-0.6, 0.0, 0.8}, N, V, L); }},
-        {"metal m=0.001 N.H angle 0..5m", lobed(Model::metal, {{1e-6, 0.001}}),
+        {"metal m=0.001 N.H angle 0..5m", lobed("metal", {{1e-6, 0.001}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(0.005 * s, 0.4, N, V, L); }},
-        {"metal m=0.001 N.H angle 2m..2.2m (fine)", lobed(Model::metal, {{1e-6, 0.001}}),
+        {"metal m=0.001 N.H angle 2m..2.2m (fine)", lobed("metal", {{1e-6, 0.001}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(0.002 + 0.0002 * s, 0.4, N, V, L); }},
-        {"metal m=2 grazing N.H", lobed(Model::metal, {{1.0, 2.0}, {0.5, 0.7}}),
+        {"metal m=2 grazing N.H", lobed("metal", {{1.0, 2.0}, {0.5, 0.7}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(kPi / 2 - 0.3 * (1 - s), 0.3, N, V, L); }},
-        {"metal m=0.3 grazing N.H", lobed(Model::metal, {{1.0, 0.3}}),
+        {"metal m=0.3 grazing N.H", lobed("metal", {{1.0, 0.3}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(kPi / 2 - 0.3 * (1 - s), 0.3, N, V, L); }},
-        {"metal_blinn n=10000 N.H angle 0..0.05", lobed(Model::metal_blinn, {{1.0, 10000.0}}),
+        {"metal_blinn n=10000 N.H angle 0..0.05", lobed("metal_blinn", {{1.0, 10000.0}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(0.05 * s, 0.4, N, V, L); }},
-        {"metal_blinn n=10000 N.H angle 0.009..0.0095 (fine)", lobed(Model::metal_blinn, {{1.0, 10000.0}}),
+        {"metal_blinn n=10000 N.H angle 0.009..0.0095 (fine)", lobed("metal_blinn", {{1.0, 10000.0}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_half_vector(0.009 + 0.0005 * s, 0.4, N, V, L); }},
-        {"metal_phong n=10000 R.V angle 0..0.03", lobed(Model::metal_phong, {{1.0, 10000.0}}),
+        {"metal_phong n=10000 R.V angle 0..0.03", lobed("metal_phong", {{1.0, 10000.0}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_mirror(0.03 * s, N, V, L); }},
-        {"highlight m=10000 R.V angle 0..0.03", shiny(Model::highlight, 10000.0),
+        {"highlight m=10000 R.V angle 0..0.03", shiny("highlight", 10000.0),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_mirror(0.03 * s, N, V, L); }},
-        {"highlight m=10000 R.V angle 0.009..0.0095 (fine)", shiny(Model::highlight, 10000.0),
+        {"highlight m=10000 R.V angle 0.009..0.0095 (fine)", shiny("highlight", 10000.0),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_mirror(0.009 + 0.0005 * s, N, V, L); }},
-        {"highlight m=0.5 R.V angle 0..pi/2", shiny(Model::highlight, 0.5),
+        {"highlight m=0.5 R.V angle 0..pi/2", shiny("highlight", 0.5),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { around_mirror(0.3 + 0.9 * s, N, V, L); }},
-        {"highlight m=1e-6 R.V 1e-8..1e-6", shiny(Model::highlight, 1e-6),
+        {"highlight m=1e-6 R.V 1e-8..1e-6", shiny("highlight", 1e-6),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { nearly_perpendicular_to_mirror(1e-8 * std::pow(100.0, s), N, V, L); }},
-        {"metal_phong n=0.3 R.V 1e-8..1e-6", lobed(Model::metal_phong, {{100.0, 0.3}}),
+        {"metal_phong n=0.3 R.V 1e-8..1e-6", lobed("metal_phong", {{100.0, 0.3}}),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { nearly_perpendicular_to_mirror(1e-8 * std::pow(100.0, s), N, V, L); }},
-        {"translucent t_p=10 N.V 0..1", shiny(Model::translucent, 20.0, 10.0),
+        {"translucent t_p=10 N.V 0..1", shiny("translucent", 20.0, 10.0),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { view_at(s, {-0.6, 0.2, 0.77}, N, V, L); }},
-        {"translucent t_p=1e-6 N.V 0..1", shiny(Model::translucent, 20.0, 1e-6),
+        {"translucent t_p=1e-6 N.V 0..1", shiny("translucent", 20.0, 1e-6),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { view_at(s, {-0.6, 0.2, 0.77}, N, V, L); }},
-        {"translucent t_p=0.5 N.V 0.99..1 (fine)", shiny(Model::translucent, 20.0, 0.5),
+        {"translucent t_p=0.5 N.V 0.99..1 (fine)", shiny("translucent", 20.0, 0.5),
          [](double s, dvec3& N, dvec3& V, dvec3& L) { view_at(0.99 + 0.01 * s, {-0.6, 0.2, 0.77}, N, V, L); }},
     };
 }

@@ -1,6 +1,8 @@
 #include "bench.h"
+#include "models/model_table.h"
 
 #include "mesh_renderer.h"
+#include "plot.h"
 #include "process_timing.h"
 #include "results.h"
 
@@ -53,14 +55,16 @@ Scene resized(Scene scene, int width, int height) {
 // peak and the same width near the peak: exp(-tan^2 a / m^2) ~ cos^n a with
 // n = 2 / m^2 for N.H (eq. 15); R.V turns twice as fast (the paper's remark),
 // so n = 1 / (2 m^2) for eq. 16. Weights w / m^2 keep the peak delta(0) = 1/m^2.
-Scene cheap_metal(Scene scene, Model model) {
+Scene cheap_metal(Scene scene, const std::string& model) {
     for (Object& object : scene.objects) {
-        if (object.material.model != Model::metal) continue;
-        object.material.model = model;
-        for (Lobe& lobe : object.material.lobes) {
+        if (object.material.model_name() != "metal") continue;
+        std::vector<Lobe> lobes = object.material.lobes().to_vector();
+        for (Lobe& lobe : lobes) {
             const double m2 = lobe.m * lobe.m;
-            lobe = Lobe{lobe.w / m2, model == Model::metal_blinn ? 2.0 / m2 : 1.0 / (2.0 * m2)};
+            lobe = Lobe{lobe.w / m2, model == "metal_blinn" ? 2.0 / m2 : 1.0 / (2.0 * m2)};
         }
+        object.material = with_model(object.material, model_table().get(model));
+        object.material.set_lobes(lobes);
     }
     for (Light& light : scene.lights) light.lobes.clear();  // Fig. 10 has none; keep the comparison plain
     return scene;
@@ -157,7 +161,9 @@ private:
         std::vector<std::string> scene_files;
         for (int i = 0; i < plan_.batch_scenes; ++i) {
             Scene s = figures_[i % figures_.size()].scene;
-            for (Object& o : s.objects) o.material.color = glm::clamp(o.material.color * (0.8 + 0.001 * i), 0.0, 1.0);
+            for (Object& o : s.objects)
+                if (o.material.has("color"))
+                    o.material.set_vec3("color", glm::clamp(o.material.vec3("color") * (0.8 + 0.001 * i), 0.0, 1.0));
             const std::string name = "scene" + std::to_string(i);
             write_text(tmp.file(name + ".json"), scene_to_json(s).dump(2));
             manifest.push_back({{"scene", name + ".json"}, {"out", name + "_batch.png"}});
@@ -286,10 +292,10 @@ private:
                                              "eq.12 (Fig.10)", metal_, ShaderMode::specialized, nullptr, against));
         results_.ways.push_back(renderer_way(
             "cheap metal", "eq. 15 metal_blinn, (N.H)^n, n = 2/m^2, w/m^2", "eq.15 blinn", metal_,
-            ShaderMode::specialized, [](const Scene& s) { return cheap_metal(s, Model::metal_blinn); }, against));
+            ShaderMode::specialized, [](const Scene& s) { return cheap_metal(s, "metal_blinn"); }, against));
         results_.ways.push_back(renderer_way(
             "cheap metal", "eq. 16 metal_phong, (R.V)^n, n = 1/(2m^2), w/m^2", "eq.16 phong", metal_,
-            ShaderMode::specialized, [](const Scene& s) { return cheap_metal(s, Model::metal_phong); }, against));
+            ShaderMode::specialized, [](const Scene& s) { return cheap_metal(s, "metal_phong"); }, against));
     }
 
     void shader_ways() {
@@ -370,15 +376,32 @@ std::string find_scenes_dir(const std::string& requested) {
     throw std::runtime_error("bench: cannot find the scenes/ folder (fig10.json); give --scenes DIR");
 }
 
+namespace {
+
+const char* const kPlotTitle = "Run time against error, per way of rendering (512 x 320)";
+
+// bench.gp and bench.png; without gnuplot, one line on how to get the picture.
+void plot(const std::string& out, const std::vector<PlotPoint>& points) {
+    if (write_plot(out, points, kPlotTitle) == PlotOutcome::no_gnuplot)
+        std::cerr << "m3055: bench: no bench.png, gnuplot is not installed: apt-get install gnuplot-nox "
+                     "(or scripts/setup), then run `gnuplot bench.gp` in " << out << "\n";
+}
+
+}  // namespace
+
 void run_bench(const BenchOptions& options) {
+    if (options.replot) {
+        plot(options.out, read_plot_points((fs::path(options.out) / "bench.csv").string()));
+        return;
+    }
     Bench bench(options, make_plan(options.quick));
     const BenchResults results = bench.run();
     fs::create_directories(options.out);
     const std::string md = markdown_report(results), csv = csv_report(results);
     write_file_atomic((fs::path(options.out) / "bench.md").string(), md.data(), md.size());
     write_file_atomic((fs::path(options.out) / "bench.csv").string(), csv.data(), csv.size());
-    write_plot((fs::path(options.out) / "bench.png").string(), results);
     std::cout << md;
+    plot(options.out, plot_points(results));
 }
 
 }  // namespace m3055::bench

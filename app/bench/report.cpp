@@ -107,7 +107,7 @@ std::string markdown_report(const BenchResults& r) {
 std::string csv_report(const BenchResults& r) {
     std::ostringstream csv;
     csv << "section,group,name,scenes,small_median_ms,small_min_ms,small_max_ms,large_median_ms,large_min_ms,"
-           "large_max_ms,max_abs_diff,mean_abs_diff,same_level_share,error_against\n";
+           "large_max_ms,max_abs_diff,mean_abs_diff,same_level_share,error_against,label\n";
     auto times = [&](const TimeStats& t) {
         return t.valid() ? number(t.median_ms) + "," + number(t.min_ms) + "," + number(t.max_ms) : std::string(",,");
     };
@@ -118,7 +118,7 @@ std::string csv_report(const BenchResults& r) {
             << (has_error ? number(w.error.max_abs) + "," + number(w.error.mean_abs) + "," +
                                 number(w.exact_reference ? 1.0 : w.error.same_level_share)
                           : std::string(",,"))
-            << "," << field(w.error_against) << "\n";
+            << "," << field(w.error_against) << "," << field(w.label) << "\n";
     }
     for (const auto& s : r.specialization) {
         const std::pair<const char*, const TimeStats*> rows[] = {{"first frame specialized", &s.first_specialized},
@@ -126,16 +126,16 @@ std::string csv_report(const BenchResults& r) {
                                                                  {"steady specialized", &s.steady_specialized},
                                                                  {"steady general", &s.steady_general}};
         for (const auto& [name, t] : rows)
-            csv << "specialization,shaders," << name << "," << field(s.scene) << "," << times(*t) << ",,,,,,,\n";
+            csv << "specialization,shaders," << name << "," << field(s.scene) << "," << times(*t) << ",,,,,,,,\n";
     }
     const ProcessResult& p = r.process;
-    csv << "process,process,render cold shader cache,spec_example.json," << times(p.cold) << ",,,,,,,\n"
-        << "process,process,render warm shader cache,spec_example.json," << times(p.warm) << ",,,,,,,\n"
-        << "process,batch,one batch process," << p.batch_scenes << " scenes," << number(p.batch_ms) << ",,,,,,,,,\n"
+    csv << "process,process,render cold shader cache,spec_example.json," << times(p.cold) << ",,,,,,,,\n"
+        << "process,process,render warm shader cache,spec_example.json," << times(p.warm) << ",,,,,,,,\n"
+        << "process,batch,one batch process," << p.batch_scenes << " scenes," << number(p.batch_ms) << ",,,,,,,,,,\n"
         << "process,batch,separate render processes," << p.batch_scenes << " scenes," << number(p.separate_ms)
-        << ",,,,,,,,,\n"
+        << ",,,,,,,,,,\n"
         << "process,batch,speed-up separate/batch," << p.batch_scenes << " scenes," << number(p.ratio())
-        << ",,,,,,,,,\n";
+        << ",,,,,,,,,,\n";
     return csv.str();
 }
 

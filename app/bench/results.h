@@ -1,4 +1,4 @@
-// What `m3055 bench` measured, and the writers of bench.md, bench.csv, bench.png.
+// What `m3055 bench` measured, and the writers of bench.md and bench.csv (the plot: plot.h).
 #pragma once
 
 #include "error_stats.h"
@@ -13,7 +13,7 @@ namespace m3055::bench {
 struct WayResult {
     std::string group;          // "geometry", "cheap metal", "shaders", "reference"
     std::string way;            // full name, for the table
-    std::string label;          // short name, for the plot
+    std::string label;          // short name, for the plot (and the csv's last column)
     std::string scenes;         // the scene set the times and errors are over
     std::string error_against;  // what the error is measured against
     TimeStats small, large;     // 512 x 320 and 1920 x 1080 frame times
@@ -48,7 +48,5 @@ struct BenchResults {
 
 std::string markdown_report(const BenchResults& results);
 std::string csv_report(const BenchResults& results);
-// Time at 512 x 320 (log) against mean |diff| (log), one labelled point per way.
-void write_plot(const std::string& path, const BenchResults& results);
 
 }  // namespace m3055::bench

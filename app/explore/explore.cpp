@@ -1,26 +1,28 @@
-// The explorer's frame loop, top to bottom in the order of Dear ImGui's
-// example_glfw_opengl3/main.cpp: window and context, GL table, ImGui, then
-// a loop that sleeps until something happens (render on demand).
+// The explorer, top to bottom in the order of Dear ImGui's
+// example_glfw_opengl3/main.cpp: the starting scene, a window with its GL
+// table, ImGui on it, then a loop that sleeps until something happens and then
+// draws one frame (render on demand: left alone it draws nothing).
 #include "explore/explore.h"
 
+#include "explore/display_view.h"
+#include "explore/imgui_layer.h"
 #include "explore/keys.h"
 #include "explore/panels.h"
 #include "explore/script.h"
 #include "explore/state.h"
+#include "explore/window.h"
 #include "gl/gl_api.h"
 #include "image/image.h"
 #include "renderer.h"
 #include "scene/load.h"
+#include "scene/presets.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -33,123 +35,8 @@ using namespace explore;
 
 namespace {
 
-// ---- Input events (GLFW callbacks) --------------------------------------------
-// The callbacks only note that something happened; the frame loop acts on it.
-// After any input ImGui needs a few frames to settle (hover, press, release).
-constexpr int kFramesAfterInput = 3;
-
-struct WindowEvents {
-    int frames_owed = kFramesAfterInput;  // draw the first frames unconditionally
-    std::vector<std::string> dropped;     // files dropped onto the window
-    struct Key {
-        int key, mods;
-    };
-    std::vector<Key> keys;
-};
-
-WindowEvents& events_of(GLFWwindow* window) {
-    return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
-}
-void wake(GLFWwindow* window) { events_of(window).frames_owed = kFramesAfterInput; }
-
-void install_event_callbacks(GLFWwindow* window) {
-    // Installed before ImGui's, which chain to them.
-    glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-        if (action == GLFW_PRESS) events_of(w).keys.push_back({key, mods});
-        wake(w);
-    });
-    glfwSetCharCallback(window, [](GLFWwindow* w, unsigned) { wake(w); });
-    glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { wake(w); });
-    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { wake(w); });
-    glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { wake(w); });
-    glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { wake(w); });
-    glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { wake(w); });
-    glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { wake(w); });
-    glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { wake(w); });
-    glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-        for (int i = 0; i < count; ++i) events_of(w).dropped.emplace_back(paths[i]);
-        wake(w);
-    });
-}
-
-// ---- Layout -----------------------------------------------------------------------
-struct Rect {
-    float x = 0, y = 0, w = 0, h = 0;
-};
-struct Layout {
-    Rect side, bottom, display;
-};
-constexpr float kSideWidth = 440.0f;
-constexpr float kBottomHeight = 270.0f;
-constexpr float kCompareGap = 8.0f;  // between A and B
-
-Layout layout_for(float width, float height, bool panels) {
-    Layout l;
-    if (!panels) {
-        l.display = {0, 0, width, height};
-        return l;
-    }
-    l.side = {0, 0, std::min(kSideWidth, width), height};
-    const float right = std::max(0.0f, width - l.side.w);
-    l.bottom = {l.side.w, std::max(0.0f, height - kBottomHeight), right, std::min(kBottomHeight, height)};
-    l.display = {l.side.w, 0, right, l.bottom.y};
-    return l;
-}
-
-// The largest whole-pixel magnification of a w x h image that fits `area`
-// (framebuffer pixels); 0 when even 1:1 does not fit.
-int whole_pixel_scale(int w, int h, float area_w, float area_h) {
-    return static_cast<int>(std::min(std::floor(area_w / w), std::floor(area_h / h)));
-}
-
-// Draws the display texture(s) centred in `area`, magnified by whole pixels,
-// nearest-neighbour (the renderer's texture is GL_NEAREST). Returns the scale.
-int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect& area,
-                 float fb_scale) {
-    const int n = static_cast<int>(textures.size());
-    const float gap = n > 1 ? kCompareGap : 0.0f;
-    const float area_w = (area.w - gap * (n - 1)) * fb_scale / n, area_h = area.h * fb_scale;
-    const int scale = whole_pixel_scale(w, h, area_w, area_h);
-    // Too big even at 1:1: shrink to fit (no longer whole pixels; the panel says so).
-    const float shown = scale >= 1 ? static_cast<float>(scale)
-                                   : std::min(area_w / w, area_h / h);
-    const float iw = w * shown / fb_scale, ih = h * shown / fb_scale;  // ImGui units
-    const float total = iw * n + gap * (n - 1);
-    // Snap the corner to a framebuffer pixel so every dot covers whole pixels.
-    float x = std::floor((area.x + (area.w - total) * 0.5f) * fb_scale) / fb_scale;
-    const float y = std::floor((area.y + (area.h - ih) * 0.5f) * fb_scale) / fb_scale;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const char* labels[2] = {"A: the scene (saved, screenshot)", "B: selected object in material B"};
-    for (int i = 0; i < n; ++i) {
-        // GL textures store row 0 at the bottom: flip v.
-        draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(textures[i])),
-                       ImVec2(x, y), ImVec2(x + iw, y + ih), ImVec2(0, 1), ImVec2(1, 0));
-        // A thin frame shows the display's extent even where the scene is black.
-        draw->AddRect(ImVec2(x - 1, y - 1), ImVec2(x + iw + 1, y + ih + 1), IM_COL32(90, 90, 100, 255));
-        // Labels above the pictures, never on them: the display stays exactly the screenshot.
-        if (n > 1) draw->AddText(ImVec2(x, y - ImGui::GetTextLineHeight() - 4), IM_COL32(255, 255, 255, 220), labels[i]);
-        x += iw + gap;
-    }
-    return std::max(scale, 0);
-}
-
-// ---- Reading back ----------------------------------------------------------------
-// The whole window as the user sees it (the back buffer, after ImGui has drawn).
-Rgb8Image read_window(const GlApi& gl, int width, int height) {
-    Rgb8Image image;
-    image.width = width;
-    image.height = height;
-    image.pixels.resize(static_cast<std::size_t>(width) * height * 3);
-    std::vector<std::uint8_t> rows(image.pixels.size());
-    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    gl.ReadBuffer(GL_BACK);
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl.ReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
-    const std::size_t stride = static_cast<std::size_t>(width) * 3;
-    for (int y = 0; y < height; ++y) {  // GL rows are bottom to top, PNG top to bottom
-        std::copy_n(rows.data() + (height - 1 - y) * stride, stride, image.pixels.data() + y * stride);
-    }
-    return image;
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::string json_beside(const std::string& png_path) {
@@ -185,25 +72,222 @@ void write_stats(const std::string& path, long frames, long renders, const Scrip
     write_file_atomic(path, text.data(), text.size());
 }
 
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+// The starting scene: --scene, or the spec example. False (message printed) on a bad file.
+bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
+    if (options.scene_path.empty()) {
+        set_scene(state, default_scene(), "spec example");
+        return true;
+    }
+    try {
+        set_scene(state, load_scene_file(options.scene_path), options.scene_path);
+        return true;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return false;
+    }
 }
+
+// One running explorer: the state, the script, the renderers, and the frame.
+class Explorer {
+public:
+    Explorer(const ExploreOptions& options, ExplorerState& state, std::optional<Script>& script, Window& window,
+             ImGuiLayer& imgui, const GlApi& gl, FrameInfo& info)
+        : options_(options), state_(state), script_(script), window_(window), imgui_(imgui), gl_(gl), info_(info) {
+        try {
+            renderer_a_ = std::make_unique<Renderer>(gl);
+            renderer_b_ = std::make_unique<Renderer>(gl);
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+        // The free area before the first frame, for a script's `display modern`.
+        const Layout start = layout_for(float(options.window_width), float(options.window_height), true);
+        info_.free_width = int(start.display.w);
+        info_.free_height = int(start.display.h);
+    }
+
+    ~Explorer() {
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+        renderer_b_.reset();  // GL objects go while the context is still current
+        renderer_a_.reset();
+    }
+
+    // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
+    bool done() const {
+        if (window_.should_close() || state_.quit) return true;
+        return script_ && script_->finished() && options_.exit_after_script && pending_capture_.empty() &&
+               (options_.capture_window.empty() || window_captured_) && !frame_needed();
+    }
+
+    // Something to draw: input to settle, a changed scene, a screenshot or a capture.
+    bool frame_needed() const {
+        return window_.events().frames_owed > 0 || state_.scene_changed || state_.screenshot_requested ||
+               !pending_capture_.empty();
+    }
+
+    // Sleeps until there is work (an event, or a script's idle time ends), then
+    // runs the script's next command.
+    void wait_for_work() {
+        const bool script_busy = script_ && !script_->finished() && !script_->idling();
+        if (frame_needed() || script_busy) window_.poll();
+        else if (script_ && script_->idling()) window_.wait(std::max(0.0, script_->idle_until() - window_.time()));
+        else window_.wait(-1.0);
+        step_script();
+    }
+
+    void draw_frame() {
+        const auto frame_start = std::chrono::steady_clock::now();
+        for (const std::string& path : window_.events().dropped) load_scene(state_, path);
+        window_.events().dropped.clear();
+        imgui_.new_frame();
+        apply_keys();
+        const ImGuiIO& io = ImGui::GetIO();
+        const Layout layout = layout_for(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels);
+        const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+        note_free_area(layout, fb_scale);
+        apply_mouse();
+        if (state_.show_panels) {
+            draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
+        }
+        render_if_changed();
+        if (state_.screenshot_requested && renderer_a_) {
+            state_.screenshot_requested = false;
+            take_screenshot(state_, *renderer_a_);
+        }
+        draw_displays(layout, fb_scale);
+        window_.set_title("M3055 material explorer - " + state_.scene_name);
+        present();
+        info_.frame_ms = milliseconds_since(frame_start);
+        schedule_window_capture();
+    }
+
+    // Writes --stats; the process's exit status (1 after a failed script command).
+    int finish() {
+        int status = script_ && script_->errors() > 0 ? 1 : 0;
+        if (options_.stats_path.empty()) return status;
+        try {
+            write_stats(options_.stats_path, info_.frames, info_.renders, script_ ? &*script_ : nullptr);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            status = 1;
+        }
+        return status;
+    }
+
+private:
+    void step_script() {
+        if (!script_ || script_->finished()) return;
+        const bool was_idle = script_->idling();
+        script_->step(state_, window_.time(), info_.frames, info_.free_width, info_.free_height);
+        WindowEvents& events = window_.events();
+        if (!script_->idling() && !was_idle) events.frames_owed = std::max(events.frames_owed, 1);
+        if (!script_->capture_path.empty()) {
+            pending_capture_ = script_->capture_path;
+            script_->capture_path.clear();
+        }
+    }
+
+    // Shortcuts, unless the user is typing into a text field.
+    void apply_keys() {
+        for (const WindowEvents::Key& k : window_.events().keys)
+            if (!ImGui::GetIO().WantTextInput) handle_shortcut(state_, k.key, k.mods);
+        window_.events().keys.clear();
+    }
+
+    // Room for one display (two in compare, with the gap between them), for `display modern`.
+    void note_free_area(const Layout& layout, float fb_scale) {
+        const int displays = state_.compare ? 2 : 1;
+        info_.free_width = int((layout.display.w - (state_.compare ? kCompareGap : 0.0f)) * fb_scale) / displays;
+        info_.free_height = int(layout.display.h * fb_scale);
+    }
+
+    // Orbit and zoom with the mouse over the display (not over a panel).
+    void apply_mouse() {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (io.WantCaptureMouse) return;
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+            orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+        if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
+    }
+
+    // The scene (and B in compare) is rendered only when something changed.
+    void render_if_changed() {
+        if (!state_.scene_changed || !renderer_a_) return;
+        state_.scene_changed = false;
+        const auto start = std::chrono::steady_clock::now();
+        try {
+            renderer_a_->render(state_.scene);
+            if (state_.compare) renderer_b_->render(compare_scene(state_));
+            gl_.Finish();
+            ++info_.renders;
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+        info_.render_ms = milliseconds_since(start);
+    }
+
+    void draw_displays(const Layout& layout, float fb_scale) {
+        if (renderer_a_) {
+            std::vector<unsigned> textures = {renderer_a_->display_texture()};
+            if (state_.compare) textures.push_back(renderer_b_->display_texture());
+            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale);
+        }
+        if (!state_.show_panels && !state_.error.empty())
+            ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), state_.error.c_str());
+    }
+
+    // Clear the window, draw ImGui (the display is in its background list),
+    // write a pending capture of the whole window, show it.
+    void present() {
+        int width = 0, height = 0;
+        window_.framebuffer_size(&width, &height);
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);  // the renderer leaves its own bound
+        gl_.Viewport(0, 0, width, height);
+        gl_.ClearColor(0.11f, 0.11f, 0.13f, 1.0f);
+        gl_.Clear(GL_COLOR_BUFFER_BIT);
+        imgui_.render();
+        if (!pending_capture_.empty()) {
+            try {
+                write_png(pending_capture_, read_window(gl_, width, height));
+            } catch (const std::exception& e) {
+                state_.error = e.what();
+            }
+            pending_capture_.clear();
+        }
+        window_.swap();
+        ++info_.frames;
+        window_.events().frames_owed = std::max(0, window_.events().frames_owed - 1);
+    }
+
+    // --capture-window: once the script is done and the window has settled,
+    // draw one more frame and capture it.
+    void schedule_window_capture() {
+        const bool script_done = !script_ || script_->finished();
+        const bool settled = window_.events().frames_owed == 0 && !state_.scene_changed;
+        if (!script_done || !settled || options_.capture_window.empty() || window_captured_) return;
+        pending_capture_ = options_.capture_window;
+        window_captured_ = true;
+        window_.events().frames_owed = 1;
+    }
+
+    const ExploreOptions& options_;
+    ExplorerState& state_;
+    std::optional<Script>& script_;
+    Window& window_;
+    ImGuiLayer& imgui_;
+    const GlApi& gl_;
+    FrameInfo& info_;
+    std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
+    std::string pending_capture_;  // write the window here after the next frame is drawn
+    bool window_captured_ = false; // --capture-window is taken once
+};
 
 }  // namespace
 
 int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
-    if (options.scene_path.empty()) {
-        set_scene(state, default_scene(), "SPEC example");
-    } else {
-        try {
-            set_scene(state, load_scene_file(options.scene_path), options.scene_path);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "%s\n", e.what());
-            return 1;
-        }
-    }
+    if (!load_start_scene(state, options)) return 1;
     std::optional<Script> script;
     if (!options.script_path.empty()) {
         try {
@@ -214,35 +298,17 @@ int run_explorer(const ExploreOptions& options) {
         }
     }
 
-    // ---- Window with an OpenGL 3.3 core context ----
-    glfwSetErrorCallback([](int, const char* text) { std::fprintf(stderr, "GLFW: %s\n", text); });
-    if (!glfwInit()) {
-        std::fprintf(stderr, "m3055 explore: cannot open a window (no display?); "
-                             "use `m3055 render` for headless images\n");
+    // ---- A window with an OpenGL 3.3 core context, and the GL table from it ----
+    Window window(options.window_width, options.window_height, "M3055 material explorer");
+    if (!window.ok()) {
+        std::fprintf(stderr, "%s\n", window.error().c_str());
         return 1;
     }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(options.window_width, options.window_height,
-                                          "M3055 material explorer", nullptr, nullptr);
-    if (!window) {
-        std::fprintf(stderr, "m3055 explore: cannot create a window with an OpenGL 3.3 core context\n");
-        glfwTerminate();
-        return 1;
-    }
-    glfwMakeContextCurrent(window);
-    glfwSwapInterval(1);  // vsync: a drag redraws at most once per refresh
-
-    // ---- The GL table, from this window's context ----
     GlApi gl;
     std::string missing;
     if (!load_gl_api(gl, [](const char* name, void*) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); },
                      nullptr, &missing)) {
         std::fprintf(stderr, "m3055 explore: the window's OpenGL lacks %s\n", missing.c_str());
-        glfwDestroyWindow(window);
-        glfwTerminate();
         return 1;
     }
     FrameInfo info;
@@ -250,198 +316,16 @@ int run_explorer(const ExploreOptions& options) {
     info.gl_version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
     info.window_system = glfwGetVersionString();
 
-    // ---- Input callbacks, then Dear ImGui (its callbacks chain to ours) ----
-    WindowEvents events;
-    glfwSetWindowUserPointer(window, &events);
-    install_event_callbacks(window);
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // fixed layout: nothing to remember between runs
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 0.0f;
-    // A readable font where the system has one; ImGui's built-in one otherwise.
-    if (FILE* f = std::fopen("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "rb")) {
-        std::fclose(f);
-        io.Fonts->AddFontFromFileTTF("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", 15.0f);
+    // ---- Dear ImGui on the window (its callbacks chain to the window's) ----
+    ImGuiLayer imgui(window.handle());
+
+    // ---- The frame loop: sleep until something happens, then draw one frame ----
+    Explorer explorer(options, state, script, window, imgui, gl, info);
+    while (!explorer.done()) {
+        explorer.wait_for_work();
+        if (explorer.frame_needed()) explorer.draw_frame();
     }
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 330");
-
-    int exit_status = 0;
-    {
-        // ---- The renderer: A, and B for the compare split ----
-        std::unique_ptr<Renderer> renderer_a, renderer_b;
-        try {
-            renderer_a = std::make_unique<Renderer>(gl);
-            renderer_b = std::make_unique<Renderer>(gl);
-        } catch (const std::exception& e) {
-            state.error = e.what();
-        }
-        std::string window_title;
-        std::string pending_capture;  // write the window here after the next frame is drawn
-        bool window_captured = false; // --capture-window is taken once
-        {   // The free area before the first frame, for a script's `display modern`.
-            const Layout start = layout_for(static_cast<float>(options.window_width),
-                                            static_cast<float>(options.window_height), true);
-            info.free_width = static_cast<int>(start.display.w);
-            info.free_height = static_cast<int>(start.display.h);
-        }
-
-        // ---- Frame loop: sleep until something happens ----
-        while (!glfwWindowShouldClose(window) && !state.quit) {
-            // --exit-after-script: stop once the script and any capture are done.
-            if (script && script->finished() && options.exit_after_script && pending_capture.empty() &&
-                (options.capture_window.empty() || window_captured) && events.frames_owed == 0 &&
-                !state.scene_changed && !state.screenshot_requested) {
-                break;
-            }
-            const bool script_busy = script && !script->finished() && !script->idling();
-            const bool work = events.frames_owed > 0 || state.scene_changed || script_busy ||
-                              state.screenshot_requested || !pending_capture.empty();
-            if (work) {
-                glfwPollEvents();
-            } else if (script && script->idling()) {
-                glfwWaitEventsTimeout(std::max(0.0, script->idle_until() - glfwGetTime()));
-            } else {
-                glfwWaitEvents();  // idle: no CPU until the next event
-            }
-            if (script && !script->finished()) {
-                const bool was_idle = script->idling();
-                script->step(state, glfwGetTime(), info.frames, info.free_width, info.free_height);
-                if (!script->idling() && !was_idle) events.frames_owed = std::max(events.frames_owed, 1);
-                if (!script->capture_path.empty()) {
-                    pending_capture = script->capture_path;
-                    script->capture_path.clear();
-                }
-            }
-            // Woken for nothing (an idle timeout, or an event GLFW does not report): no frame.
-            if (events.frames_owed == 0 && !state.scene_changed && !state.screenshot_requested &&
-                pending_capture.empty()) {
-                continue;
-            }
-            const auto frame_start = std::chrono::steady_clock::now();
-
-            for (const std::string& path : events.dropped) load_scene(state, path);
-            events.dropped.clear();
-
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-
-            // Shortcuts, unless the user is typing into a text field.
-            for (const WindowEvents::Key& k : events.keys) {
-                if (!io.WantTextInput) handle_shortcut(state, k.key, k.mods);
-            }
-            events.keys.clear();
-
-            const Layout layout = layout_for(io.DisplaySize.x, io.DisplaySize.y, state.show_panels);
-            const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
-            // Room for one display (two in compare, with the gap between them).
-            info.free_width = static_cast<int>((layout.display.w - (state.compare ? kCompareGap : 0.0f)) * fb_scale) /
-                              (state.compare ? 2 : 1);
-            info.free_height = static_cast<int>(layout.display.h * fb_scale);
-
-            // Orbit and zoom with the mouse over the display (not over a panel).
-            if (!io.WantCaptureMouse) {
-                if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) &&
-                    (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-                    orbit_camera(state, io.MouseDelta.x, io.MouseDelta.y);
-                }
-                if (io.MouseWheel != 0.0f) zoom_camera(state, io.MouseWheel);
-            }
-
-            if (state.show_panels) {
-                draw_side_panel(state, info, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
-                draw_bottom_strip(state, info, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
-            }
-
-            // Render the scene only when something changed.
-            if (state.scene_changed && renderer_a) {
-                state.scene_changed = false;
-                const auto render_start = std::chrono::steady_clock::now();
-                try {
-                    renderer_a->render(state.scene);
-                    if (state.compare) renderer_b->render(compare_scene(state));
-                    gl.Finish();
-                    ++info.renders;
-                } catch (const std::exception& e) {
-                    state.error = e.what();
-                }
-                info.render_ms = milliseconds_since(render_start);
-            }
-            if (state.screenshot_requested && renderer_a) {
-                state.screenshot_requested = false;
-                take_screenshot(state, *renderer_a);
-            }
-            if (renderer_a) {
-                std::vector<unsigned> textures = {renderer_a->display_texture()};
-                if (state.compare) textures.push_back(renderer_b->display_texture());
-                info.scale = draw_display(textures, renderer_a->width(), renderer_a->height(),
-                                          layout.display, fb_scale);
-            }
-            if (!state.show_panels && !state.error.empty()) {
-                ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255),
-                                                        state.error.c_str());
-            }
-
-            const std::string title = "M3055 material explorer - " + state.scene_name;
-            if (title != window_title) glfwSetWindowTitle(window, (window_title = title).c_str());
-
-            // Draw: clear the window, then ImGui (the display is in its background list).
-            ImGui::Render();
-            int fb_w = 0, fb_h = 0;
-            glfwGetFramebufferSize(window, &fb_w, &fb_h);
-            gl.BindFramebuffer(GL_FRAMEBUFFER, 0);  // the renderer leaves its own bound
-            gl.Viewport(0, 0, fb_w, fb_h);
-            gl.ClearColor(0.11f, 0.11f, 0.13f, 1.0f);
-            gl.Clear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-            if (!pending_capture.empty()) {
-                try {
-                    write_png(pending_capture, read_window(gl, fb_w, fb_h));
-                } catch (const std::exception& e) {
-                    state.error = e.what();
-                }
-                pending_capture.clear();
-            }
-            glfwSwapBuffers(window);
-            ++info.frames;
-            events.frames_owed = std::max(0, events.frames_owed - 1);
-            info.frame_ms = milliseconds_since(frame_start);
-
-            // --capture-window: once the script is done and the window has settled,
-            // draw one more frame and capture it; with --exit-after-script, then stop.
-            const bool script_done = !script || script->finished();
-            const bool settled = events.frames_owed == 0 && !state.scene_changed;
-            if (script_done && settled && !options.capture_window.empty() && !window_captured) {
-                pending_capture = options.capture_window;
-                window_captured = true;
-                events.frames_owed = 1;
-                continue;
-            }
-        }
-        if (script && script->errors() > 0) exit_status = 1;
-        if (!options.stats_path.empty()) {
-            try {
-                write_stats(options.stats_path, info.frames, info.renders, script ? &*script : nullptr);
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "%s\n", e.what());
-                exit_status = 1;
-            }
-        }
-        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-        renderer_b.reset();
-        renderer_a.reset();  // GL objects go while the context is still current
-    }
-
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return exit_status;
+    return explorer.finish();
 }
 
 }  // namespace m3055

@@ -7,7 +7,7 @@
 namespace m3055 {
 
 struct ExploreOptions {
-    std::string scene_path;      // --scene: start with this scene (default: the SPEC example)
+    std::string scene_path;      // --scene: start with this scene (default: the spec example)
     std::string script_path;     // --script: UI actions to run, one per frame (see script.h)
     bool exit_after_script = false;  // --exit-after-script
     std::string capture_window;  // --capture-window: PNG of the whole window when the script

@@ -7,7 +7,7 @@
 namespace m3055::explore {
 
 namespace {
-// Number keys pick the figure presets in the paper's order; 0 is the SPEC example.
+// Number keys pick the figure presets in the paper's order; 0 is the spec example.
 const char* const kFigureKeys[10] = {"spec_example", "fig05", "fig06", "fig07", "fig08",
                                      "fig09",        "fig10", "fig11", "fig12", "fig13"};
 }  // namespace

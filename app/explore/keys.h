@@ -9,7 +9,7 @@ namespace m3055::explore {
 
 // Esc quits, R resets the camera, F1 toggles the panels, F12 takes a
 // screenshot, Ctrl+S saves the scene JSON, 1-9 load the figure presets
-// Fig. 5-13, 0 the SPEC example. Returns true when the key did something.
+// Fig. 5-13, 0 the spec example. Returns true when the key did something.
 bool handle_shortcut(ExplorerState& state, int glfw_key, int glfw_mods);
 
 // "escape", "r", "f1", "f12", "ctrl+s", "0".."9" -> GLFW key and modifiers.

@@ -60,7 +60,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
         const Light& light = state.scene.lights[state.selected_light];
         const double incidence = incidence_towards_camera(light, state.scene.camera);
         ImGui::Text("object %d (%s), light %d at %.1f deg to N", state.selected_object,
-                    to_string(material->model), state.selected_light, incidence);
+                    material->model_name().c_str(), state.selected_light, incidence);
         // The half-disc plot is twice as wide as it is tall; leave room for the title
         // bar, the line above and the scale line under it.
         const float plot_height = height - 6.0f * ImGui::GetTextLineHeightWithSpacing();

@@ -52,15 +52,17 @@ bool light_editor(ExplorerState& state, int index) {
     changed |= color_edit("colour c", &light.color);
 
     // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
-    if (const Material* material = selected_material(state); material && uses_lobes(material->model)) {
-        const LobeKind kind = material->model == Model::metal ? LobeKind::beckmann : LobeKind::exponent;
+    const Material* material = selected_material(state);
+    if (material && material->model().light_lobes) {
+        const LobeKind kind = *material->model().light_lobes;
         bool own = !light.lobes.empty() && light.lobe_kind == kind;
         if (ImGui::Checkbox("own lobes (replace the material's for this light)", &own)) {
-            light.lobes = own ? material->lobes : std::vector<Lobe>{};
+            light.lobes = own ? material->lobes().to_vector() : std::vector<Lobe>{};
             light.lobe_kind = kind;
             changed = true;
         }
-        if (own) changed |= lobe_editor("light_lobes", &light.lobes, kind == LobeKind::beckmann, 1);
+        const LobeForm& form = material->model().param("lobes").form_for(*material);
+        if (own) changed |= lobe_editor("light_lobes", &light.lobes, form, 1);
     }
     return changed;
 }

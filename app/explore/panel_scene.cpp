@@ -34,7 +34,7 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
 }
 
 void objects_section(ExplorerState& state) {
-    ImGui::TextUnformatted("figure presets (keys 1-9, 0 = SPEC example):");
+    ImGui::TextUnformatted("figure presets (keys 1-9, 0 = spec example):");
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;
@@ -47,7 +47,7 @@ void objects_section(ExplorerState& state) {
     for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
         ImGui::PushID(i);
         const std::string label = std::string(to_string(objects[i].shape)) + " " + std::to_string(i) + ": " +
-                                  to_string(objects[i].material.model);
+                                  objects[i].material.model_name().c_str();
         if (ImGui::Selectable(label.c_str(), state.selected_object == i)) state.selected_object = i;
         if (state.selected_object == i) {
             Object& o = objects[i];
@@ -85,7 +85,7 @@ void camera_section(ExplorerState& state) {
     double p[3] = {camera.position.x, camera.position.y, camera.position.z};
     if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
         const dvec3 moved(p[0], p[1], p[2]);
-        if (moved != camera.target) camera.position = moved;  // SPEC 7: position != target
+        if (moved != camera.target) camera.position = moved;  // docs/spec.md#7-scene-files: position != target
         state.changed();
     }
     double t[3] = {camera.target.x, camera.target.y, camera.target.z};

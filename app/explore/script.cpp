@@ -4,11 +4,13 @@
 #include "explore/shape_editor.h"
 #include "scene/light_direction.h"
 #include "scene/load.h"
+#include "models/model_spec.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,18 +18,216 @@ namespace m3055::explore {
 
 namespace {
 
-Model parse_model(const std::string& name) {
-    for (Model m : all_models()) {
-        if (name == to_string(m)) return m;
+// One command line being run: its words, and what the handlers may touch.
+struct Call {
+    ExplorerState& state;
+    Script& script;
+    std::istringstream in;
+    std::string command;
+    double now;
+    long frames;
+    int free_width, free_height;
+
+    std::string word() {
+        std::string w;
+        if (!(in >> w)) throw std::runtime_error(command + ": missing argument");
+        return w;
     }
-    throw std::runtime_error("unknown model '" + name + "'");
+    double number() {
+        double v;
+        if (!(in >> v)) throw std::runtime_error(command + ": expected a number");
+        return v;
+    }
+    int integer() { return static_cast<int>(number()); }
+    std::string rest() {
+        std::string value;
+        std::getline(in >> std::ws, value);
+        return value;
+    }
+    Material& material() {
+        Material* m = selected_material(state);
+        if (!m) throw std::runtime_error("no object");
+        return *m;
+    }
+    int light() {
+        const int index = integer();
+        if (index < 0 || index >= static_cast<int>(state.scene.lights.size()))
+            throw std::runtime_error("no light " + std::to_string(index));
+        return index;
+    }
+    Shape shape(const std::string& name) {
+        const auto found = parse_shape(name);
+        if (!found) throw std::runtime_error("unknown shape '" + name + "'");
+        return *found;
+    }
+};
+
+using Handler = void (*)(Call&);
+
+// ---- Scene and material --------------------------------------------------------------
+
+void set_value(Call& c) {
+    const std::string path = c.word();
+    nlohmann::json doc = scene_to_json(c.state.scene);
+    apply_overrides(doc, {{path, c.rest()}}, "script");
+    c.state.scene = scene_from_json(doc, "script");
+    c.state.changed();
 }
 
-int light_index(const ExplorerState& state, int index) {
-    if (index < 0 || index >= static_cast<int>(state.scene.lights.size())) {
-        throw std::runtime_error("no light " + std::to_string(index));
-    }
-    return index;
+void model(Call& c) {
+    set_model(c.material(), c.word());
+    c.state.changed();
+}
+
+void print_models(Call&) {
+    for (const ModelSpec* model : all_models()) std::printf("model %s\t%s\n", model->name.c_str(), model->label.c_str());
+    std::fflush(stdout);
+}
+
+void select_object(Call& c) {
+    const int i = c.integer();
+    if (i < 0 || i >= static_cast<int>(c.state.scene.objects.size()))
+        throw std::runtime_error("no object " + std::to_string(i));
+    c.state.selected_object = i;
+}
+
+void rescale_eq14(Call& c) {
+    if (!rescale_to_eq14(c.material())) throw std::runtime_error("rescale_eq14: not possible for this material");
+    c.state.changed();
+}
+
+void add_object_command(Call& c) {
+    std::string name = "sphere";
+    c.in >> name;  // optional: the shape
+    add_object(c.state, c.shape(name));
+}
+
+void shape(Call& c) {
+    const Shape shape = c.shape(c.word());
+    c.material();  // there is a selected object
+    set_shape(c.state.scene.objects[c.state.selected_object], shape);  // as the Objects panel's shape selector
+    c.state.changed();
+}
+
+void remove_object_command(Call& c) {
+    if (!remove_object(c.state, c.integer())) throw std::runtime_error("cannot remove that object");
+}
+
+void figure(Call& c) {
+    if (!load_figure(c.state, c.word())) throw std::runtime_error(c.state.error);
+}
+
+void load(Call& c) { load_scene(c.state, c.word()); }  // a bad file shows in the window, like a drop
+
+// ---- Lights -------------------------------------------------------------------------------
+
+void select_light(Call& c) { c.state.selected_light = c.light(); }
+
+void light_preset(Call& c) {
+    LightPreset preset;
+    const std::string name = c.word();
+    if (!parse_light_preset(name, &preset)) throw std::runtime_error("unknown light preset '" + name + "'");
+    apply_light_preset(c.state, preset);
+}
+
+void light_angles(Call& c) {
+    const int i = c.light();
+    const double azimuth = c.number(), elevation = c.number();
+    c.state.scene.lights[i].direction = direction_from_angles({azimuth, elevation});
+    c.state.changed();
+}
+
+void light_drag(Call& c) {
+    const int i = c.light();
+    const double x = c.number(), y = c.number();
+    c.state.scene.lights[i].direction = direction_from_disc({x, y});
+    c.state.changed();
+}
+
+void add_light_command(Call& c) {
+    if (!add_light(c.state)) throw std::runtime_error("already " + std::to_string(kMaxExplorerLights) + " lights");
+}
+
+void remove_light_command(Call& c) {
+    if (!remove_light(c.state, c.integer())) throw std::runtime_error("no such light");
+}
+
+// ---- View, display and compare -----------------------------------------------------------
+
+void display(Call& c) {
+    const std::string which = c.word();
+    if (which == "m3055") set_display_m3055(c.state);
+    else if (which == "modern") set_display_modern(c.state, c.free_width, c.free_height);
+    else throw std::runtime_error("display: m3055 or modern");
+}
+
+void orbit(Call& c) {
+    const double dx = c.number(), dy = c.number();
+    orbit_camera(c.state, dx, dy);
+}
+
+void zoom(Call& c) { zoom_camera(c.state, c.number()); }
+
+void projection(Call& c) {  // the Camera panel's combo
+    const std::string name = c.word();
+    if (name != "perspective" && name != "orthographic")
+        throw std::runtime_error("projection: perspective or orthographic");
+    c.state.scene.camera.projection = name == "perspective" ? Projection::perspective : Projection::orthographic;
+    c.state.changed();
+}
+
+void compare(Call& c) {
+    const std::string on = c.word();
+    if (on != "on" && on != "off") throw std::runtime_error("compare: on or off");
+    set_compare(c.state, on == "on");
+}
+
+void compare_model(Call& c) {
+    set_model(c.state.material_b, c.word());
+    c.state.changed();
+}
+
+// ---- Keys, files and the script itself -----------------------------------------------------
+
+void key(Call& c) {
+    int key = 0, mods = 0;
+    const std::string name = c.word();
+    if (!parse_key_name(name, &key, &mods)) throw std::runtime_error("unknown key '" + name + "'");
+    handle_shortcut(c.state, key, mods);
+}
+
+void screenshot(Call& c) {
+    c.state.screenshot_path = c.word();
+    c.state.screenshot_requested = true;
+}
+
+void save(Call& c) {
+    if (!save_scene(c.state, c.word())) throw std::runtime_error(c.state.error);
+}
+
+void capture(Call& c) { c.script.capture_path = c.word(); }
+void idle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames); }
+void quit(Call& c) { c.state.quit = true; }
+
+// Command name -> handler (the list in script.h).
+const std::map<std::string, Handler>& commands() {
+    static const std::map<std::string, Handler> table = {
+        {"set", set_value},         {"model", model},
+        {"print_models", print_models}, {"select_object", select_object},
+        {"select_light", select_light}, {"rescale_eq14", rescale_eq14},
+        {"light_preset", light_preset}, {"light_angles", light_angles},
+        {"light_drag", light_drag}, {"add_light", add_light_command},
+        {"remove_light", remove_light_command}, {"add_object", add_object_command},
+        {"shape", shape},           {"remove_object", remove_object_command},
+        {"figure", figure},         {"load", load},
+        {"display", display},       {"orbit", orbit},
+        {"projection", projection}, {"zoom", zoom},
+        {"compare", compare},       {"compare_model", compare_model},
+        {"key", key},               {"screenshot", screenshot},
+        {"save", save},             {"capture", capture},
+        {"idle", idle},             {"quit", quit},
+    };
+    return table;
 }
 
 }  // namespace
@@ -62,128 +262,20 @@ void Script::step(ExplorerState& state, double now, long frames, int free_width,
     }
 }
 
-void Script::run(ExplorerState& state, const std::string& line, double now, long frames,
-                 int free_width, int free_height) {
-    std::istringstream in(line.substr(0, line.find('#')));
-    std::string command;
-    if (!(in >> command)) return;  // blank or comment
-    auto word = [&]() {
-        std::string w;
-        if (!(in >> w)) throw std::runtime_error(command + ": missing argument");
-        return w;
-    };
-    auto number = [&]() {
-        double v;
-        if (!(in >> v)) throw std::runtime_error(command + ": expected a number");
-        return v;
-    };
-    auto integer = [&]() { return static_cast<int>(number()); };
+void Script::start_idle(double seconds, double now, long frames) {
+    idle_seconds_ = seconds;
+    idle_until_ = now + seconds;
+    idle_start_frames_ = frames;
+}
 
-    if (command == "set") {
-        const std::string path = word();
-        std::string value;
-        std::getline(in >> std::ws, value);
-        nlohmann::json doc = scene_to_json(state.scene);
-        apply_overrides(doc, {{path, value}}, "script");
-        state.scene = scene_from_json(doc, "script");
-        state.changed();
-    } else if (command == "model") {
-        Material* material = selected_material(state);
-        if (!material) throw std::runtime_error("no object");
-        set_model(*material, parse_model(word()));
-        state.changed();
-    } else if (command == "select_object") {
-        const int i = integer();
-        if (i < 0 || i >= static_cast<int>(state.scene.objects.size())) throw std::runtime_error("no object " + std::to_string(i));
-        state.selected_object = i;
-    } else if (command == "select_light") {
-        state.selected_light = light_index(state, integer());
-    } else if (command == "rescale_eq14") {
-        Material* material = selected_material(state);
-        if (!material || !rescale_to_eq14(material->model, material->d, material->lobes)) {
-            throw std::runtime_error("rescale_eq14: not possible for this material");
-        }
-        state.changed();
-    } else if (command == "light_preset") {
-        LightPreset preset;
-        const std::string name = word();
-        if (!parse_light_preset(name, &preset)) throw std::runtime_error("unknown light preset '" + name + "'");
-        apply_light_preset(state, preset);
-    } else if (command == "light_angles") {
-        const int i = light_index(state, integer());
-        const double azimuth = number(), elevation = number();
-        state.scene.lights[i].direction = direction_from_angles({azimuth, elevation});
-        state.changed();
-    } else if (command == "light_drag") {
-        const int i = light_index(state, integer());
-        const double x = number(), y = number();
-        state.scene.lights[i].direction = direction_from_disc({x, y});
-        state.changed();
-    } else if (command == "add_light") {
-        if (!add_light(state)) throw std::runtime_error("already " + std::to_string(kMaxExplorerLights) + " lights");
-    } else if (command == "remove_light") {
-        if (!remove_light(state, integer())) throw std::runtime_error("no such light");
-    } else if (command == "add_object") {
-        std::string name = "sphere";
-        in >> name;  // optional: the shape
-        const auto shape = parse_shape(name);
-        if (!shape) throw std::runtime_error("unknown shape '" + name + "'");
-        add_object(state, *shape);
-    } else if (command == "shape") {
-        const std::string name = word();
-        const auto shape = parse_shape(name);
-        if (!selected_material(state) || !shape) throw std::runtime_error("no object or unknown shape '" + name + "'");
-        set_shape(state.scene.objects[state.selected_object], *shape);  // as the Objects panel's shape selector
-        state.changed();
-    } else if (command == "remove_object") {
-        if (!remove_object(state, integer())) throw std::runtime_error("cannot remove that object");
-    } else if (command == "figure") {
-        if (!load_figure(state, word())) throw std::runtime_error(state.error);
-    } else if (command == "load") {
-        load_scene(state, word());  // a bad file shows in the window, like a drop
-    } else if (command == "display") {
-        const std::string which = word();
-        if (which == "m3055") set_display_m3055(state);
-        else if (which == "modern") set_display_modern(state, free_width, free_height);
-        else throw std::runtime_error("display: m3055 or modern");
-    } else if (command == "orbit") {
-        const double dx = number(), dy = number();
-        orbit_camera(state, dx, dy);
-    } else if (command == "projection") {  // the Camera panel's combo
-        const std::string name = word();
-        if (name != "perspective" && name != "orthographic") throw std::runtime_error("projection: perspective or orthographic");
-        state.scene.camera.projection = name == "perspective" ? Projection::perspective : Projection::orthographic;
-        state.changed();
-    } else if (command == "zoom") {
-        zoom_camera(state, number());
-    } else if (command == "compare") {
-        const std::string on = word();
-        if (on != "on" && on != "off") throw std::runtime_error("compare: on or off");
-        set_compare(state, on == "on");
-    } else if (command == "compare_model") {
-        set_model(state.material_b, parse_model(word()));
-        state.changed();
-    } else if (command == "key") {
-        int key = 0, mods = 0;
-        const std::string name = word();
-        if (!parse_key_name(name, &key, &mods)) throw std::runtime_error("unknown key '" + name + "'");
-        handle_shortcut(state, key, mods);
-    } else if (command == "screenshot") {
-        state.screenshot_path = word();
-        state.screenshot_requested = true;
-    } else if (command == "save") {
-        if (!save_scene(state, word())) throw std::runtime_error(state.error);
-    } else if (command == "capture") {
-        capture_path = word();
-    } else if (command == "idle") {
-        idle_seconds_ = number();
-        idle_until_ = now + idle_seconds_;
-        idle_start_frames_ = frames;
-    } else if (command == "quit") {
-        state.quit = true;
-    } else {
-        throw std::runtime_error("unknown command '" + command + "'");
-    }
+void Script::run(ExplorerState& state, const std::string& line, double now, long frames, int free_width,
+                 int free_height) {
+    Call call{state, *this, std::istringstream(line.substr(0, line.find('#'))), {}, now, frames, free_width,
+              free_height};
+    if (!(call.in >> call.command)) return;  // blank or comment
+    const auto found = commands().find(call.command);
+    if (found == commands().end()) throw std::runtime_error("unknown command '" + call.command + "'");
+    found->second(call);
 }
 
 }  // namespace m3055::explore

@@ -5,6 +5,7 @@
 //   set PATH VALUE          a scene field, as m3055's --set (validated like a load),
 //                           e.g. set objects[0].material.m 40
 //   model NAME              the selected object's model (as the model selector)
+//   print_models            print the model selector's entries ("model NAME<TAB>LABEL")
 //   select_object I | select_light I
 //   rescale_eq14            the Material panel's eq. 14 button
 //   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
@@ -55,6 +56,8 @@ public:
     std::string capture_path;
 
     int errors() const { return errors_; }
+    // `idle SECONDS`: no input from now for `seconds`, counting the frames drawn.
+    void start_idle(double seconds, double now, long frames);
     const std::vector<IdleRecord>& idle_records() const { return idle_records_; }
 
 private:

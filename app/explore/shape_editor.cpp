@@ -20,7 +20,7 @@ bool direction_edit(const char* label, dvec3* direction) {
     if (!ImGui::DragScalarN(label, ImGuiDataType_Double, v, 3, 0.01f)) return false;
     const dvec3 d(v[0], v[1], v[2]);
     const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-    if (!(length > 1e-6)) return false;  // SPEC 7: non-zero
+    if (!(length > 1e-6)) return false;  // docs/spec.md#7-scene-files: non-zero
     *direction = d / length;
     return true;
 }

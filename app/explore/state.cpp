@@ -4,6 +4,7 @@
 #include "explore/shape_editor.h"
 #include "geometry/mesh.h"
 #include "image/image.h"
+#include "models/model_table.h"
 #include "scene/load.h"
 
 #include <glm/geometric.hpp>
@@ -73,32 +74,18 @@ Material* selected_material(ExplorerState& state) {
     return &state.scene.objects[state.selected_object].material;
 }
 
-std::vector<Model> all_models() {
-    // to_string() names every model and says "?" past the last one, so a model
-    // added to scene.h shows up in the selector without touching this file.
-    std::vector<Model> models;
-    for (int i = 0; std::string(to_string(static_cast<Model>(i))) != "?"; ++i) {
-        models.push_back(static_cast<Model>(i));
-    }
+std::vector<const ModelSpec*> all_models() {
+    std::vector<const ModelSpec*> models;
+    for (const ModelSpec& model : model_table().models()) models.push_back(&model);
     return models;
 }
 
-void set_model(Material& material, Model model) {
-    const bool was_beckmann = material.model == Model::metal;
-    const bool now_beckmann = model == Model::metal;
-    const bool lobes_keep_meaning =
-        uses_lobes(material.model) && uses_lobes(model) && was_beckmann == now_beckmann;
-    if (uses_lobes(model) && (!lobes_keep_meaning || material.lobes.empty())) {
-        material.lobes = default_lobes(model);
-        material.d = 0.05;  // the paper's metals; the default lobes meet eq. 14 with it
-    }
-    // Paper model -> classic model: start from the same colour (C0 as K_diff and K_amb).
-    if (is_classic(model) && !is_classic(material.model)) material.kd = material.ka = material.color;
-    if (model == Model::microfacet && (material.lobes.empty() || uses_lobes(material.model))) {
-        material.lobes = material.distribution == Distribution::blinn_phong ? std::vector<Lobe>{{1.0, 100.0}}
-                                                                            : std::vector<Lobe>{{1.0, 0.3}};
-    }
-    material.model = model;
+void set_model(Material& material, const ModelSpec& model) { material = with_model(material, model); }
+
+void set_model(Material& material, const std::string& model_name) {
+    const ModelSpec* model = model_table().find(model_name);
+    if (!model) throw std::runtime_error("unknown model '" + model_name + "'");
+    set_model(material, *model);
 }
 
 void apply_light_preset(ExplorerState& state, LightPreset preset) {
@@ -183,7 +170,7 @@ dvec3 rotate(const dvec3& v, double angle, const dvec3& k) {
 
 // Radians of orbit per pixel dragged: a 300-pixel drag turns about 90 degrees.
 constexpr double kOrbitPerPixel = 0.3 * 3.14159265358979323846 / 180.0;
-// Keep the view direction at least this far (radians) from `up` (SPEC 7).
+// Keep the view direction at least this far (radians) from `up` (docs/spec.md#7-scene-files).
 constexpr double kPoleMargin = 0.02;
 // One wheel step moves 10 % closer.
 constexpr double kZoomPerStep = 0.9;

@@ -57,12 +57,14 @@ bool save_scene(ExplorerState& state, const std::string& path);
 // The selected object's material (the default scene always has one object).
 Material* selected_material(ExplorerState& state);
 
-// Every model the renderer knows, in enum order (the model selector's list).
-std::vector<Model> all_models();
+// Every model of the model table, in its order (the model selector's list).
+std::vector<const ModelSpec*> all_models();
 
-// Switches a material's model; lobes are replaced by the model's defaults when
-// their meaning changes (Beckmann m_j <-> exponents n_j).
-void set_model(Material& material, Model model);
+// Switches a material's model (with_model, scene/material.h: values with the
+// same name and meaning are kept, the rest are the new model's defaults).
+void set_model(Material& material, const ModelSpec& model);
+// The same by name; std::runtime_error for a name not in the table.
+void set_model(Material& material, const std::string& model_name);
 
 // Replaces the lights with a preset.
 void apply_light_preset(ExplorerState& state, LightPreset preset);

@@ -24,21 +24,20 @@ bool color_edit(const char* label, dvec3* color) {
     return true;
 }
 
-bool lobe_editor(const char* id, std::vector<Lobe>* lobes, bool beckmann, int min_lobes) {
+bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form, int min_lobes) {
     bool changed = false;
+    const std::string value_format = form.key + (form.key == "n" ? " %.1f" : " %.3f");
     ImGui::PushID(id);
     for (int j = 0; j < static_cast<int>(lobes->size()); ++j) {
         ImGui::PushID(j);
         Lobe& lobe = (*lobes)[j];
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.36f);
-        changed |= slider_double("##w", &lobe.w, 0.0, 100.0, "w %.4f", true);
+        changed |= slider_double("##w", &lobe.w, form.weight.lo, form.weight.hi, "w %.4f", true);
         ImGui::SameLine();
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
-        if (beckmann) {
-            changed |= slider_double("##m", &lobe.m, 0.001, 2.0, "m %.3f", true);
-        } else {
-            changed |= slider_double("##n", &lobe.m, 0.0, 10000.0, "n %.1f", true);
-        }
+        changed |= slider_double("##value", &lobe.m, form.value.lo, form.value.hi, value_format.c_str(), true);
+        if (ImGui::IsItemHovered() && !form.value_help.empty())
+            ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
         ImGui::SameLine();
         if (static_cast<int>(lobes->size()) > min_lobes && ImGui::SmallButton("x")) {
             lobes->erase(lobes->begin() + j);
@@ -49,7 +48,7 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, bool beckmann, int mi
         ImGui::PopID();
     }
     if (static_cast<int>(lobes->size()) < kMaxLobes && ImGui::SmallButton("+ lobe")) {
-        lobes->push_back(beckmann ? Lobe{0.05, 0.3} : Lobe{0.5, 10.0});
+        lobes->push_back(form.fallback.back());
         changed = true;
     }
     ImGui::PopID();

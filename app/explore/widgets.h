@@ -1,8 +1,9 @@
 // Small ImGui helpers for the scene's double-precision fields, so every panel
-// uses the same slider behaviour (clamped to SPEC 7's ranges, log where the
+// uses the same slider behaviour (clamped to the docs/spec.md#7-scene-files ranges, log where the
 // parameter spans decades).
 #pragma once
 
+#include "models/model_spec.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -17,10 +18,10 @@ bool slider_double(const char* label, double* value, double lo, double hi,
 // Colour picker for a [0,1]^3 colour.
 bool color_edit(const char* label, dvec3* color);
 
-// Up to kMaxLobes (w, m) or (w, n) rows with add/remove. `beckmann` selects the
-// ranges: m_j in [0.001, 2] for `metal`, n_j in [0, 10000] otherwise.
-// `min_lobes` = 1 for a material (SPEC 7: 1 to 4), 0 for a light's own lobes.
-bool lobe_editor(const char* id, std::vector<Lobe>* lobes, bool beckmann, int min_lobes);
+// Up to kMaxLobes (w, m) or (w, n) rows with add/remove, in the ranges of
+// `form` (the model table's lobe form: its key, weight and value ranges).
+// `min_lobes` = 1 for a material (docs/spec.md#7-scene-files: 1 to 4), 0 for a light's own lobes.
+bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form, int min_lobes);
 
 // Grey explanatory text that wraps.
 void hint(const char* text);

@@ -1,4 +1,4 @@
-// SPEC section 3: the ray through a pixel centre. C++ twin: ref::camera_ray.
+// docs/spec.md#3-geometry: the ray through a pixel centre. C++ twin: ref::camera_ray.
 
 uniform vec2 u_viewport;        // display width, height in pixels
 uniform int u_projection;       // 0 perspective, 1 orthographic

@@ -1,4 +1,4 @@
-// Lights: SPEC 3 (directional, point) and the lecture's spot and attenuation.
+// Lights: docs/spec.md#3-geometry (directional, point) and the lecture's spot and attenuation.
 // C++ twin: ref::sample_light. Disabled and zero-intensity lights never reach
 // the shader: the renderer drops them.
 
@@ -6,13 +6,17 @@
 #define LIGHT_POINT 1
 #define LIGHT_SPOT 2
 
+// The kinds of a light's own lobes (scene.h LobeKind): Beckmann {w, m}, exponent {w, n}.
+#define LIGHT_LOBES_BECKMANN 0
+#define LIGHT_LOBES_EXPONENT 1
+
 uniform int u_light_count;
 uniform vec4 u_light_vector[MAX_LIGHTS];   // xyz: direction towards the light, or position; w: type
 uniform vec3 u_light_scale[MAX_LIGHTS];    // a_l * c_l
 uniform vec4 u_light_spot[MAX_LIGHTS];     // xyz: spot direction (unit); w: spot exponent
 uniform vec3 u_light_att[MAX_LIGHTS];      // S_c, S_l, S_q
 uniform int u_light_lobe_count[MAX_LIGHTS];  // 0: the light uses the material's lobes
-uniform int u_light_lobe_kind[MAX_LIGHTS];   // 0: Beckmann (metal), 1: exponent (metal_blinn/phong)
+uniform int u_light_lobe_kind[MAX_LIGHTS];   // LIGHT_LOBES_BECKMANN or LIGHT_LOBES_EXPONENT
 uniform vec4 u_light_lobes[MAX_LIGHTS * 2];  // (w0, m0, w1, m1), (w2, m2, w3, m3)
 
 struct LightSample {
@@ -56,14 +60,14 @@ LightSample light_sample(int i, vec3 P) {
     return s;
 }
 
-// Lobe j that light i uses on `mat`: the light's own when it carries lobes of
-// the kind the model reads (SPEC 4.3, the paper's Fig. 11), else the material's.
-int light_lobe_count(int i, Material mat) {
+// How many lobes of `kind` light i carries (0: the material's lobes apply).
+// Its own lobes replace the material's for the models that read that kind
+// (docs/spec.md#43-metal, the paper's Fig. 11).
+int light_lobe_count(int i, int kind) {
 #ifndef HAS_LIGHT_LOBES
     return 0;
 #endif
-    int wanted = mat.model == MODEL_METAL ? 0 : 1;
-    return (u_light_lobe_count[i] > 0 && u_light_lobe_kind[i] == wanted) ? u_light_lobe_count[i] : 0;
+    return (u_light_lobe_count[i] > 0 && u_light_lobe_kind[i] == kind) ? u_light_lobe_count[i] : 0;
 }
 
 vec2 light_lobe(int i, int j) {

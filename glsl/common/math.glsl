@@ -1,6 +1,6 @@
 // Numeric helpers shared by every term. C++ twin: renderer/reference/terms.cpp.
 
-// x^e with x^0 = 1 for every x >= 0 (SPEC 4). GLSL leaves pow(0, 0) undefined.
+// x^e with x^0 = 1 for every x >= 0 (docs/spec.md#4-paper-models). GLSL leaves pow(0, 0) undefined.
 float pow_safe(float x, float e) {
     if (e <= 0.0) return 1.0;
     if (x <= 0.0) return 0.0;

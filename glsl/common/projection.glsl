@@ -1,4 +1,4 @@
-// SPEC 3's camera as a projection, for rasterized meshes: the same rays as
+// the docs/spec.md#3-geometry camera as a projection, for rasterized meshes: the same rays as
 // camera_ray() (common/camera.glsl, included first) and the same depth as
 // window_depth(), so meshes and ray-cast spheres share one depth buffer.
 //   perspective:  x_ndc = x_cam / (z_cam * extent_x), y_ndc = y_cam / (z_cam * extent_y), w = z_cam

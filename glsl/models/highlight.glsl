@@ -1,7 +1,9 @@
-// SPEC 4.1: a coloured object whose highlight goes to display white (eq. 3-4),
-// extended to several coloured lights. C++ twin: ref::shade_opaque (highlight).
+// docs/spec.md#41-highlight: a coloured object whose highlight goes to display white (eq. 3-4),
+// extended to several coloured lights. The highlight model's hook is
+// shade_highlight. C++ twins: reference/models.cpp (same names).
+#include "terms/highlight_blend.glsl"
 
-// The two parts shared with the translucent model (SPEC 4.2):
+// The two parts shared with the translucent model (docs/spec.md#42-translucent):
 //   C1   = min([d + (1 - d) sum_l a_l c_l (N.L_l)+] C0, 1)
 //   keep = prod_l (1 - s_l)
 struct HighlightParts {

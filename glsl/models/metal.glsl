@@ -1,56 +1,69 @@
-// SPEC 4.3 and 4.4: metals. C = { d + sum_l a_l c_l sum_j w_j lobe_j } C0 with
+// docs/spec.md#43-metal and #44-cheap-metals: metals. C = { d + sum_l a_l c_l sum_j w_j lobe_j } C0 with
 //   metal        (eq. 12): lobe = delta(m_j, alpha) G / (N.V)   (Beckmann mixture)
 //   metal_blinn  (eq. 15): lobe = ((N.H)+)^n_j
 //   metal_phong  (eq. 16): lobe = ((R.V)+)^n_j
 // F = C0 (the paper's assumption 3), so no Fresnel and no pi. Not clamped:
-// the display clamps. C++ twin: ref::shade_opaque (metal family).
+// the display clamps. Each model's hook gives sum_j w_j lobe_j for one light,
+// over the light's own lobes (Fig. 11) or the material's; metal_lobe_sum
+// (generated from the model table) picks the hook. C++ twins: reference/models.cpp.
+#include "terms/beckmann.glsl"
+#include "terms/ct_geometry.glsl"
 
-// sum_j w_j lobe_j for light i, over the light's own lobes or the material's.
-float metal_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, float NoV) {
-    int own = light_lobe_count(i, mat);
-    int count = own > 0 ? own : mat.lobe_count;
+// L + V, or N where L = -V exactly (light opposite the view; lit only where
+// N.V < 0, i.e. by rounding at a silhouette): there H is undefined and
+// one_minus_cos(N, 0) NaN. ref::half_vector does the same.
+vec3 half_vector_or_normal(vec3 L, vec3 V, vec3 N) {
     vec3 H = L + V;  // unnormalized: one_minus_cos does not need it unit
-    // L = -V exactly (light opposite the view; lit only where N.V < 0, i.e. by
-    // rounding at a silhouette) leaves H undefined and one_minus_cos(N, 0)
-    // NaN: take H = N, as ref::half_vector does.
     if (dot(H, H) == 0.0) H = N;
+    return H;
+}
+
+// metal (eq. 12-13): sum_j w_j delta(m_j, alpha) G / (N.V).
+float beckmann_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, float NoV) {
+    int own = light_lobe_count(i, LIGHT_LOBES_BECKMANN);
+    int count = own > 0 ? own : mat.lobes_count;
+    vec3 H = half_vector_or_normal(L, V, N);
     float one_minus_NoH = one_minus_cos(N, H);
+    // V.H = |L + V| / 2 for unit L, V: never negative, and free of the
+    // cancellation of dot(V, normalize(L + V)) when L is nearly -V, which
+    // gave V.H ~ 0 and G / N.V ~ 1e30. 0 (the fallback above) gives no lobe.
+    float VoH = 0.5 * length(L + V);
+    H = normalize(H);
+    float NoH = max(dot(N, H), 0.0);
     float sum = 0.0;
-#ifdef HAS_METAL
-    if (mat.model == MODEL_METAL) {
-        // V.H = |L + V| / 2 for unit L, V: never negative, and free of the
-        // cancellation of dot(V, normalize(L + V)) when L is nearly -V, which
-        // gave V.H ~ 0 and G / N.V ~ 1e30. 0 (the fallback above) gives no lobe.
-        float VoH = 0.5 * length(L + V);
-        H = normalize(H);
-        float NoH = max(dot(N, H), 0.0);
-        for (int j = 0; j < count; ++j) {
-            vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobe[j];
-            sum += lobe.x * beckmann_D(lobe.y, NoH, one_minus_NoH);
-        }
-        return sum * ct_G_over_NoV(NoH, NoV, NoL, VoH);
-    }
-#endif
-#if defined(HAS_METAL_BLINN) || defined(HAS_METAL_PHONG)
-    // metal_blinn reads N.H, metal_phong R.V.
-    vec3 R = 2.0 * NoL * N - L;
-#if !defined(HAS_METAL_PHONG)
-    float c = cos_between(N, H), delta = one_minus_NoH;
-#elif !defined(HAS_METAL_BLINN)
-    float c = cos_between(R, V), delta = one_minus_cos(R, V);
-#else
-    bool blinn = mat.model == MODEL_METAL_BLINN;
-    float c = blinn ? cos_between(N, H) : cos_between(R, V);
-    float delta = blinn ? one_minus_NoH : one_minus_cos(R, V);
-#endif
     for (int j = 0; j < count; ++j) {
-        vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobe[j];
+        vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobes[j];
+        sum += lobe.x * beckmann_D(lobe.y, NoH, one_minus_NoH);
+    }
+    return sum * ct_G_over_NoV(NoH, NoV, NoL, VoH);
+}
+
+// sum_j w_j (c+)^n_j from c = cos and delta = 1 - cos, over light i's own
+// exponent lobes or the material's.
+float exponent_lobe_sum(Material mat, int i, float c, float delta) {
+    int own = light_lobe_count(i, LIGHT_LOBES_EXPONENT);
+    int count = own > 0 ? own : mat.lobes_count;
+    float sum = 0.0;
+    for (int j = 0; j < count; ++j) {
+        vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobes[j];
         sum += lobe.x * pow_cos(c, delta, lobe.y);
     }
-#endif
     return sum;
 }
 
+// metal_blinn (eq. 15): lobes on N.H.
+float blinn_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, float NoV) {
+    vec3 H = half_vector_or_normal(L, V, N);
+    return exponent_lobe_sum(mat, i, cos_between(N, H), one_minus_cos(N, H));
+}
+
+// metal_phong (eq. 16): lobes on R.V.
+float phong_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, float NoV) {
+    vec3 R = 2.0 * NoL * N - L;
+    return exponent_lobe_sum(mat, i, cos_between(R, V), one_minus_cos(R, V));
+}
+
+// The metal family: (d + sum_l a_l c_l lobes_l) C0, lights with N.L > 0 only.
 vec3 shade_metal(Material mat, vec3 P, vec3 N, vec3 V) {
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);

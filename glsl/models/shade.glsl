@@ -1,33 +1,24 @@
-// Every model, selected per object. The renderer may compile a program with
-// only the models a scene uses (HAS_* defines); a general program has them all.
+// Every model, selected per object by its family and then its model id. The
+// models' files, ids, struct Material and the families' dispatchers to the
+// models' hooks are generated from the model table (generated/*.glsl, by
+// renderer/models/glsl_generator.cpp); a program has only the models of its
+// HAS_* defines (all of them in a general program).
 #include "common/features.glsl"
 #include "common/math.glsl"
-#include "common/material.glsl"
+#include "generated/material.glsl"
 #include "common/lights.glsl"
-#include "terms/beckmann.glsl"
-#include "terms/ct_geometry.glsl"
-#include "terms/kay_opacity.glsl"
-#include "terms/highlight_blend.glsl"
-#include "models/highlight.glsl"
-#include "models/translucent.glsl"
-#include "models/metal.glsl"
-#ifdef HAS_CLASSIC_FAMILY
-#include "models/classic.glsl"
-#endif
+#include "generated/models.glsl"
 
-// An opaque point (every model but translucent).
+// An opaque point (every family but translucent). C++ twin: ref::shade_opaque.
 vec3 shade_opaque(Material mat, vec3 P, vec3 N, vec3 V) {
-#ifdef HAS_CLASSIC_FAMILY
-    if (mat.model >= MODEL_LAMBERT) return shade_classic(mat, P, N, V);
+#ifdef HAS_FAMILY_CLASSIC
+    if (mat.family == FAMILY_CLASSIC) return shade_classic(mat, P, N, V);
 #endif
-#if defined(HAS_HIGHLIGHT) && defined(HAS_METAL_FAMILY)
-    if (mat.model == MODEL_HIGHLIGHT) return shade_highlight(mat, P, N, V);
-    return shade_metal(mat, P, N, V);
-#elif defined(HAS_HIGHLIGHT)
-    return shade_highlight(mat, P, N, V);
-#elif defined(HAS_METAL_FAMILY)
-    return shade_metal(mat, P, N, V);
-#else
+#ifdef HAS_FAMILY_METAL
+    if (mat.family == FAMILY_METAL) return shade_metal(mat, P, N, V);
+#endif
+#ifdef HAS_FAMILY_OPAQUE
+    if (mat.family == FAMILY_OPAQUE) return opaque_shade(mat, P, N, V);
+#endif
     return vec3(0.0);  // a pass with no opaque model draws nothing
-#endif
 }

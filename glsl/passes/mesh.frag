@@ -2,7 +2,7 @@
 // Per-pixel shading of a mesh (renderer/geometry/). Perspective-correct
 // interpolation gives the position and barycentric normal at the point where
 // the pixel-centre ray meets the triangle: exactly what the CPU reference
-// ray-casts (reference/mesh_hits.cpp). Back faces are culled (SPEC 3).
+// ray-casts (reference/mesh_hits.cpp). Back faces are culled (docs/spec.md#3-geometry).
 // TRANSLUCENT_PASS: as passes/sphere.frag, a premultiplied colour and a
 // per-channel transmittance for dual-source blending.
 #include "common/camera.glsl"
@@ -30,7 +30,7 @@ void main() {
     Material mat = fetch_material(v_material);
 #ifdef TRANSLUCENT_PASS
     vec3 color, transmittance;
-    shade_translucent(mat, P, N, V, color, transmittance);
+    translucent_shade(mat, P, N, V, color, transmittance);
     o_color = vec4(color, 1.0);
     o_transmittance = vec4(transmittance, 1.0);
 #else

@@ -1,5 +1,5 @@
 #version 330 core
-// SPEC section 2: the M3055's post pass. Linear colour (no gamma) to display
+// docs/spec.md#2-display: the M3055's post pass. Linear colour (no gamma) to display
 // levels, then to the 8-bit value the PNG stores:
 //   level = clamp(floor(c (2^bits - 1) + 0.5), 0, 2^bits - 1),  c clamped to [0, 1]
 //   png   = round(level * 255 / (2^bits - 1))

@@ -2,7 +2,7 @@
 // Exact spheres: ray-cast per pixel, shaded, with the true depth.
 // TRANSLUCENT_PASS: outputs a premultiplied colour and a per-channel
 // transmittance for dual-source blending, dst = color + transmittance * dst,
-// which is exactly SPEC 4.2's C = S + (1-S) t C1 + (1-S)(1-t) C_B.
+// which is exactly the docs/spec.md#42-translucent C = S + (1-S) t C1 + (1-S)(1-t) C_B.
 #include "common/camera.glsl"
 #include "common/sphere.glsl"
 #include "models/shade.glsl"
@@ -30,7 +30,7 @@ void main() {
     Material mat = fetch_material(v_material);
 #ifdef TRANSLUCENT_PASS
     vec3 color, transmittance;
-    shade_translucent(mat, P, N, V, color, transmittance);
+    translucent_shade(mat, P, N, V, color, transmittance);
     o_color = vec4(color, 1.0);
     o_transmittance = vec4(transmittance, 1.0);
 #else

@@ -21,9 +21,9 @@ void main() {
     vec3 V = normalize(texelFetch(u_view, pixel, 0).xyz);
     vec3 P = texelFetch(u_position, pixel, 0).xyz;
     Material mat = fetch_material(pixel.y * u_width + pixel.x);
-    if (mat.model == MODEL_TRANSLUCENT) {
+    if (mat.family == FAMILY_TRANSLUCENT) {
         vec3 color, transmittance;
-        shade_translucent(mat, P, N, V, color, transmittance);
+        translucent_shade(mat, P, N, V, color, transmittance);
         o_color = vec4(color, 1.0);
         o_transmittance = vec4(transmittance, 1.0);
     } else {

@@ -1,5 +1,6 @@
-// Anisotropic terms of the classic models (SPEC 5, seed 002): Ward and
-// Heidrich-Seidel, on the tangent frame below. C++ twins: reference/classic_terms.cpp.
+// Anisotropic terms of the classic models (docs/spec.md#5-classic-models, seed 002): the tangent
+// frame of the fibre and brushed models, and Ward's highlight.
+// C++ twins: reference/classic_terms.cpp.
 #include "common/constants.glsl"
 
 // The tangent frame (docs/models.md): T = normalize(axis x N), the direction of
@@ -29,13 +30,4 @@ float ward_specular(float alpha_x, float alpha_y, float NoL, float NoV, float Ho
     if (e > 80.0) return 0.0;  // below 1e-35 of the peak: skip, no 0 * inf
     // N.V floored at 1e-12: finite at the silhouette (a denormal N.V gave Inf).
     return sqrt(NoL / max(NoV, 1e-12)) * exp(-e) / (4.0 * alpha_x * alpha_y);
-}
-
-// Heidrich & Seidel 1998 (seed 002): ((sin(L,T) sin(V,T) - cos(L,T) cos(V,T))+)^n
-// = (cos x)^n with x = pi - angle(L,T) - angle(V,T). The angles come from
-// atan(|a x T|, a.T), so 1 - cos x = 2 sin^2(x/2) stays accurate for n = 10000.
-float heidrich_seidel_lobe(float n, float angle_LT, float angle_VT) {
-    float x = PI - angle_LT - angle_VT;
-    float s = sin(0.5 * x);
-    return pow_cos(cos(x), 2.0 * s * s, n);
 }

@@ -1,4 +1,4 @@
-// Diffuse terms of the classic models (SPEC 5): the factor of K_diff (x) L_diff
+// Diffuse terms of the classic models (docs/spec.md#5-classic-models): the factor of K_diff (x) L_diff
 // in the lecture's form, where Lambert is I_diff = (N.L)+ K_diff (x) L_diff.
 // C++ twins: reference/classic_terms.cpp (same names).
 #include "common/constants.glsl"

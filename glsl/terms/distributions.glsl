@@ -1,5 +1,5 @@
 // Microfacet normal distributions D(h) for the classic `microfacet` model
-// (SPEC 5; lecture seed 003, seed 002), each normalized so that the integral
+// (docs/spec.md#5-classic-models; lecture seed 003, seed 002), each normalized so that the integral
 // of D(h) (N.h) over the hemisphere is 1. one_minus_NoH = 1 - N.H from
 // one_minus_cos (common/math.glsl): narrow lobes need it accurate.
 // C++ twins: reference/classic_terms.cpp.
@@ -36,11 +36,8 @@ float ggx_D(float alpha, float NoH, float one_minus_NoH) {
     return a2 / (PI * denom * denom);
 }
 
-#define DISTRIBUTION_BLINN_PHONG 0
-#define DISTRIBUTION_GAUSSIAN 1
-#define DISTRIBUTION_BECKMANN 2
-#define DISTRIBUTION_GGX 3
-
+// DISTRIBUTION_*: the choices of the microfacet model's "distribution"
+// (generated from the model table: generated/material.glsl).
 // D of one lobe: m the roughness (or exponent n for blinn_phong), b the
 // Gaussian's normalization.
 float microfacet_D(int distribution, float m, float b, float NoH, float one_minus_NoH, float theta_h) {

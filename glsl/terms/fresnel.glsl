@@ -1,4 +1,4 @@
-// Fresnel terms for the classic `microfacet` model (SPEC 5).
+// Fresnel terms for the classic `microfacet` model (docs/spec.md#5-classic-models).
 // C++ twins: reference/classic_terms.cpp.
 
 // Reflectance at normal incidence from the index of refraction: ((n - 1)/(n + 1))^2.

@@ -1,6 +1,6 @@
 // eq. 3-4: the highlight blends the diffuse colour towards display white,
 //   C = C1 + s (1 - C1),   s = w (cos alpha)^m,
-// applied once per light: C = 1 - (1 - C1) prod_l (1 - s_l) (SPEC 4.1).
+// applied once per light: C = 1 - (1 - C1) prod_l (1 - s_l) (docs/spec.md#41-highlight).
 
 // s_l = clamp(w a_l c_l ((R.V)+)^m, 0, 1), the power from R.V and 1 - R.V.
 vec3 highlight_strength(float w, vec3 scale, float RoV, float one_minus_RoV, float m) {

@@ -1,4 +1,4 @@
-// The empirical specular lobes of the classic models (SPEC 5): the factor of
+// The empirical specular lobes of the classic models (docs/spec.md#5-classic-models): the factor of
 // K_spec (x) L_spec. Powers via pow_cos (common/math.glsl), accurate for
 // exponents up to 10000. C++ twins: reference/classic_terms.cpp.
 

@@ -7,7 +7,7 @@
 // Conventions:
 // - triangles are counter-clockwise seen from outside: (b - a) x (c - a)
 //   points out of the solid (for the plane: along its normal), so GL's default
-//   front face and SPEC 3's "only front faces are shaded" agree;
+//   front face and the docs/spec.md#3-geometry "only front faces are shaded" agree;
 // - normals are unit, per vertex: the analytic normal where the surface is
 //   smooth (cylinder side, torus), one flat normal per cube face and per
 //   cylinder cap (those vertices are not shared across the crease);
@@ -34,7 +34,7 @@ struct Mesh {
 
 // Segments a full circle when an object gives none, chosen so that the
 // shading error against the analytic surface stays below 5e-3 (a sixth of a
-// 5-bit level) away from silhouettes for the SPEC example's highlight m = 10
+// 5-bit level) away from silhouettes for the spec example's highlight m = 10
 // (tests/shape_mesh_test.cpp measures it; docs/shapes.md has the table):
 // cylinders 64 (5.6 degree steps, measured 5e-4), tori 128 in both directions
 // (curved both ways, measured 2.9e-3; 64 gives 1.1e-2).

@@ -1,6 +1,7 @@
 #include "gl/program.h"
 
 #include "gl/shader_source.h"
+#include "models/model_table.h"
 
 #include <stdexcept>
 #include <tuple>
@@ -8,7 +9,8 @@
 namespace m3055 {
 
 bool ProgramKey::operator<(const ProgramKey& other) const {
-    return std::tie(vertex, fragment, defines) < std::tie(other.vertex, other.fragment, other.defines);
+    return std::tie(vertex, fragment, defines, table_revision) <
+           std::tie(other.vertex, other.fragment, other.defines, other.table_revision);
 }
 
 static unsigned compile(const GlApi& gl, GLenum stage, const std::string& path,
@@ -27,7 +29,7 @@ static unsigned compile(const GlApi& gl, GLenum stage, const std::string& path,
         gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
         gl.DeleteShader(shader);
         while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-        throw std::runtime_error("cannot compile glsl/" + path + ":\n" + annotate_shader_log(log, source.files));
+        throw ShaderError("cannot compile glsl/" + path + ":\n" + annotate_shader_log(log, source.files));
     }
     return shader;
 }
@@ -55,7 +57,7 @@ unsigned build_program(const GlApi& gl, const ProgramKey& key) {
         std::string log(std::size_t(length > 0 ? length : 1), '\0');
         gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
         gl.DeleteProgram(program);
-        throw std::runtime_error("cannot link glsl/" + key.vertex + " + glsl/" + key.fragment + ": " + log);
+        throw ShaderError("cannot link glsl/" + key.vertex + " + glsl/" + key.fragment + ": " + log);
     }
     return program;
 }
@@ -64,7 +66,8 @@ ProgramCache::~ProgramCache() {
     for (auto& entry : programs_) gl_.DeleteProgram(entry.second);
 }
 
-unsigned ProgramCache::get(const ProgramKey& key) {
+unsigned ProgramCache::get(ProgramKey key) {
+    key.table_revision = model_table().revision();
     auto found = programs_.find(key);
     if (found != programs_.end()) return found->second;
     const unsigned program = build_program(gl_, key);

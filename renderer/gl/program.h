@@ -3,7 +3,9 @@
 
 #include "gl/gl_api.h"
 
+#include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,10 +14,21 @@ namespace m3055 {
 struct ProgramKey {
     std::string vertex, fragment;     // glsl/ paths
     std::vector<std::string> defines; // e.g. "TRANSLUCENT_PASS", "MAX_LIGHTS 4"
+    // The model table's revision the program was built from (ProgramCache sets
+    // it): the generated GLSL changes when a model is added at run time.
+    std::uint64_t table_revision = 0;
     bool operator<(const ProgramKey& other) const;
 };
 
-// Builds a program; throws std::runtime_error carrying the GL log with glsl/
+// A program that does not compile or link: a broken build or driver, never an
+// input file. what() is the GL log, several lines, each naming glsl/FILE:LINE;
+// the commands print it whole (other errors are one line, io/message_text.h).
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Builds a program; throws ShaderError carrying the GL log with glsl/
 // file names and lines when compiling or linking fails.
 unsigned build_program(const GlApi& gl, const ProgramKey& key);
 
@@ -26,7 +39,7 @@ public:
     ProgramCache(const ProgramCache&) = delete;
     ProgramCache& operator=(const ProgramCache&) = delete;
 
-    unsigned get(const ProgramKey& key);
+    unsigned get(ProgramKey key);
     std::size_t size() const { return programs_.size(); }
 
 private:

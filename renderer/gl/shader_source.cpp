@@ -1,7 +1,10 @@
 #include "gl/shader_source.h"
 
 #include "gl/glsl_sources.h"
+#include "models/glsl_generator.h"
 
+#include <algorithm>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -18,39 +21,62 @@ const char* find_glsl_source(const std::string& path) {
 namespace {
 
 struct Composer {
+    const ExtraSources& extra;
     ComposedShader out;
-    std::set<std::string> included;
+    std::map<std::string, int> numbers;  // path -> its source-string number
+    std::vector<std::string> open;       // files being included, outermost first
+
+    const char* find(const std::string& path) const {
+        for (const auto& [name, text] : extra)
+            if (name == path) return text.c_str();
+        return find_glsl_source(path);
+    }
+
+    int number_of(const std::string& path) {
+        const auto [it, added] = numbers.emplace(path, int(out.files.size()));
+        if (added) out.files.push_back(path.rfind("generated/", 0) == 0 ? path : "glsl/" + path);
+        return it->second;
+    }
 
     void append(const std::string& path, const std::string& from) {
-        if (!included.insert(path).second) return;
-        const char* text = find_glsl_source(path);
+        if (std::find(open.begin(), open.end(), path) != open.end())
+            throw std::runtime_error(from + ": \"" + path + "\" includes itself");
+        const char* text = find(path);
         if (!text) throw std::runtime_error(from + ": unknown glsl file \"" + path + "\"");
-        const int number = int(out.files.size());
-        out.files.push_back(path);
+        const std::string number = std::to_string(number_of(path));
+        const std::string guard = "M3055_INCLUDED_" + number;
+        open.push_back(path);
+        out.text += "#ifndef " + guard + "\n#define " + guard + "\n#line 1 " + number + "\n";
         std::istringstream lines(text);
         std::string line;
         int line_number = 0;
-        out.text += "#line 1 " + std::to_string(number) + "\n";
         while (std::getline(lines, line)) {
             ++line_number;
             static const std::regex include(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
             std::smatch match;
             if (std::regex_match(line, match, include)) {
-                append(match[1].str(), "glsl/" + path + ":" + std::to_string(line_number));
-                out.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(number) + "\n";
+                append(match[1].str(), out.files[std::size_t(std::stoi(number))] + ":" + std::to_string(line_number));
+                out.text += "#line " + std::to_string(line_number + 1) + " " + number + "\n";
             } else if (line.rfind("#version", 0) == 0) {
                 out.text += "\n";  // the composed shader's #version comes first, once
             } else {
                 out.text += line + "\n";
             }
         }
+        out.text += "#endif\n";
+        open.pop_back();
     }
 };
 
 }  // namespace
 
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines) {
-    Composer composer;
+    return compose_shader(path, defines, generated_glsl());
+}
+
+ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
+                              const ExtraSources& extra) {
+    Composer composer{extra, {}, {}, {}};
     composer.out.text = "#version 330 core\n";
     for (const auto& define : defines) composer.out.text += "#define " + define + "\n";
     composer.append(path, "compose_shader");
@@ -68,7 +94,7 @@ std::string annotate_shader_log(const std::string& log, const std::vector<std::s
         const std::size_t file = std::stoul(match[2].str());
         const std::string line = match[3].matched ? match[3].str() : match[5].str();
         result += match[1].str();
-        result += file < files.size() ? "glsl/" + files[file] : "source " + match[2].str();
+        result += file < files.size() ? files[file] : "source " + match[2].str();
         result += ":" + line;
         if (match[4].matched) result += ":" + match[4].str();
         begin = match[0].second;

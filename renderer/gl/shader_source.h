@@ -1,6 +1,9 @@
-// Composes a shader from glsl/ files: resolves `#include "path"` (each file
-// once), inserts #defines after #version, and numbers every file in #line
-// directives so a GL compile log can name the file and line.
+// Composes a shader from glsl/ files and the files generated from the model
+// table (models/glsl_generator.h): resolves `#include "path"`, inserts
+// #defines after #version, and numbers every file in #line directives so a GL
+// compile log can name the file and line. Each included file is wrapped in an
+// include guard and inlined where it is included, so a file first included
+// inside an inactive #if block is still there where a later #include needs it.
 #pragma once
 
 #include <string>
@@ -10,11 +13,17 @@ namespace m3055 {
 
 struct ComposedShader {
     std::string text;                // ready for glShaderSource
-    std::vector<std::string> files;  // source-string number -> glsl/ path
+    std::vector<std::string> files;  // source-string number -> "glsl/PATH" (or "generated/PATH")
 };
 
-// Throws std::runtime_error naming the file when a path or include is unknown.
+// Files that are not in glsl/: (path, text), e.g. models/glsl_generator.h's.
+using ExtraSources = std::vector<std::pair<std::string, std::string>>;
+
+// Throws std::runtime_error naming the file when a path or include is unknown
+// or an include is circular. `extra` defaults to the model table's files.
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines);
+ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
+                              const ExtraSources& extra);
 
 // Rewrites a GL info log's "N:LINE(COL)" / "N(LINE)" prefixes to "glsl/PATH:LINE".
 std::string annotate_shader_log(const std::string& log, const std::vector<std::string>& files);

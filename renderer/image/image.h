@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,12 +35,20 @@ void write_file_atomic(const std::string& path, const void* bytes, std::size_t s
 
 // Writes several files all or nothing as far as the filesystem allows: all
 // temporary files first, then the renames (which only fail if the folder
-// changes under us between the two steps).
+// changes under us between the two steps). `committed`, when given, runs once
+// every file is in place, under the lock an interrupt waits for
+// (image/temporary_files.h): what it counts is exactly what was written.
+// A target that exists and is not a regular file (a FIFO, a device, a folder,
+// a symbolic link) is an error; nothing is written then.
 struct FileContents {
     std::string path;
     std::vector<std::uint8_t> bytes;
+    // Written after `bytes` when not null, without a copy: the raw image's
+    // floats (768 MiB at 8192 x 8192), which must outlive the write.
+    const void* more = nullptr;
+    std::size_t more_size = 0;
 };
-void write_files_atomic(const std::vector<FileContents>& files);
+void write_files_atomic(const std::vector<FileContents>& files, const std::function<void()>& committed = {});
 
 void write_png(const std::string& path, const Rgb8Image& image);
 void write_pfm(const std::string& path, const RgbFloatImage& image);
@@ -47,6 +56,10 @@ void write_pfm(const std::string& path, const RgbFloatImage& image);
 // Encodes in memory (used for byte-identity checks and by write_*).
 std::vector<std::uint8_t> encode_png(const Rgb8Image& image);
 std::vector<std::uint8_t> encode_pfm(const RgbFloatImage& image);
+// The PFM file for write_files_atomic, the same bytes as encode_pfm(image):
+// the header, then on a little-endian host `image`'s own pixels, borrowed
+// (`image` must outlive the write), not copied.
+FileContents pfm_file(const std::string& path, const RgbFloatImage& image);
 
 // Readers, for tests and tools. Throw ImageError on failure.
 Rgb8Image read_png(const std::string& path);

@@ -87,15 +87,20 @@ std::vector<std::uint8_t> read_all(const std::string& path) {
     return bytes;
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> encode_pfm(const RgbFloatImage& image) {
+// "PF\n<w> <h>\n-1.0\n" (little-endian data), after checking the buffer's size.
+std::string pfm_header(const RgbFloatImage& image) {
     const std::size_t count = std::size_t(image.width) * std::size_t(image.height) * 3;
     if (image.width <= 0 || image.height <= 0 || image.pixels.size() != count)
         throw ImageError("encode_pfm: pixel buffer does not match " + std::to_string(image.width) +
                          "x" + std::to_string(image.height) + " RGB");
-    const std::string header =
-        "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    return "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_pfm(const RgbFloatImage& image) {
+    const std::string header = pfm_header(image);
+    const std::size_t count = image.pixels.size();
     std::vector<std::uint8_t> out(header.begin(), header.end());
     out.resize(header.size() + count * 4);
     // Rows are already bottom to top (as PFM wants); only byte order may need work.
@@ -109,6 +114,15 @@ std::vector<std::uint8_t> encode_pfm(const RgbFloatImage& image) {
         }
     }
     return out;
+}
+
+FileContents pfm_file(const std::string& path, const RgbFloatImage& image) {
+    if (!host_is_little_endian()) return {path, encode_pfm(image)};
+    const std::string header = pfm_header(image);
+    FileContents file{path, std::vector<std::uint8_t>(header.begin(), header.end())};
+    file.more = image.pixels.data();
+    file.more_size = image.pixels.size() * sizeof(float);
+    return file;
 }
 
 void write_pfm(const std::string& path, const RgbFloatImage& image) {

@@ -32,31 +32,39 @@ void put_chunk(std::vector<std::uint8_t>& out, const char type[4], const std::ui
 // Scanlines with the "up" filter (type 2: each byte minus the one above).
 // The display's images are large flat areas and smooth vertical gradations,
 // which "up" turns into runs of zeros that run-length deflate packs tightly.
-std::vector<std::uint8_t> filtered_scanlines(const Rgb8Image& image) {
+// PNG filter 2 (Up) of row `y` into `out` (stride + 1 bytes, the filter type first).
+void filter_row(const Rgb8Image& image, int y, std::uint8_t* out) {
     const std::size_t stride = std::size_t(image.width) * 3;
-    std::vector<std::uint8_t> rows(std::size_t(image.height) * (stride + 1));
-    for (int y = 0; y < image.height; ++y) {
-        const std::uint8_t* row = &image.pixels[std::size_t(y) * stride];
-        const std::uint8_t* above = y > 0 ? row - stride : nullptr;
-        std::uint8_t* out = &rows[std::size_t(y) * (stride + 1)];
-        out[0] = 2;
-        for (std::size_t i = 0; i < stride; ++i) out[i + 1] = std::uint8_t(row[i] - (above ? above[i] : 0));
-    }
-    return rows;
+    const std::uint8_t* row = &image.pixels[std::size_t(y) * stride];
+    const std::uint8_t* above = y > 0 ? row - stride : nullptr;
+    out[0] = 2;
+    for (std::size_t i = 0; i < stride; ++i) out[i + 1] = std::uint8_t(row[i] - (above ? above[i] : 0));
 }
 
-std::vector<std::uint8_t> deflate_fast(const std::vector<std::uint8_t>& data) {
+// The filtered scanlines, deflated one row at a time: neither the filtered
+// image nor a worst-case output buffer (each as large as the image, 192 MiB at
+// 8192 x 8192) is held. Feeding deflate in pieces without flushing gives the
+// same stream as feeding it all at once.
+std::vector<std::uint8_t> deflate_rows(const Rgb8Image& image) {
     // Z_RLE at level 1: several times faster than stb's encoder, and smaller on
     // these images. Deterministic for a given zlib version.
     z_stream stream{};
     if (deflateInit2(&stream, 1, Z_DEFLATED, 15, 8, Z_RLE) != Z_OK) throw ImageError("encode_png: deflateInit2 failed");
-    std::vector<std::uint8_t> out(deflateBound(&stream, uLong(data.size())));
-    stream.next_in = const_cast<Bytef*>(data.data());
-    stream.avail_in = uInt(data.size());
-    stream.next_out = out.data();
-    stream.avail_out = uInt(out.size());
-    const int status = deflate(&stream, Z_FINISH);
-    out.resize(stream.total_out);
+    std::vector<std::uint8_t> row(std::size_t(image.width) * 3 + 1), out;
+    std::uint8_t buffer[1 << 16];
+    int status = Z_OK;
+    for (int y = 0; y < image.height && status != Z_STREAM_ERROR; ++y) {
+        filter_row(image, y, row.data());
+        stream.next_in = row.data();
+        stream.avail_in = uInt(row.size());
+        const int flush = y + 1 == image.height ? Z_FINISH : Z_NO_FLUSH;
+        do {
+            stream.next_out = buffer;
+            stream.avail_out = uInt(sizeof buffer);
+            status = deflate(&stream, flush);
+            out.insert(out.end(), buffer, buffer + (sizeof buffer - stream.avail_out));
+        } while (status == Z_OK && (stream.avail_out == 0 || flush == Z_FINISH));
+    }
     deflateEnd(&stream);
     if (status != Z_STREAM_END) throw ImageError("encode_png: deflate failed");
     return out;
@@ -77,7 +85,7 @@ std::vector<std::uint8_t> encode_png(const Rgb8Image& image) {
     put_u32(header, std::uint32_t(image.height));
     header.insert(header.end(), {8, 2, 0, 0, 0});  // 8 bits, RGB, deflate, adaptive filters, no interlace
     put_chunk(out, "IHDR", header.data(), header.size());
-    const std::vector<std::uint8_t> compressed = deflate_fast(filtered_scanlines(image));
+    const std::vector<std::uint8_t> compressed = deflate_rows(image);
     put_chunk(out, "IDAT", compressed.data(), compressed.size());
     put_chunk(out, "IEND", nullptr, 0);
     return out;

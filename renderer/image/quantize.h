@@ -1,4 +1,4 @@
-// SPEC section 2: the M3055's quantization, on the CPU. The GLSL post pass
+// docs/spec.md#2-display: the M3055's quantization, on the CPU. The GLSL post pass
 // (glsl/passes/quantize.frag) computes exactly the same thing.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The camera as the shaders use it (SPEC 3), computed once per frame in double.
+// The camera as the shaders use it (docs/spec.md#3-geometry), computed once per frame in double.
 #pragma once
 
 #include "scene/scene.h"

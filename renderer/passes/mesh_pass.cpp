@@ -1,5 +1,7 @@
 #include "passes/mesh_pass.h"
 
+#include "models/model_spec.h"
+
 #include "geometry/mesh.h"
 
 #include <glm/geometric.hpp>
@@ -53,12 +55,8 @@ double far_to_near_mesh_key(const CameraFrame& frame, const Object& object) {
     return glm::dot(d, d);
 }
 
-MeshPass::MeshPass(const GlApi& gl) : gl_(gl) {
-    gl_.GenVertexArrays(1, &vao_);
-    gl_.GenBuffers(1, &vertex_buffer_);
-    gl_.GenBuffers(1, &index_buffer_);
-    gl_.BindVertexArray(vao_);
-    gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+MeshPass::MeshPass(const GlApi& gl) : gl_(gl), buffers_(gl) {
+    buffers_.bind();
     const GLsizei stride = sizeof(Vertex);
     gl_.EnableVertexAttribArray(0);
     gl_.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void*)offsetof(Vertex, position));
@@ -66,51 +64,43 @@ MeshPass::MeshPass(const GlApi& gl) : gl_(gl) {
     gl_.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (void*)offsetof(Vertex, normal));
     gl_.EnableVertexAttribArray(2);
     gl_.VertexAttribIPointer(2, 1, GL_INT, stride, (void*)offsetof(Vertex, material));
-    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);  // recorded in the VAO
     gl_.BindVertexArray(0);
-}
-
-MeshPass::~MeshPass() {
-    gl_.DeleteVertexArrays(1, &vao_);
-    unsigned buffers[] = {vertex_buffer_, index_buffer_};
-    gl_.DeleteBuffers(2, buffers);
 }
 
 void MeshPass::prepare(const Scene& scene, const CameraFrame& frame) {
     opaque_objects_.clear();
     translucent_objects_.clear();
     translucent_.clear();
+    opaque_ranges_.clear();
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
     // Opaque meshes first, as one batch; then one range per translucent mesh.
     for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const Object& object = scene.objects[i];
-            if (object.shape == Shape::sphere || is_translucent(object.material.model) != (pass == 1)) continue;
+            if (object.shape == Shape::sphere || is_translucent(object.material) != (pass == 1)) continue;
             const std::size_t first = indices.size();
             append(geometry::make_mesh(object), int(i), pass == 1 ? &frame : nullptr, vertices, indices);
             if (pass == 0) {
                 opaque_objects_.push_back(&object);
+                opaque_ranges_.push_back({first, indices.size() - first, &object});
             } else {
                 translucent_objects_.push_back(&object);
-                translucent_.push_back({far_to_near_mesh_key(frame, object), first, indices.size() - first});
+                translucent_.push_back({far_to_near_mesh_key(frame, object), first, indices.size() - first, &object});
             }
         }
         if (pass == 0) opaque_count_ = indices.size();
     }
     if (indices.empty()) return;
-    gl_.BindVertexArray(vao_);
-    gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-    gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STREAM_DRAW);
-    gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(),
-                   GL_STREAM_DRAW);
+    buffers_.upload(vertices.data(), vertices.size() * sizeof(Vertex), indices.data(),
+                    indices.size() * sizeof(std::uint32_t), GL_STREAM_DRAW);
     gl_.BindVertexArray(0);
 }
 
 void MeshPass::draw(std::size_t first, std::size_t count) const {
     if (!count) return;
     gl_.Enable(GL_CULL_FACE);  // GL's default: cull clockwise (back) faces
-    gl_.BindVertexArray(vao_);
+    gl_.BindVertexArray(buffers_.vao());
     gl_.DrawElements(GL_TRIANGLES, GLsizei(count), GL_UNSIGNED_INT, (void*)(first * sizeof(std::uint32_t)));
     gl_.BindVertexArray(0);
     gl_.Disable(GL_CULL_FACE);

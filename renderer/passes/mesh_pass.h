@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/indexed_vertex_array.h"
 #include "passes/camera_frame.h"
 #include "scene/scene.h"
 
@@ -16,15 +17,13 @@ namespace m3055 {
 class MeshPass {
 public:
     explicit MeshPass(const GlApi& gl);
-    ~MeshPass();
-    MeshPass(const MeshPass&) = delete;
-    MeshPass& operator=(const MeshPass&) = delete;
 
     // A translucent mesh in draw order terms: `key` sorts like the spheres'
     // far_to_near_key (larger = farther), see far_to_near_mesh_key.
     struct Translucent {
         double key;
         std::size_t first, count;  // its range in the index buffer
+        const Object* object;
     };
 
     // Builds and uploads every non-sphere object's mesh: opaque ones in one
@@ -32,21 +31,30 @@ public:
     void prepare(const Scene& scene, const CameraFrame& frame);
 
     const std::vector<const Object*>& opaque_objects() const { return opaque_objects_; }
+    // Each opaque mesh's range of the index buffer, in draw order (draw_opaque
+    // draws them all at once; the Renderer draws them in chunks).
+    struct Range {
+        std::size_t first, count;
+        const Object* object;
+    };
+    const std::vector<Range>& opaque_ranges() const { return opaque_ranges_; }
     const std::vector<const Object*>& translucent_objects() const { return translucent_objects_; }
     const std::vector<Translucent>& translucent() const { return translucent_; }
 
     // Draw with the program in use (camera, lights and materials already set).
-    // Back faces are culled: only front faces are shaded (SPEC 3).
+    // Back faces are culled: only front faces are shaded (docs/spec.md#3-geometry).
     void draw_opaque() const;
     void draw_translucent(const Translucent& mesh) const;
+    // Any part of the index buffer, e.g. a chunk of the ranges above.
+    void draw(std::size_t first, std::size_t count) const;
 
 private:
-    void draw(std::size_t first, std::size_t count) const;
     const GlApi& gl_;
-    unsigned vao_ = 0, vertex_buffer_ = 0, index_buffer_ = 0;
+    IndexedVertexArray buffers_;
     std::size_t opaque_count_ = 0;
     std::vector<const Object*> opaque_objects_, translucent_objects_;
     std::vector<Translucent> translucent_;
+    std::vector<Range> opaque_ranges_;
 };
 
 // Back-to-front key of a translucent mesh, comparable with the spheres' power

@@ -1,4 +1,4 @@
-// Geometry of the accuracy-checked path (SPEC 3): pixel-centre camera rays
+// Geometry of the accuracy-checked path (docs/spec.md#3-geometry): pixel-centre camera rays
 // and exact ray/sphere intersection.
 #include "reference/reference.h"
 
@@ -12,7 +12,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
-// SPEC 3: pixel (x, y), y = 0 the top row, sampled at its centre.
+// docs/spec.md#3-geometry: pixel (x, y), y = 0 the top row, sampled at its centre.
 Ray camera_ray(const Camera& camera, int width, int height, int x, int y) {
     const double u = 2.0 * (double(x) + 0.5) / double(width) - 1.0;
     const double v = 1.0 - 2.0 * (double(y) + 0.5) / double(height);

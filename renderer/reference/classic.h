@@ -1,4 +1,4 @@
-// The double-precision CPU twin of the seeds' classic models (SPEC 5,
+// The double-precision CPU twin of the seeds' classic models (docs/spec.md#5-classic-models,
 // docs/models.md): one function per term, with the names of the GLSL terms in
 // glsl/terms/ (diffuse.glsl, distributions.glsl, fresnel.glsl, anisotropic.glsl)
 // and glsl/models/classic.glsl.
@@ -13,6 +13,12 @@
 #include "reference/reference.h"
 
 namespace m3055::ref {
+
+// The microfacet model's choices of D and F, in the order of its table entry's
+// "distribution" and "fresnel" choices (models/builtin_models.cpp; a test
+// holds the two together): Material::choice gives the index.
+enum class Distribution { blinn_phong, gaussian, beckmann, ggx };
+enum class Fresnel { none, schlick, dielectric };
 
 // ---- Diffuse: the factor of K_diff (x) L_diff ---------------------------------
 
@@ -38,9 +44,6 @@ double oren_nayar(double sigma, double NoL, double NoV, double LoV);
 double phong_lobe(double shininess, double RoV);
 // Blinn 1977 (seed 003): ((N.H)+)^shininess.
 double blinn_phong_lobe(double shininess, double NoH);
-// Heidrich & Seidel 1998 (seed 002): ((sin(L,T) sin(V,T) - cos(L,T) cos(V,T))+)^n
-// = (cos x)^n with x = pi - angle(L,T) - angle(V,T), from the two angles.
-double heidrich_seidel_lobe(double n, double angle_LT, double angle_VT);
 
 // ---- Microfacet normal distributions, normalized: integral D (N.h) dw = 1 -------
 
@@ -48,9 +51,7 @@ double heidrich_seidel_lobe(double n, double angle_LT, double angle_VT);
 double blinn_phong_D(double n, double NoH);
 // Torrance-Sparrow's Gaussian (lecture, seed 002): b exp(-(theta_h / m)^2), b = gaussian_norm(m).
 double gaussian_D(double m, double b, double theta_h);
-// b = 1 / (2 pi integral_0^{pi/2} exp(-(t/m)^2) cos t sin t dt), by Simpson's rule
-// over [0, min(pi/2, 9 m)] (exp(-81) is below 1e-35): the normalization of gaussian_D.
-double gaussian_norm(double m);
+// (b: numeric::gaussian_norm, numeric/normalization.h.)
 // Beckmann (Cook & Torrance 1982): the paper's delta(m, alpha) / pi,
 // exp(-tan^2 a / m^2) / (pi m^2 cos^4 a).
 double beckmann_normalized_D(double m, double NoH);
@@ -90,17 +91,18 @@ TangentFrame tangent_frame(const dvec3& axis, const dvec3& N);
 double ward_specular(double alpha_x, double alpha_y, double NoL, double NoV, double HoT, double HoB,
                      double HoN);
 
-// ---- Models -------------------------------------------------------------------------
+// ---- Models ---------------------------------------------------------------------------
+// Each classic model's hook (ClassicReflectFn, reference/reference.h), named
+// NAME_reflect, is in classic_models.cpp; its table entry points at it.
 
-// I_diff / (K_diff (x) L_diff) for a diffuse term (lambert for the specular models).
-double classic_diffuse(const Material& material, double NoL, double NoV, double LoV);
-// I_spec / L_spec (K_spec included) for unit N, L, V; zero for diffuse-only models.
+// I_spec / L_spec, K_spec included (its hook with K_diff = 0), for unit N, L, V;
+// zero for diffuse-only models and where N.L <= 0.
 dvec3 classic_specular(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V);
 // The BRDF f(L, V) = (I_diff + I_spec) / (pi (N.L) L) for N.L > 0: what the
 // reciprocity and energy tests integrate.
 dvec3 classic_brdf(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V);
 
-// The lecture's equation at a point (seed 003):
+// The lecture's equation at a point (seed 003), the classic family's composer:
 //   I = L_glob K_amb + L_emi + sum_k C_spot,k { a_k ambient_k K_amb + att_k (I_diff,k + I_spec,k) }.
 dvec3 shade_classic(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
                     const dvec3& global_ambient);

@@ -1,6 +1,11 @@
-// The classic models (SPEC 5) in the lecture's shading equation (seed 003),
-// built from classic_terms.cpp. C++ twin of glsl/models/classic.glsl.
+// The classic models (docs/spec.md#5-classic-models) in the lecture's shading equation (seed 003),
+// built from classic_terms.cpp: each model's hook NAME_reflect (the colour one
+// light reflects per unit light scale) and the family's composer
+// shade_classic. C++ twin of glsl/models/classic.glsl, with the same names.
 #include "reference/classic.h"
+
+#include "models/model_spec.h"
+#include "numeric/normalization.h"
 
 #include <glm/geometric.hpp>
 
@@ -25,82 +30,130 @@ double angle_between(const dvec3& a, const dvec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
+}  // namespace
+
+// ---- Diffuse hooks: the factor of K_diff (x) L_diff ------------------------------------
+
+double diffuse_lambert(const Material&, double NoL, double, double) { return lambert(NoL); }
+double diffuse_half_lambert(const Material&, double NoL, double, double) { return half_lambert(NoL); }
+double diffuse_half_lambert_clamped(const Material&, double NoL, double, double) { return half_lambert_clamped(NoL); }
+
+double diffuse_half_lambert_normalized(const Material&, double NoL, double, double) {
+    return half_lambert_normalized(NoL);
+}
+
+double diffuse_oren_nayar(const Material& material, double NoL, double NoV, double LoV) {
+    return oren_nayar(material.number("sigma"), NoL, NoV, LoV);
+}
+
+// Minnaert 1941: (k + 1)/2 (N.L)^k (N.V)^(k - 1), N.V floored at 1e-4 as in the GLSL.
+double diffuse_minnaert(const Material& material, double NoL, double NoV, double) {
+    if (!(NoL > 0.0)) return 0.0;
+    const double k = material.number("minnaert_k");
+    return 0.5 * (k + 1.0) * std::pow(NoL, k) * std::pow(std::max(NoV, 1e-4), k - 1.0);
+}
+
+// ---- Specular hooks: I_spec / L_spec, K_spec included, 0 where N.L <= 0 --------------------
+
+dvec3 specular_phong(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                     double) {
+    if (!(NoL > 0.0)) return dvec3(0.0);
+    return phong_lobe(material.number("shininess"), glm::dot(2.0 * NoL * N - L, V)) * material.vec3("ks");
+}
+
+dvec3 specular_blinn_phong(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                           double) {
+    if (!(NoL > 0.0)) return dvec3(0.0);
+    return blinn_phong_lobe(material.number("shininess"), glm::dot(N, half_vector(L, V, N))) * material.vec3("ks");
+}
+
 // D G F / (4 N.L N.V) as pi f N.L = pi sum_j w_j D_j G F / (4 N.V), with G / N.V
 // from ct_G_over_NoV (finite at grazing view, as the paper's metal).
-double microfacet_specular(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V,
-                           double NoL, double NoV) {
+double microfacet_lobe(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                       double NoV) {
     const dvec3 H = half_vector(L, V, N);
     const double NoH = glm::dot(N, H);
     const double VoH = 0.5 * glm::length(L + V);  // = V.H for unit L, V, without cancellation
     const double theta_h = angle_between(N, H);
+    const auto distribution = static_cast<Distribution>(material.choice("distribution"));
     double D = 0.0;
-    for (const Lobe& lobe : material.lobes) D += lobe.w * microfacet_D(material.distribution, lobe.m, NoH, theta_h);
+    for (const Lobe& lobe : material.lobes()) D += lobe.w * microfacet_D(distribution, lobe.m, NoH, theta_h);
     if (D == 0.0) return 0.0;
+    const auto fresnel = static_cast<Fresnel>(material.choice("fresnel"));
+    const double ior = material.number("ior");
     double F = 1.0;
-    if (material.fresnel == Fresnel::schlick) F = schlick_F(schlick_F0(material.ior), VoH);
-    if (material.fresnel == Fresnel::dielectric) F = dielectric_F(material.ior, VoH);
+    if (fresnel == Fresnel::schlick) F = schlick_F(schlick_F0(ior), VoH);
+    if (fresnel == Fresnel::dielectric) F = dielectric_F(ior, VoH);
     return kPi * D * ct_G_over_NoV(NoH, NoV, NoL, VoH) * F / 4.0;
 }
 
-}  // namespace
+dvec3 specular_microfacet(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                          double NoV) {
+    if (!(NoL > 0.0)) return dvec3(0.0);
+    return microfacet_lobe(material, N, L, V, NoL, std::max(NoV, 0.0)) * material.vec3("ks");
+}
 
-double classic_diffuse(const Material& material, double NoL, double NoV, double LoV) {
-    switch (material.model) {
-        case Model::lambert: return lambert(NoL);
-        case Model::half_lambert: return half_lambert(NoL);
-        case Model::half_lambert_clamped: return half_lambert_clamped(NoL);
-        case Model::half_lambert_normalized: return half_lambert_normalized(NoL);
-        case Model::oren_nayar: return oren_nayar(material.sigma, NoL, NoV, LoV);
-        default: return has_specular(material.model) ? lambert(NoL) : 0.0;
-    }
+dvec3 specular_ward(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                    double NoV) {
+    if (!(NoL > 0.0)) return dvec3(0.0);
+    const TangentFrame frame = tangent_frame(material.vec3("axis"), N);
+    const dvec3 h = L + V;
+    return ward_specular(material.number("alpha_x"), material.number("alpha_y"), NoL, std::max(NoV, 0.0),
+                         glm::dot(h, frame.T), glm::dot(h, frame.B), glm::dot(h, N)) *
+           material.vec3("ks");
+}
+
+// Heidrich & Seidel 1998 (seed 002): ((sin(L,T) sin(V,T) - cos(L,T) cos(V,T))+)^n
+// = (cos x)^n with x = pi - angle(L,T) - angle(V,T), from the two angles.
+double heidrich_seidel_lobe(double n, double angle_LT, double angle_VT) {
+    return pow_safe(std::cos(kPi - angle_LT - angle_VT), n);
+}
+
+dvec3 specular_heidrich_seidel(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V,
+                               double NoL, double) {
+    if (!(NoL > 0.0)) return dvec3(0.0);
+    const TangentFrame frame = tangent_frame(material.vec3("axis"), N);
+    return heidrich_seidel_lobe(material.number("shininess"), angle_between(L, frame.T), angle_between(V, frame.T)) *
+           material.vec3("ks");
+}
+
+// ---- The family and its views ---------------------------------------------------------------
+
+// I_diff + I_spec for unit light scale: the two hooks of the material's model.
+static dvec3 classic_reflect(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
+                             double NoV) {
+    const ReferenceHooks& hooks = material.model().reference;
+    const double diffuse = hooks.classic_diffuse(material, NoL, NoV, glm::dot(L, V));
+    dvec3 I = diffuse * material.vec3("kd");
+    if (hooks.classic_specular) I += hooks.classic_specular(material, N, L, V, NoL, NoV);
+    return I;
 }
 
 dvec3 classic_specular(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V) {
-    const double NoL = glm::dot(N, L);
-    if (!has_specular(material.model) || !(NoL > 0.0)) return dvec3(0.0);
-    const double NoV = std::max(glm::dot(N, V), 0.0);
-    double lobe = 0.0;
-    switch (material.model) {
-        case Model::phong: lobe = phong_lobe(material.shininess, glm::dot(2.0 * NoL * N - L, V)); break;
-        case Model::blinn_phong: lobe = blinn_phong_lobe(material.shininess, glm::dot(N, half_vector(L, V, N))); break;
-        case Model::microfacet: lobe = microfacet_specular(material, N, L, V, NoL, NoV); break;
-        case Model::ward: {
-            const TangentFrame frame = tangent_frame(material.axis, N);
-            const dvec3 h = L + V;
-            lobe = ward_specular(material.alpha_x, material.alpha_y, NoL, NoV, glm::dot(h, frame.T),
-                                 glm::dot(h, frame.B), glm::dot(h, N));
-            break;
-        }
-        case Model::heidrich_seidel: {
-            const TangentFrame frame = tangent_frame(material.axis, N);
-            lobe = heidrich_seidel_lobe(material.shininess, angle_between(L, frame.T), angle_between(V, frame.T));
-            break;
-        }
-        default: break;
-    }
-    return lobe * material.ks;
+    ClassicSpecularFn* specular = material.model().reference.classic_specular;
+    return specular ? specular(material, N, L, V, glm::dot(N, L), glm::dot(N, V)) : dvec3(0.0);
 }
 
 dvec3 classic_brdf(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V) {
     const double NoL = glm::dot(N, L);
     if (!(NoL > 0.0)) return dvec3(0.0);
-    const double diffuse = classic_diffuse(material, NoL, glm::dot(N, V), glm::dot(L, V));
-    return (diffuse * material.kd + classic_specular(material, N, L, V)) / (kPi * NoL);
+    return classic_reflect(material, N, L, V, NoL, glm::dot(N, V)) / (kPi * NoL);
 }
 
+// The lecture's equation over the lights (glsl/models/classic.glsl shade_classic).
 dvec3 shade_classic(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
                     const dvec3& global_ambient) {
-    dvec3 I = global_ambient * material.ka + material.emission;
+    const dvec3 ka = material.vec3("ka");
+    dvec3 I = global_ambient * ka + material.vec3("emission");
     const double NoV = glm::dot(point.N, point.V);
     for (const Light& light : lights) {
         if (!light.enabled) continue;
         const LightSample sample = sample_light(light, point.P);
         // I_amb,k = C_spot,k a_k ambient_k (x) K_amb: spot-shaped, not attenuated (lecture).
-        I += sample.spot * light.intensity * light.ambient * material.ka;
+        I += sample.spot * light.intensity * light.ambient * ka;
         const double NoL = glm::dot(point.N, sample.L);
-        const double diffuse = classic_diffuse(material, NoL, NoV, glm::dot(sample.L, point.V));
         // sample.scale = a_k c_k att_k C_spot,k
-        I += sample.scale * (diffuse * material.kd + classic_specular(material, point.N, sample.L, point.V));
+        I += sample.scale * classic_reflect(material, point.N, sample.L, point.V, NoL, NoV);
     }
     return I;
 }

@@ -1,6 +1,8 @@
-// The classic models' scalar terms (SPEC 5), one function per term; each
+// The classic models' scalar terms (docs/spec.md#5-classic-models), one function per term; each
 // mirrors the GLSL function of the same name in glsl/terms/.
 #include "reference/classic.h"
+
+#include "numeric/normalization.h"
 
 #include <glm/geometric.hpp>
 
@@ -43,9 +45,6 @@ double phong_lobe(double shininess, double RoV) { return pow_safe(RoV, shininess
 
 double blinn_phong_lobe(double shininess, double NoH) { return pow_safe(NoH, shininess); }
 
-double heidrich_seidel_lobe(double n, double angle_LT, double angle_VT) {
-    return pow_safe(std::cos(kPi - angle_LT - angle_VT), n);
-}
 
 // ---- Distributions -------------------------------------------------------------------
 
@@ -54,16 +53,6 @@ double blinn_phong_D(double n, double NoH) { return (n + 2.0) / (2.0 * kPi) * po
 double gaussian_D(double m, double b, double theta_h) {
     const double x = theta_h / m;
     return b * std::exp(-x * x);
-}
-
-double gaussian_norm(double m) {
-    const double upper = std::min(kPi / 2.0, 9.0 * m);
-    const int n = 400;  // even; ~44 intervals per width m: error far below 1e-9
-    const double h = upper / n;
-    auto f = [m](double t) { return std::exp(-(t / m) * (t / m)) * std::cos(t) * std::sin(t); };
-    double sum = f(0.0) + f(upper);
-    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * f(i * h);
-    return 1.0 / (2.0 * kPi * sum * h / 3.0);
 }
 
 double beckmann_normalized_D(double m, double NoH) { return beckmann_D(m, NoH) / kPi; }
@@ -86,7 +75,7 @@ double microfacet_D(Distribution distribution, double m, double NoH, double thet
             thread_local int next = 0;
             for (int i = 0; i < 4; ++i)
                 if (cached_m[i] == m) return gaussian_D(m, cached_b[i], theta_h);
-            const double b = gaussian_norm(m);
+            const double b = numeric::gaussian_norm(m);
             cached_m[next] = m, cached_b[next] = b, next = (next + 1) % 4;
             return gaussian_D(m, b, theta_h);
         }

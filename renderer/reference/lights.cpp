@@ -1,4 +1,4 @@
-// What each light delivers at a surface point (SPEC 3 and 5): direction
+// What each light delivers at a surface point (docs/spec.md#3-geometry and #5-classic-models): direction
 // towards the light and the colour scale a_l c_l att_l C_spot,l.
 #include "reference/reference.h"
 
@@ -8,21 +8,20 @@
 
 namespace m3055::ref {
 
-// SPEC 5: distance attenuation 1 / (S_c + S_l r + S_q r^2); the floor keeps an
+// docs/spec.md#5-classic-models: distance attenuation 1 / (S_c + S_l r + S_q r^2); the floor keeps an
 // all-zero set of coefficients finite.
 static double distance_attenuation(const Light& light, double r) {
     const double denom = light.att_constant + light.att_linear * r + light.att_quadratic * r * r;
     return 1.0 / std::max(denom, 1e-6);
 }
 
-// SPEC 5: C_spot = ((-L . L_dir)+)^L_exp, L_dir the direction the spot shines along.
+// docs/spec.md#5-classic-models: C_spot = ((-L . L_dir)+)^L_exp, L_dir the direction the spot shines along.
 static double spot_factor(const Light& light, const dvec3& L) {
     return pow_safe(-glm::dot(L, light.spot_direction), light.spot_exponent);
 }
 
 LightSample sample_light(const Light& light, const dvec3& P) {
     LightSample sample;
-    sample.lobes = light.lobes.empty() ? nullptr : &light.lobes;
     sample.scale = dvec3(0.0);
     sample.L = dvec3(0.0);
 

@@ -1,8 +1,12 @@
-// The paper's reflection models (SPEC 4), built from the terms in terms.cpp.
-// Every light l enters through its direction L_l and its scale a_l c_l att spot
-// (lights.cpp); a light with N.L_l <= 0 contributes nothing at all (SPEC 4).
+// The paper's reflection models (docs/spec.md#4-paper-models) and the dispatch by family, built
+// from the terms in terms.cpp; the C++ twin of glsl/models/highlight.glsl,
+// translucent.glsl, metal.glsl and shade.glsl, with the same names. Every
+// light l enters through its direction L_l and its scale a_l c_l att spot
+// (lights.cpp); a light with N.L_l <= 0 contributes nothing (docs/spec.md#4-paper-models).
 #include "reference/reference.h"
 #include "reference/classic.h"
+
+#include "models/model_spec.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -13,147 +17,131 @@ namespace m3055::ref {
 
 namespace {
 
-// One light as seen from the surface point, kept only where N.L > 0.
-struct LitLight {
-    dvec3 L;
-    dvec3 scale;  // a_l c_l (att_l C_spot,l)
-    double NoL;   // > 0
-    const Light* light;
-};
-
-std::vector<LitLight> lights_facing(const std::vector<Light>& lights, const SurfacePoint& point) {
-    std::vector<LitLight> lit;
-    for (const Light& light : lights) {
-        const LightSample sample = sample_light(light, point.P);
-        const double NoL = glm::dot(point.N, sample.L);
-        if (!(NoL > 0.0)) continue;  // SPEC 4: no diffuse, no highlight, no lobe
-        lit.push_back({sample.L, sample.scale, NoL, &light});
-    }
-    return lit;
-}
-
-// SPEC 3: R_l = 2 (N.L_l) N - L_l; returns R.V.
-double mirror_RoV(const LitLight& l, const SurfacePoint& point) {
-    const dvec3 R = 2.0 * l.NoL * point.N - l.L;
+// docs/spec.md#3-geometry: R_l = 2 (N.L_l) N - L_l; returns R.V.
+double mirror_RoV(const dvec3& L, double NoL, const SurfacePoint& point) {
+    const dvec3 R = 2.0 * NoL * point.N - L;
     return glm::dot(R, point.V);
 }
 
-// SPEC 3: H_l = normalize(L_l + V). L + V is non-zero whenever N.L > 0 and
-// N.V >= 0; the fallback only keeps degenerate input finite.
-dvec3 half_vector(const LitLight& l, const SurfacePoint& point) {
-    const dvec3 sum = l.L + point.V;
-    const double len = glm::length(sum);
-    return len > 0.0 ? sum / len : point.N;
+// docs/spec.md#3-geometry: H_l = normalize(L_l + V), from L + V, or N where L = -V exactly
+// (L + V is non-zero whenever N.L > 0 and N.V >= 0; the fallback only keeps
+// degenerate input finite), as glsl/models/metal.glsl's function of this name.
+dvec3 half_vector_or_normal(const dvec3& L, const dvec3& V, const dvec3& N) {
+    const dvec3 sum = L + V;
+    return glm::dot(sum, sum) > 0.0 ? sum : N;
 }
 
-// eq. 3 (several lights): D = [d + (1 - d) sum_l a_l c_l (N.L_l)+] C0.
-dvec3 diffuse_D(const Material& material, const std::vector<LitLight>& lit) {
-    dvec3 sum(0.0);
-    for (const LitLight& l : lit) sum += l.scale * l.NoL;
-    return (material.d + (1.0 - material.d) * sum) * material.color;
+dvec3 half_vector(const dvec3& L, const SurfacePoint& point) {
+    return glm::normalize(half_vector_or_normal(L, point.V, point.N));
 }
 
-// eq. 4, one light's share of white: s_l = clamp(w a_l c_l ((R_l.V)+)^m, 0, 1).
-dvec3 highlight_share(const Material& material, const LitLight& l, const SurfacePoint& point) {
-    const double lobe = pow_safe(mirror_RoV(l, point), material.m);
-    return glm::clamp(material.w * lobe * l.scale, dvec3(0.0), dvec3(1.0));
+// sum_j w_j (c+)^n_j over the lobes light `light` uses on `material`.
+double exponent_lobe_sum(const Material& material, const Light& light, double c) {
+    double sum = 0.0;
+    for (const Lobe& lobe : lobes_for(light, material)) sum += lobe.w * pow_safe(c, lobe.m);
+    return sum;
 }
 
-// eq. 4 applied once per light: what is left of the non-white part,
-// prod_l (1 - s_l). Independent of the order of the lights.
-dvec3 remaining_after_highlights(const Material& material, const std::vector<LitLight>& lit,
-                                 const SurfacePoint& point) {
-    dvec3 remaining(1.0);
-    for (const LitLight& l : lit) remaining *= dvec3(1.0) - highlight_share(material, l, point);
-    return remaining;
-}
+// The highlight model's two parts, shared with the translucent model (docs/spec.md#42-translucent):
+//   C1   = min([d + (1 - d) sum_l a_l c_l (N.L_l)+] C0, 1)      (eq. 3)
+//   keep = prod_l (1 - s_l)                                        (eq. 4, once per light)
+struct HighlightParts {
+    dvec3 C1;
+    dvec3 keep;
+};
 
-// eq. 3-4 (4.1): C = 1 - (1 - C1) prod_l (1 - s_l), C1 = min(D, 1).
-dvec3 shade_highlight(const Material& material, const std::vector<LitLight>& lit,
-                      const SurfacePoint& point) {
-    const dvec3 C1 = glm::min(diffuse_D(material, lit), dvec3(1.0));
-    return dvec3(1.0) - (dvec3(1.0) - C1) * remaining_after_highlights(material, lit, point);
-}
-
-// eq. 12-14 (4.3): C = { d + sum_l a_l c_l sum_j w_j delta(m_j, a_l) G_l / (N.V) } C0,
-// with Fresnel F = C0 (the paper's assumption 3).
-dvec3 shade_metal(const Material& material, const std::vector<LitLight>& lit,
-                  const SurfacePoint& point) {
-    const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
-    dvec3 sum(0.0);
-    for (const LitLight& l : lit) {
-        const dvec3 H = half_vector(l, point);
-        const double NoH = glm::dot(point.N, H);
-        // V.H = |L + V| / 2 for unit L, V: dot(V, H) cancels when L is nearly
-        // -V (2% off at |L + V| = 1e-7, past the bound 2 / V.H on G / N.V).
-        // L = -V exactly gives 0, hence no lobe, as before.
-        const double VoH = 0.5 * glm::length(l.L + point.V);
-        const double G_over_NoV = ct_G_over_NoV(NoH, NoV, l.NoL, VoH);
-        double lobes = 0.0;
-        for (const Lobe& lobe : lobes_for(*l.light, material))
-            lobes += lobe.w * beckmann_D(lobe.m, NoH);
-        sum += l.scale * (lobes * G_over_NoV);
+HighlightParts highlight_parts(const Material& material, const std::vector<Light>& lights,
+                               const SurfacePoint& point) {
+    const double d = material.number("d"), w = material.number("w"), m = material.number("m");
+    dvec3 diffuse(0.0), keep(1.0);
+    for (const Light& light : lights) {
+        const LightSample sample = sample_light(light, point.P);
+        const double NoL = glm::dot(point.N, sample.L);
+        if (!(NoL > 0.0)) continue;  // docs/spec.md#4-paper-models: no diffuse, no highlight
+        diffuse += sample.scale * NoL;
+        keep *= dvec3(1.0) - highlight_strength(w, sample.scale, mirror_RoV(sample.L, NoL, point), m);
     }
-    return (material.d + sum) * material.color;
-}
-
-// eq. 15 (4.4): C = { d + sum_l a_l c_l sum_j w_j ((N.H_l)+)^n_j } C0.
-dvec3 shade_metal_blinn(const Material& material, const std::vector<LitLight>& lit,
-                        const SurfacePoint& point) {
-    dvec3 sum(0.0);
-    for (const LitLight& l : lit) {
-        const double NoH = glm::dot(point.N, half_vector(l, point));
-        double lobes = 0.0;
-        for (const Lobe& lobe : lobes_for(*l.light, material)) lobes += lobe.w * pow_safe(NoH, lobe.m);
-        sum += l.scale * lobes;
-    }
-    return (material.d + sum) * material.color;
-}
-
-// eq. 16 (4.4): C = { d + sum_l a_l c_l sum_j w_j ((R_l.V)+)^n_j } C0.
-dvec3 shade_metal_phong(const Material& material, const std::vector<LitLight>& lit,
-                        const SurfacePoint& point) {
-    dvec3 sum(0.0);
-    for (const LitLight& l : lit) {
-        const double RoV = mirror_RoV(l, point);
-        double lobes = 0.0;
-        for (const Lobe& lobe : lobes_for(*l.light, material)) lobes += lobe.w * pow_safe(RoV, lobe.m);
-        sum += l.scale * lobes;
-    }
-    return (material.d + sum) * material.color;
+    return {glm::min((d + (1.0 - d) * diffuse) * material.vec3("color"), dvec3(1.0)), keep};
 }
 
 }  // namespace
 
-dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
-                   const SurfacePoint& point, const dvec3& global_ambient) {
-    if (is_classic(material.model)) return shade_classic(material, lights, point, global_ambient);
-    const std::vector<LitLight> lit = lights_facing(lights, point);
-    switch (material.model) {
-        case Model::highlight:
-        case Model::translucent:  // as if t = 1: exactly the highlight model
-            return shade_highlight(material, lit, point);
-        case Model::metal: return shade_metal(material, lit, point);
-        case Model::metal_blinn: return shade_metal_blinn(material, lit, point);
-        case Model::metal_phong: return shade_metal_phong(material, lit, point);
-        default: break;  // the classic models returned above
-    }
-    return dvec3(0.0);
+// ---- highlight (eq. 3-4) and translucent (eq. 5-8) -------------------------------
+
+dvec3 shade_highlight(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    const HighlightParts parts = highlight_parts(material, lights, point);
+    return highlight_to_white(parts.C1, parts.keep);
 }
 
-// eq. 5-8 (4.2), as a premultiplied "over": with P = prod_l (1 - s_l) and
-// t = Kay's opacity, C = 1 - (1 - C1) P, C1 = (1 - t) C_B + t min(D, 1) gives
-//   C = [(1 - P) + P t min(D, 1)] + [P (1 - t)] C_B.
+// As a premultiplied "over": with keep = prod_l (1 - s_l) and t = Kay's
+// opacity, C = 1 - (1 - C1') keep, C1' = (1 - t) C_B + t C1 gives
+//   C = [(1 - keep) + keep t C1] + [keep (1 - t)] C_B.
 TranslucentShade shade_translucent(const Material& material, const std::vector<Light>& lights,
                                    const SurfacePoint& point) {
-    const std::vector<LitLight> lit = lights_facing(lights, point);
-    const double t = kay_opacity(material.t_n, material.t_p, glm::dot(point.N, point.V));
-    const dvec3 P = remaining_after_highlights(material, lit, point);
-    const dvec3 D = glm::min(diffuse_D(material, lit), dvec3(1.0));
-    TranslucentShade shade;
-    shade.color = (dvec3(1.0) - P) + P * t * D;
-    shade.transmittance = P * (1.0 - t);
-    return shade;
+    const HighlightParts parts = highlight_parts(material, lights, point);
+    const double t = kay_opacity(material.number("t_n"), material.number("t_p"), glm::dot(point.N, point.V));
+    return {(dvec3(1.0) - parts.keep) + parts.keep * t * parts.C1, parts.keep * (1.0 - t)};
+}
+
+// ---- metals (eq. 12-16): each model's sum_j w_j lobe_j for one light -------------
+
+// metal (eq. 12-13): sum_j w_j delta(m_j, alpha) G / (N.V), F = C0 (assumption 3).
+double beckmann_lobe_sum(const Material& material, const Light& light, const SurfacePoint& point,
+                         const dvec3& L, double NoL, double NoV) {
+    const dvec3 H = half_vector(L, point);
+    const double NoH = glm::dot(point.N, H);
+    // V.H = |L + V| / 2 for unit L, V: dot(V, H) cancels when L is nearly
+    // -V (2% off at |L + V| = 1e-7, past the bound 2 / V.H on G / N.V).
+    // L = -V exactly gives 0, hence no lobe.
+    const double VoH = 0.5 * glm::length(L + point.V);
+    double sum = 0.0;
+    for (const Lobe& lobe : lobes_for(light, material)) sum += lobe.w * beckmann_D(lobe.m, NoH);
+    return sum * ct_G_over_NoV(NoH, NoV, NoL, VoH);
+}
+
+// metal_blinn (eq. 15): sum_j w_j ((N.H)+)^n_j.
+double blinn_lobe_sum(const Material& material, const Light& light, const SurfacePoint& point, const dvec3& L,
+                      double, double) {
+    return exponent_lobe_sum(material, light, glm::dot(point.N, half_vector(L, point)));
+}
+
+// metal_phong (eq. 16): sum_j w_j ((R.V)+)^n_j.
+double phong_lobe_sum(const Material& material, const Light& light, const SurfacePoint& point, const dvec3& L,
+                      double NoL, double) {
+    return exponent_lobe_sum(material, light, mirror_RoV(L, NoL, point));
+}
+
+// The metal family's dispatcher (generated in GLSL from the model table): the model's hook.
+double metal_lobe_sum(const Material& material, const Light& light, const SurfacePoint& point, const dvec3& L,
+                      double NoL, double NoV) {
+    return material.model().reference.metal(material, light, point, L, NoL, NoV);
+}
+
+// The metal family: C = { d + sum_l a_l c_l lobes_l } C0 over the lights with N.L > 0.
+dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
+    dvec3 sum(0.0);
+    for (const Light& light : lights) {
+        const LightSample sample = sample_light(light, point.P);
+        const double NoL = glm::dot(point.N, sample.L);
+        if (!(NoL > 0.0)) continue;  // docs/spec.md#4-paper-models: no lobe
+        sum += sample.scale * metal_lobe_sum(material, light, point, sample.L, NoL, NoV);
+    }
+    return (material.number("d") + sum) * material.vec3("color");
+}
+
+// ---- every model -------------------------------------------------------------------
+
+dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
+                   const dvec3& global_ambient) {
+    const ModelSpec& model = material.model();
+    switch (model.family) {
+        case Family::classic: return shade_classic(material, lights, point, global_ambient);
+        case Family::metal: return shade_metal(material, lights, point);
+        case Family::opaque: return model.reference.opaque(material, lights, point);
+        case Family::translucent: return shade_highlight(material, lights, point);  // as if t = 1
+    }
+    return dvec3(0.0);
 }
 
 }  // namespace m3055::ref

@@ -1,4 +1,4 @@
-// The double-precision CPU twin of the GLSL pipeline (SPEC sections 3 and 4).
+// The double-precision CPU twin of the GLSL pipeline (docs/spec.md#3-geometry and #4-paper-models).
 // It mirrors glsl/ term by term, with the same names, and is what the tests
 // hold the GPU path against. It is written for clarity, not speed.
 #pragma once
@@ -12,7 +12,7 @@ namespace m3055::ref {
 
 // ---- Terms (one function per term; see glsl/terms/) -------------------------
 
-// x^e with x^0 = 1 for every x >= 0 (SPEC 4); x is clamped at 0 first.
+// x^e with x^0 = 1 for every x >= 0 (docs/spec.md#4-paper-models); x is clamped at 0 first.
 double pow_safe(double x, double e);
 
 // eq. 13/17: Beckmann distribution delta(m, alpha) = exp(-tan^2 a / m^2) / (m^2 cos^4 a),
@@ -28,6 +28,13 @@ double ct_G_over_NoV(double NoH, double NoV, double NoL, double VoH);
 // eq. 6: Kay's opacity t = t_n ((1 - cos b)+)^t_p, cos b = (N.V)+.
 double kay_opacity(double t_n, double t_p, double NoV);
 
+// eq. 4, one light's share of white per channel: s_l = clamp(w a_l c_l ((R.V)+)^m, 0, 1),
+// scale = a_l c_l (att, spot).
+dvec3 highlight_strength(double w, const dvec3& scale, double RoV, double m);
+
+// eq. 4 once per light: C = 1 - (1 - C1) keep, keep = prod_l (1 - s_l).
+dvec3 highlight_to_white(const dvec3& C1, const dvec3& keep);
+
 // ---- Geometry ----------------------------------------------------------------
 
 struct Ray {
@@ -35,7 +42,7 @@ struct Ray {
     dvec3 dir;  // unit
 };
 
-// SPEC 3: the ray through pixel centre (x + 0.5, y + 0.5), y = 0 the top row.
+// docs/spec.md#3-geometry: the ray through pixel centre (x + 0.5, y + 0.5), y = 0 the top row.
 Ray camera_ray(const Camera& camera, int width, int height, int x, int y);
 
 // Nearest intersection with t > 0 of a ray with a sphere's front face. Returns
@@ -49,7 +56,6 @@ bool intersect_sphere(const Ray& ray, const dvec3& center, double radius, double
 struct LightSample {
     dvec3 L;
     dvec3 scale;
-    const std::vector<Lobe>* lobes;  // the light's own lobes if any, else nullptr
     double spot = 1.0;  // C_spot alone (1 unless a spot light): the classic models' ambient
 };
 LightSample sample_light(const Light& light, const dvec3& P);
@@ -62,21 +68,46 @@ struct SurfacePoint {
     dvec3 V;  // unit vector towards the viewer
 };
 
-// The colour of an opaque point: highlight, metal, metal_blinn, metal_phong,
-// and the classic models of SPEC 5 (reference/classic.h), which also add the
-// scene's global ambient L_glob K_amb (the paper's models have their own d).
-// (Called with a translucent material it returns its colour as if t = 1.)
-dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
-                   const SurfacePoint& point, const dvec3& global_ambient = dvec3(0.0));
-
-// A translucent point as a premultiplied "over" (SPEC 4.2):
+// A translucent point as a premultiplied "over" (docs/spec.md#42-translucent):
 //   C = color + transmittance * C_B
 struct TranslucentShade {
     dvec3 color;
     dvec3 transmittance;
 };
-TranslucentShade shade_translucent(const Material& material, const std::vector<Light>& lights,
-                                   const SurfacePoint& point);
+
+// Each model family's hook: what a model of that family supplies (its table
+// entry points at it; models/model_spec.h). The GLSL hooks have the same names
+// and the same shapes (glsl/models/).
+//   opaque:      the colour at a point, every light included (highlight)
+//   translucent: the premultiplied colour and transmittance (translucent)
+//   metal:       sum_j w_j lobe_j for one light that faces the point (N.L > 0),
+//                over the light's own lobes or the material's (lobes_for)
+//   classic:     two hooks, the lecture's I_diff + I_spec per unit light scale:
+//                the diffuse factor (of K_diff), and the specular colour
+//                (K_spec included, 0 where N.L <= 0); a model may have no specular
+using OpaqueShadeFn = dvec3(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point);
+using TranslucentShadeFn = TranslucentShade(const Material& material, const std::vector<Light>& lights,
+                                            const SurfacePoint& point);
+using MetalLobeSumFn = double(const Material& material, const Light& light, const SurfacePoint& point,
+                              const dvec3& L, double NoL, double NoV);
+using ClassicDiffuseFn = double(const Material& material, double NoL, double NoV, double LoV);
+using ClassicSpecularFn = dvec3(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V,
+                                double NoL, double NoV);
+
+// The colour of an opaque point, by the model's family: the paper's highlight
+// and metals, and the classic models of docs/spec.md#5-classic-models (reference/classic.h), which
+// also add the scene's global ambient L_glob K_amb (the paper's models have
+// their own d). Called with a translucent material it returns the colour the
+// point would have if it were opaque (t = 1): the highlight model's.
+dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
+                   const SurfacePoint& point, const dvec3& global_ambient = dvec3(0.0));
+
+// The paper's models (reference/models.cpp, mirroring glsl/models/highlight.glsl,
+// translucent.glsl and metal.glsl): the highlight and translucent models'
+// hooks, and the metal family's sum over the lights.
+OpaqueShadeFn shade_highlight;
+TranslucentShadeFn shade_translucent;
+dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point);
 
 // ---- Whole image -------------------------------------------------------------
 

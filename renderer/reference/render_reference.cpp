@@ -1,7 +1,9 @@
-// The whole reference image: one exact ray per pixel centre (SPEC 3), the
+// The whole reference image: one exact ray per pixel centre (docs/spec.md#3-geometry), the
 // nearest opaque front face (or the background), then the translucent front
-// faces in front of it composited back to front (SPEC 4.2, Fig. 9).
+// faces in front of it composited back to front (docs/spec.md#42-translucent, Fig. 9).
 #include "reference/reference.h"
+
+#include "models/model_spec.h"
 
 #include "reference/mesh_hits.h"
 
@@ -76,7 +78,7 @@ std::uint64_t coverage_signature(std::vector<Hit> hits) {
     return sig == 0 ? 1 : sig;
 }
 
-// SPEC 3: N = (P - C) / radius (normalized again for rounding), V = -ray direction.
+// docs/spec.md#3-geometry: N = (P - C) / radius (normalized again for rounding), V = -ray direction.
 // Meshes: P on the triangle, N the interpolated normal of the hit.
 SurfacePoint surface_point(const Object& object, const Ray& ray, const Hit& hit) {
     const double t = hit.t;
@@ -93,7 +95,7 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     double t_opaque = std::numeric_limits<double>::infinity();
     for (const Hit& hit : hits) {
         const Object& object = scene.objects[hit.object];
-        if (is_translucent(object.material.model)) continue;
+        if (is_translucent(object.material)) continue;
         color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit), scene.ambient);
         t_opaque = hit.t;
         break;
@@ -101,9 +103,9 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     // Translucent front faces in front of it, farthest first: C = color + T * C_behind.
     for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
         const Object& object = scene.objects[it->object];
-        if (!is_translucent(object.material.model) || !(it->t < t_opaque)) continue;
-        const TranslucentShade shade =
-            shade_translucent(object.material, scene.lights, surface_point(object, ray, *it));
+        if (!is_translucent(object.material) || !(it->t < t_opaque)) continue;
+        const TranslucentShade shade = object.material.model().reference.translucent(
+            object.material, scene.lights, surface_point(object, ray, *it));
         color = shade.color + shade.transmittance * color;
     }
     return color;

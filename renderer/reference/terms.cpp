@@ -1,13 +1,15 @@
-// The scalar terms of the paper's models (SPEC 4), one function per term.
+// The scalar terms of the paper's models (docs/spec.md#4-paper-models), one function per term.
 // Each mirrors the GLSL function of the same name in glsl/terms/.
 #include "reference/reference.h"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace m3055::ref {
 
-// SPEC 4: x^e with x^0 = 1 for every x >= 0 (std::pow(0, 0) is 1 too, but the
+// docs/spec.md#4-paper-models: x^e with x^0 = 1 for every x >= 0 (std::pow(0, 0) is 1 too, but the
 // GLSL pow(0, 0) is undefined, so both sides spell the rule out).
 double pow_safe(double x, double e) {
     x = std::max(x, 0.0);
@@ -54,5 +56,13 @@ double kay_opacity(double t_n, double t_p, double NoV) {
     const double cos_b = std::max(NoV, 0.0);
     return t_n * pow_safe(1.0 - cos_b, t_p);
 }
+
+// eq. 4, one light's share of white: s_l = clamp(w a_l c_l ((R.V)+)^m, 0, 1).
+dvec3 highlight_strength(double w, const dvec3& scale, double RoV, double m) {
+    return glm::clamp(w * pow_safe(RoV, m) * scale, dvec3(0.0), dvec3(1.0));
+}
+
+// eq. 4 once per light: C = 1 - (1 - C1) prod_l (1 - s_l), independent of the lights' order.
+dvec3 highlight_to_white(const dvec3& C1, const dvec3& keep) { return dvec3(1.0) - (dvec3(1.0) - C1) * keep; }
 
 }  // namespace m3055::ref

@@ -1,5 +1,6 @@
 #include "scene/json_node.h"
 
+#include "io/message_text.h"
 #include "scene/load.h"
 
 #include <algorithm>
@@ -13,7 +14,7 @@ namespace m3055::scene_json {
 namespace {
 
 bool is_identifier(const std::string& key) {
-    if (key.empty()) return false;
+    if (key.empty() || key.size() > text::kMaxEchoBytes) return false;
     return std::all_of(key.begin(), key.end(), [](char c) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                c == '_' || c == '-';
@@ -25,49 +26,57 @@ std::string dump_safe(const json& value) {
     return value.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
+// nlohmann quotes the text it could not read: "last read: '<token>'". The
+// token may be a megabyte of digits or raw Latin-1 / UTF-16 bytes; it is
+// escaped and its middle cut, so the message stays one short line of UTF-8.
+std::string shorten_quoted_token(const std::string& message, const std::string& marker) {
+    const std::size_t open = message.find(marker);
+    if (open == std::string::npos) return message;
+    const std::size_t begin = open + marker.size();
+    const std::size_t close = message.rfind('\'');
+    if (close == std::string::npos || close < begin) return message;
+    return message.substr(0, begin) + text::one_line(std::string_view(message).substr(begin, close - begin),
+                                                      text::kMaxEchoBytes) +
+           message.substr(close);
+}
+
 }  // namespace
 
 std::string join_key(const std::string& path, const std::string& key) {
     if (is_identifier(key)) return path.empty() ? key : path + "." + key;
-    return path + "[" + dump_safe(json(key)) + "]";
+    // Quoted with escapes (a key may hold a newline or invalid UTF-8) and cut.
+    return path + "[" + text::quote(key) + "]";
 }
 
 std::string join_index(const std::string& path, std::size_t index) {
     return path + "[" + std::to_string(index) + "]";
 }
 
-std::string format_number(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    char buffer[40];
-    if (value == std::floor(value) && std::fabs(value) < 1e15) {
-        std::snprintf(buffer, sizeof buffer, "%.0f", value);
-        return value == 0.0 ? "0" : buffer;  // no "-0"
-    }
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
-        if (std::strtod(buffer, nullptr) == value) break;
-    }
-    return buffer;
-}
+std::string format_number(double value) { return text::format_number(value); }
 
 std::string describe(const json& value) {
+    // Integers exactly as written (a double would round 2^53 + 1).
+    if (value.is_number_unsigned()) return std::to_string(value.get<json::number_unsigned_t>());
+    if (value.is_number_integer()) return std::to_string(value.get<json::number_integer_t>());
     if (value.is_number()) return format_number(value.get<double>());
-    std::string text = dump_safe(value);
-    constexpr std::size_t kMax = 40;
-    if (text.size() > kMax) text = text.substr(0, kMax) + "...";
-    return text;
+    if (value.is_string()) {
+        // Only the start of a long string is dumped: a 10 MB value is not copied to be cut.
+        const std::string& s = value.get_ref<const std::string&>();
+        if (s.size() > 4 * text::kMaxEchoBytes) return text::cut_end(dump_safe(json(s.substr(0, 4 * text::kMaxEchoBytes))));
+    }
+    return text::cut_end(dump_safe(value));
 }
 
 std::string json_problem(const std::string& what) {
-    std::string text = what;
-    if (!text.empty() && text[0] == '[') {
-        const std::size_t end = text.find("] ");
-        if (end != std::string::npos) text = text.substr(end + 2);
+    std::string message = what;
+    if (!message.empty() && message[0] == '[') {
+        const std::size_t end = message.find("] ");
+        if (end != std::string::npos) message = message.substr(end + 2);
     }
-    for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    return text;
+    message = shorten_quoted_token(message, "last read: '");
+    message = shorten_quoted_token(message, "overflow parsing '");
+    // Escaped (one line, valid UTF-8); nlohmann's own text is short once its token is cut.
+    return text::one_line(message, 200);
 }
 
 bool Range::contains(double x) const {
@@ -87,7 +96,9 @@ const Range kUnit = closed(0.0, 1.0);
 const Range kCoordinate = closed(-1e6, 1e6);
 
 void Node::fail(const std::string& problem) const {
-    throw SceneError(source() + ": " + (path_.empty() ? "(root)" : path_) + ": " + problem);
+    // A path 64 levels deep of long keys is cut in the middle, like a long file name.
+    throw SceneError(source() + ": " + (path_.empty() ? "(root)" : text::one_line(path_, text::kMaxPathBytes)) +
+                     ": " + problem);
 }
 
 void Node::expect_object() const {
@@ -136,17 +147,16 @@ double Node::number() const {
 
 double Node::number_in(const Range& range) const {
     const double x = number();
-    if (!range.contains(x)) fail("must be " + range.text() + ", got " + format_number(x));
+    if (!range.contains(x)) fail("must be " + range.text() + ", got " + describe(value()));
     return x;
 }
 
 int Node::whole_in(int lo, int hi) const {
     const double x = number();
-    if (x != std::floor(x)) fail("must be a whole number, got " + format_number(x));
+    if (x != std::floor(x)) fail("must be a whole number, got " + describe(value()));
     // Compare as double before converting: 1e20 must not overflow the int.
     if (x < lo || x > hi)
-        fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-             format_number(x));
+        fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + describe(value()));
     return static_cast<int>(x);
 }
 

@@ -1,7 +1,8 @@
 // A JSON value together with the place it sits in the scene file, so that every
-// check can report "SOURCE: json.path: problem" as one line (SPEC section 7).
+// check can report "SOURCE: json.path: problem" as one line (docs/spec.md#7-scene-files).
 #pragma once
 
+#include "models/range.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -29,18 +30,7 @@ std::string describe(const json& value);
 // on one line: "parse error at line 3, column 5: syntax error ...".
 std::string json_problem(const std::string& what);
 
-// An interval for range checks. Upper bound +inf is printed as "> lo" / ">= lo".
-struct Range {
-    double lo;
-    double hi;
-    bool lo_open = false;
-    bool hi_open = false;
-    bool contains(double x) const;
-    std::string text() const;  // "in [0, 1]", "in (0, 180)", "> 0"
-};
-
-// Ranges the format uses in several places.
-Range closed(double lo, double hi);
+// Ranges the format uses in several places (Range: models/range.h).
 extern const Range kUnit;         // colours, d, w, t_n: [0, 1]
 extern const Range kCoordinate;   // positions and centres: [-1e6, 1e6] (keeps r^2 finite)
 

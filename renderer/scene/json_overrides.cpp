@@ -1,6 +1,7 @@
 // `--set path=value` overrides: parse_override and apply_overrides (load.h).
 // The document is edited before validation, so a bad value gets the same
 // message it would get in the file.
+#include "io/message_text.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
@@ -22,17 +23,11 @@ struct Step {
     std::size_t index = 0;
 };
 
-// `text` as a JSON string: in quotes, control characters escaped.
-std::string quoted(const std::string& text) {
-    return json(text).dump(-1, ' ', false, json::error_handler_t::replace);
-}
-// Command-line text as it appears in a message: as typed, unless it holds a
-// control character (a newline would split the one-line message), then quoted.
-std::string one_line(const std::string& text) {
-    for (const unsigned char c : text)
-        if (c < 0x20 || c == 0x7f) return quoted(text);
-    return text;
-}
+// `key` as a JSON string: in quotes, escaped, a long one cut (io/message_text.h).
+std::string quoted(const std::string& key) { return text::quote(key); }
+// Command-line text as it appears in a message: as typed when plain, else
+// quoted with escapes (a newline would split the one-line message); cut when long.
+std::string one_line(const std::string& typed) { return text::quote_name(typed); }
 
 [[noreturn]] void fail(const std::string& source, const std::string& path, const std::string& problem) {
     throw SceneError(source + ": --set " + one_line(path) + ": " + problem);

@@ -1,11 +1,11 @@
-// scene_to_json: Scene -> the SPEC section 7 format. Doubles are stored as JSON
+// scene_to_json: Scene -> the docs/spec.md#7-scene-files format. Doubles are stored as JSON
 // doubles, which nlohmann writes in their shortest exact form, so
 // scene_from_json(scene_to_json(s)) == s for any scene the loader produced.
 // Fields a model / light type / projection does not read are not written (the
 // loader would reject them); they come back as the struct defaults.
 #include "scene/load.h"
 
-#include "scene/json_classic.h"
+#include "scene/json_material.h"
 #include "scene/json_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -57,32 +57,9 @@ json light_json(const Light& light) {
         out["spot_exponent"] = light.spot_exponent;
     }
     if (light.ambient != dvec3(0.0)) out["ambient"] = vec(light.ambient);  // absent = none
+    if (!light.name.empty()) out["name"] = light.name;
     if (!light.lobes.empty())
         out["lobes"] = lobes_json(light.lobes, light.lobe_kind == LobeKind::beckmann ? "m" : "n");
-    return out;
-}
-
-json material_json(const Material& material) {
-    if (is_classic(material.model)) return scene_json::classic_material_json(material);
-    json out = {{"model", to_string(material.model)}, {"color", vec(material.color)}, {"d", material.d}};
-    switch (material.model) {
-        case Model::translucent:
-            out["t_n"] = material.t_n;
-            out["t_p"] = material.t_p;
-            [[fallthrough]];
-        case Model::highlight:
-            out["w"] = material.w;
-            out["m"] = material.m;
-            break;
-        case Model::metal:
-            out["lobes"] = lobes_json(material.lobes, "m");
-            break;
-        case Model::metal_blinn:
-        case Model::metal_phong:
-            out["lobes"] = lobes_json(material.lobes, "n");
-            break;
-        default: break;  // the classic models returned above
-    }
     return out;
 }
 
@@ -94,7 +71,7 @@ json scene_to_json(const Scene& scene) {
     json objects = json::array();
     for (const Object& object : scene.objects) {
         json entry = scene_json::shape_json(object);
-        entry["material"] = material_json(object.material);
+        entry["material"] = scene_json::material_json(object.material);
         objects.push_back(std::move(entry));
     }
     json out = {{"display", display_json(scene.display)},

@@ -1,9 +1,9 @@
 // Light direction maths for the explorer's lights panel, kept free of any UI
 // code so it can be unit-tested: azimuth/elevation angles and the "drag on a
-// small sphere" widget both map to the same unit vector (SPEC 3: the vector
+// small sphere" widget both map to the same unit vector (docs/spec.md#3-geometry: the vector
 // from the surface towards the light).
 //
-// World frame as the default camera sees it (SPEC 7 default camera at +z
+// World frame as the default camera sees it (docs/spec.md#7-scene-files default camera at +z
 // looking at the origin): +x right, +y up, +z towards the viewer.
 //   azimuth   a: angle in the x-z plane, 0 = towards the viewer (+z),
 //                +90 = right (+x), +-180 = behind the object (-z);

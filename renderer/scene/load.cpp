@@ -1,9 +1,12 @@
-// Scene files (SPEC section 7) -> validated Scene. Every check goes through
+// Scene files (docs/spec.md#7-scene-files) -> validated Scene. Every check goes through
 // scene_json::Node so that each error is one line "SOURCE: json.path: problem".
 #include "scene/load.h"
 
 #include "geometry/mesh.h"
-#include "scene/json_classic.h"
+#include "io/input_file.h"
+#include "io/message_text.h"
+#include "models/model_table.h"
+#include "scene/json_material.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
@@ -11,10 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 
 namespace m3055 {
 
@@ -29,9 +29,7 @@ namespace {
 
 constexpr std::size_t kMaxObjects = 100000;
 
-const Range kLobeWeight = closed(0.0, 100.0);
-const Range kBeckmannM = closed(0.001, 2.0);
-const Range kExponent = closed(0.0, 10000.0);  // highlight m, lobe n, spot exponent
+const Range kExponent = closed(0.0, 10000.0);  // spot exponent
 
 // ---- display ----------------------------------------------------------------
 
@@ -91,11 +89,12 @@ Camera read_camera(const Node& node) {
 
 // ---- lobes ------------------------------------------------------------------
 
-// Material lobes: every entry {"w", key} where key is "m" (metal) or "n".
-std::vector<Lobe> read_material_lobes(const Node& node, Model model) {
-    const bool beckmann = model == Model::metal;
-    return read_lobe_list(node, beckmann ? "m" : "n", beckmann ? "n" : "m", kLobeWeight,
-                          beckmann ? kBeckmannM : kExponent, std::string("model ") + to_string(model));
+// A light's own lobes replace the material's for the models that read them
+// (ModelSpec::light_lobes), so they have those models' ranges.
+const LobeForm& light_lobe_form(LobeKind kind) {
+    for (const ModelSpec& spec : model_table().models())
+        if (spec.light_lobes == kind) return spec.param("lobes").forms.at(0);
+    throw std::logic_error("no model of the table reads light lobes of this kind");
 }
 
 // A light's own lobes: all Beckmann {"w","m"} or all exponent {"w","n"}.
@@ -114,14 +113,27 @@ void read_light_lobes(const Node& node, Light& light) {
             entry.child(key).fail("all lobes of a light must use the same key (lobes[0] uses \"" +
                                   std::string(kind == LobeKind::beckmann ? "n" : "m") + "\")");
         }
+        const LobeForm& form = light_lobe_form(kind);
         Lobe lobe;
-        lobe.w = entry.required("w").number_in(kLobeWeight);
-        lobe.m = entry.child(key).number_in(kind == LobeKind::beckmann ? kBeckmannM : kExponent);
+        lobe.w = entry.required("w").number_in(form.weight);
+        lobe.m = entry.child(key).number_in(form.value);
         light.lobes.push_back(lobe);
     }
 }
 
 // ---- lights -----------------------------------------------------------------
+
+// A light's "name": 1 to 64 bytes of printable UTF-8.
+std::string read_light_name(const Node& node) {
+    if (!node.value().is_string()) node.fail("must be a string");
+    const std::string& name = node.value().get_ref<const std::string&>();
+    if (name.empty() || name.size() > 64) node.fail("must be 1 to 64 bytes long");
+    const bool control = std::any_of(name.begin(), name.end(), [](char c) {
+        return static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
+    });
+    if (control || !text::is_valid_utf8(name)) node.fail("must be UTF-8 text without control characters");
+    return name;
+}
 
 void read_attenuation(const Node& node, Light& light) {
     const json& value = node.value();
@@ -147,7 +159,7 @@ Light read_light(const Node& node) {
     Light light;
     const std::size_t type = node.required("type").one_of({"directional", "point", "spot"});
     light.type = type == 0 ? LightType::directional : type == 1 ? LightType::point : LightType::spot;
-    std::vector<std::string> allowed = {"type", "intensity", "color", "enabled", "lobes", "ambient"};
+    std::vector<std::string> allowed = {"name", "type", "intensity", "color", "enabled", "lobes", "ambient"};
     if (light.type == LightType::directional) allowed.push_back("direction");
     if (light.type != LightType::directional) allowed.insert(allowed.end(), {"position", "attenuation"});
     if (light.type == LightType::spot) allowed.insert(allowed.end(), {"spot_direction", "spot_exponent"});
@@ -172,91 +184,19 @@ Light read_light(const Node& node) {
     if (node.has("color")) light.color = node.child("color").vec3_in(kUnit);
     if (node.has("enabled")) light.enabled = node.child("enabled").boolean();
     if (node.has("ambient")) light.ambient = node.child("ambient").vec3_in(kUnit);  // classic models
+    if (node.has("name")) light.name = read_light_name(node.child("name"));
     if (node.has("lobes")) read_light_lobes(node.child("lobes"), light);
     return light;
 }
 
-// ---- materials and objects --------------------------------------------------
-
-const std::vector<std::string>& model_names() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> all = {"highlight", "translucent", "metal", "metal_blinn", "metal_phong"};
-        const auto& classic = scene_json::classic_model_names();  // SPEC 5, in Model's order
-        all.insert(all.end(), classic.begin(), classic.end());
-        return all;
-    }();
-    return names;
-}
-
-// The keys each model reads, besides "model" and "color".
-std::vector<std::string> model_keys(Model model) {
-    switch (model) {
-        case Model::highlight: return {"d", "w", "m"};
-        case Model::translucent: return {"d", "w", "m", "t_n", "t_p"};
-        case Model::metal:
-        case Model::metal_blinn:
-        case Model::metal_phong: return {"d", "lobes"};
-        default: break;  // the classic models: scene/json_classic.cpp
-    }
-    return {};
-}
-
-// The paper's defaults for each model (SPEC 4, Fig. 10).
-Material default_material(Model model) {
-    Material material;
-    material.model = model;
-    if (uses_lobes(model)) material.d = 0.05;
-    if (model == Model::metal) material.lobes = {{0.013, 0.2}, {0.1, 0.4}};
-    if (model == Model::metal_blinn) material.lobes = {{1.0, 13.0}};
-    if (model == Model::metal_phong) material.lobes = {{1.0, 20.0}};
-    return material;
-}
-
-Material read_material(const Node& node) {
-    node.expect_object();
-    const Model model = static_cast<Model>(node.required("model").one_of(model_names()));
-    if (is_classic(model)) return scene_json::read_classic_material(node, model);
-    std::vector<std::string> allowed = model_keys(model);
-    allowed.insert(allowed.end(), {"model", "color"});
-    const std::string problem = std::string("not a parameter of model ") + to_string(model);
-    node.check_keys(allowed, [&](const std::string& key) {
-        for (const std::string& known : model_keys(Model::translucent)) if (key == known) return problem;
-        return key == "lobes" || scene_json::is_classic_material_key(key) ? problem : std::string();
-    });
-
-    Material material = default_material(model);
-    material.color = node.required("color").vec3_in(kUnit);
-    if (node.has("d")) material.d = node.child("d").number_in(kUnit);
-    if (node.has("w")) material.w = node.child("w").number_in(kUnit);
-    if (node.has("m")) material.m = node.child("m").number_in(kExponent);
-    if (node.has("t_n")) material.t_n = node.child("t_n").number_in(kUnit);
-    if (node.has("t_p")) material.t_p = node.child("t_p").number_in(closed(0.0, 10.0));
-    if (node.has("lobes")) material.lobes = read_material_lobes(node.child("lobes"), model);
-    return material;
-}
+// ---- objects (materials: scene/json_material.cpp) ---------------------------
 
 Object read_object(const Node& node) {
     node.expect_object();
     Object object;
     scene_json::read_shape(node, object);  // shape, centre and the shape's own keys
-    object.material = read_material(node.required("material"));
+    object.material = scene_json::read_material(node.required("material"));
     return object;
-}
-
-// ---- files ------------------------------------------------------------------
-
-std::string read_file(const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) throw SceneError(path + ": cannot read file: " + std::strerror(errno));
-    std::string text;
-    char buffer[65536];
-    std::size_t got = 0;
-    while ((got = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, got);
-    const bool failed = std::ferror(file) != 0;
-    const int error = errno;  // e.g. EISDIR: fopen of a folder succeeds, reading fails
-    std::fclose(file);
-    if (failed) throw SceneError(path + ": cannot read file: " + std::strerror(error));
-    return text;
 }
 
 }  // namespace
@@ -291,10 +231,17 @@ Scene scene_from_json(const json& doc, const std::string& source) {
 }
 
 Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
-    const std::string text = read_file(path);
-    json doc = scene_json::parse_document(text, path);
-    apply_overrides(doc, overrides, path);
-    return scene_from_json(doc, path);
+    // The file name as every message shows it: quoted with escapes when it
+    // holds a newline or invalid UTF-8, its middle cut when long.
+    const std::string source = text::quote_name(path);
+    json doc;
+    try {
+        doc = scene_json::parse_document(io::read_input_file(path), source);
+    } catch (const io::InputError& error) {
+        throw SceneError(error.what());
+    }
+    apply_overrides(doc, overrides, source);
+    return scene_from_json(doc, source);
 }
 
 }  // namespace m3055

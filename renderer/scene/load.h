@@ -1,4 +1,4 @@
-// Scene loading: JSON (SPEC section 7) -> validated Scene.
+// Scene loading: JSON (docs/spec.md#7-scene-files) -> validated Scene.
 // Every error names the file and the JSON path, e.g.
 //   scene.json: objects[0].material.m: must be in [0, 10000], got -3
 #pragma once
@@ -42,7 +42,7 @@ Scene scene_from_json(const nlohmann::json& doc, const std::string& source);
 // (unreadable file, invalid JSON, validation failure).
 Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
 
-// Serializes a Scene back to JSON in the SPEC section 7 format (round-trips
+// Serializes a Scene back to JSON in the docs/spec.md#7-scene-files format (round-trips
 // through scene_from_json). Used by the explorer's save.
 nlohmann::json scene_to_json(const Scene& scene);
 

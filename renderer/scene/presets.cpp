@@ -1,5 +1,6 @@
 #include "scene/presets.h"
 
+#include "models/model_table.h"
 #include "scene/light_direction.h"
 
 #include <glm/geometric.hpp>
@@ -10,9 +11,10 @@ namespace m3055 {
 
 namespace {
 
-Light directional(double azimuth_deg, double elevation_deg, double intensity,
+Light directional(const char* name, double azimuth_deg, double elevation_deg, double intensity,
                   dvec3 color = {1.0, 1.0, 1.0}) {
     Light light;
+    light.name = name;
     light.type = LightType::directional;
     light.direction = direction_from_angles({azimuth_deg, elevation_deg});
     light.intensity = intensity;
@@ -25,9 +27,8 @@ Light directional(double azimuth_deg, double elevation_deg, double intensity,
 // shadow side, and a back (rim) light behind and above that outlines the
 // silhouette.
 std::vector<Light> three_point(dvec3 key_color) {
-    return {directional(45.0, 35.0, 1.0, key_color),  // key
-            directional(-60.0, 10.0, 0.4),             // fill
-            directional(160.0, 45.0, 0.7)};            // back
+    return {directional("key", 45.0, 35.0, 1.0, key_color), directional("fill", -60.0, 10.0, 0.4),
+            directional("back", 160.0, 45.0, 0.7)};
 }
 
 }  // namespace
@@ -66,18 +67,20 @@ bool parse_light_preset(const std::string& name, LightPreset* preset) {
 
 std::vector<Light> light_preset(LightPreset preset) {
     switch (preset) {
-        case LightPreset::single_key: return {directional(45.0, 35.0, 1.0)};
+        case LightPreset::single_key: return {directional("key", 45.0, 35.0, 1.0)};
         case LightPreset::three_point_white: return three_point({1.0, 1.0, 1.0});
         case LightPreset::three_point_warm:
             return three_point({kWarmKey[0], kWarmKey[1], kWarmKey[2]});
         case LightPreset::three_point_cool:
             return three_point({kCoolKey[0], kCoolKey[1], kCoolKey[2]});
         case LightPreset::paper_main_secondary: {
-            // Main "upper right": the SPEC 7 example direction (1, 1, 1).
+            // Main "upper right": the docs/spec.md#7-scene-files example direction (1, 1, 1).
             Light main;
+            main.name = "main";
             main.direction = glm::normalize(dvec3(1.0, 1.0, 1.0));
             // Secondary "left and below", in front of the object.
             Light secondary;
+            secondary.name = "secondary";
             secondary.direction = glm::normalize(dvec3(-1.0, -0.6, 0.6));  // as scenes/fig11.json
             secondary.intensity = 0.7;
             return {main, secondary};
@@ -86,49 +89,49 @@ std::vector<Light> light_preset(LightPreset preset) {
     return {};
 }
 
-double highlight_peak(Model model, double d, const std::vector<Lobe>& lobes) {
-    if (!uses_lobes(model)) return d;
+namespace {
+bool is_metal(const Material& material) { return material.model().family == Family::metal; }
+}  // namespace
+
+double highlight_peak(const Material& material) {
+    const double d = material.has("d") ? material.number("d") : 0.0;
+    if (!is_metal(material)) return d;
+    // eq. 13 at alpha = 0: delta(m, 0) = 1 / m^2; exponent lobes peak at 1.
+    const bool beckmann = material.model().param("lobes").form_for(material).key == "m";
     double sum = 0.0;
-    for (const Lobe& lobe : lobes) {
-        // eq. 13 at alpha = 0: delta(m, 0) = 1 / m^2; exponent lobes peak at 1.
-        sum += model == Model::metal ? lobe.w / (lobe.m * lobe.m) : lobe.w;
-    }
+    for (const Lobe& lobe : material.lobes()) sum += beckmann ? lobe.w / (lobe.m * lobe.m) : lobe.w;
     return d + sum;
 }
 
-bool rescale_to_eq14(Model model, double d, std::vector<Lobe>& lobes) {
-    if (!uses_lobes(model) || d >= 1.0) return false;
-    const double specular = highlight_peak(model, d, lobes) - d;
+bool rescale_to_eq14(Material& material) {
+    if (!is_metal(material)) return false;
+    const double d = material.number("d");
+    if (d >= 1.0) return false;
+    const double specular = highlight_peak(material) - d;
     if (!(specular > 0.0) || !std::isfinite(specular)) return false;
     const double factor = (1.0 - d) / specular;  // eq. 14: d + factor * specular = 1
-    for (const Lobe& lobe : lobes) {
-        if (lobe.w * factor > 100.0) return false;  // SPEC 7: lobe weights in [0, 100]
+    const Range& weights = material.model().param("lobes").form_for(material).weight;
+    std::vector<Lobe> lobes = material.lobes().to_vector();
+    for (Lobe& lobe : lobes) {
+        lobe.w *= factor;
+        if (!weights.contains(lobe.w)) return false;
     }
-    for (Lobe& lobe : lobes) lobe.w *= factor;
+    material.set_lobes(lobes);
     return true;
 }
 
 Scene default_scene() {
-    Scene scene;  // scene.h defaults are the SPEC 7 example's display and camera
+    Scene scene;  // scene.h defaults are the docs/spec.md#7-scene-files example's display and camera
     scene.lights = {Light{}};
     scene.lights[0].direction = glm::normalize(dvec3(1.0, 1.0, 1.0));
     Object sphere;
-    sphere.material.model = Model::highlight;
-    sphere.material.color = {0.8, 0.2, 0.2};
-    sphere.material.d = 0.5;
-    sphere.material.w = 1.0;
-    sphere.material.m = 10.0;
+    sphere.material = Material::of("highlight");
+    sphere.material.set_vec3("color", {0.8, 0.2, 0.2});
+    sphere.material.set_number("d", 0.5);
+    sphere.material.set_number("w", 1.0);
+    sphere.material.set_number("m", 10.0);
     scene.objects = {sphere};
     return scene;
-}
-
-std::vector<Lobe> default_lobes(Model model) {
-    switch (model) {
-        case Model::metal: return {{0.013, 0.2}, {0.1, 0.4}};  // Fig. 10
-        case Model::metal_blinn: return {{0.95, 13.0}};         // Fig. 12's n = 13
-        case Model::metal_phong: return {{0.19, 20.0}, {0.76, 3.0}};  // scenes/fig13.json
-        default: return {};
-    }
 }
 
 }  // namespace m3055

@@ -45,22 +45,18 @@ inline constexpr double kCoolKey[3] = {0.65, 0.8, 1.0};
 //   metal:                    d + sum_j w_j / m_j^2      (Beckmann delta(m, 0) = 1/m^2)
 //   metal_blinn, metal_phong: d + sum_j w_j              (cos^n 0 = 1)
 // The paper chooses the weights so that this is 1 (eq. 14). Returns d for
-// models without lobes.
-double highlight_peak(Model model, double d, const std::vector<Lobe>& lobes);
+// models without lobes (0 for those without d).
+double highlight_peak(const Material& material);
 
 // Scales every w_j by one factor so that highlight_peak(...) == 1 (eq. 14),
 // keeping the lobes' proportions. Returns false and leaves the lobes alone
-// when that is impossible: no lobe weight to scale (sum 0), d >= 1, or a
-// scaled weight would leave SPEC 7's range [0, 100].
-bool rescale_to_eq14(Model model, double d, std::vector<Lobe>& lobes);
+// when that is impossible: not a metal, no lobe weight to scale (sum 0),
+// d >= 1, or a scaled weight would leave the weights' range (docs/spec.md#7-scene-files: [0, 100]).
+bool rescale_to_eq14(Material& material);
 
 // ---- Default scene -------------------------------------------------------------
-// What the explorer shows when started without --scene: the SPEC 7 example
+// What the explorer shows when started without --scene: the docs/spec.md#7-scene-files example
 // (a red highlight sphere on the M3055, one white light upper right).
 Scene default_scene();
-
-// Sensible lobes when the model selector switches a material to a metal model
-// (the lobes of scenes/fig10, fig12 and fig13.json; they all meet eq. 14 with d = 0.05).
-std::vector<Lobe> default_lobes(Model model);
 
 }  // namespace m3055

@@ -2,7 +2,7 @@
  * m3055 uses and advertises Mesa's surfaceless platform and one EGL device,
  * initializes its displays, but refuses every OpenGL context, as an EGL whose
  * driver has no OpenGL 3.3 core profile does. m3055 must then fall back to
- * OSMesa (SPEC 8). Loaded through $M3055_EGL_LIBRARY; never installed. */
+ * OSMesa (docs/spec.md#8-command-line). Loaded through $M3055_EGL_LIBRARY; never installed. */
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 

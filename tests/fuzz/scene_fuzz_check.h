@@ -11,6 +11,8 @@
 // Header-only on purpose: tests/CMakeLists.txt builds each *_test.cpp on its own.
 #pragma once
 
+#include "io/message_text.h"
+#include "models/model_spec.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
 #include "scene/scene.h"
@@ -67,10 +69,11 @@ inline std::string first_non_finite(const nlohmann::json& value) {
 }
 
 // "" when every double the renderers read is finite and every count and size
-// within the documented limits, else what is wrong. The fields are listed by
-// hand (they are what the GL and reference renderers read) and, on top of
-// that, everything scene_to_json writes is walked, which covers fields added
-// to Scene later.
+// within the documented limits, else what is wrong. The scene's fields are
+// listed by hand and each material's parameters come from its model's table
+// entry (they are what the GL and reference renderers read); on top of that,
+// everything scene_to_json writes is walked, which covers fields added to
+// Scene later.
 inline std::string check_loaded_scene(const Scene& scene) {
     std::string problem;
     auto finite = [&](double x, const std::string& where) {
@@ -115,17 +118,29 @@ inline std::string check_loaded_scene(const Scene& scene) {
         finite3(object.center, at + ".center");
         finite(object.radius, at + ".radius");
         if (!(object.radius > 0.0)) return at + ".radius is not positive";
+        // Every parameter of the object's model, by its table entry.
         const Material& material = object.material;
-        finite3(material.color, at + ".material.color");
-        finite(material.d, at + ".material.d");
-        finite(material.w, at + ".material.w");
-        finite(material.m, at + ".material.m");
-        finite(material.t_n, at + ".material.t_n");
-        finite(material.t_p, at + ".material.t_p");
-        if (material.lobes.size() > std::size_t(kMaxLobes)) return at + ": too many lobes";
-        for (const Lobe& lobe : material.lobes) {
-            finite(lobe.w, at + ".material.lobes.w");
-            finite(lobe.m, at + ".material.lobes.m");
+        for (const ParamSpec& param : material.model().params) {
+            const std::string where = at + ".material." + param.name;
+            switch (param.kind) {
+                case ParamKind::number: finite(material.number(param.name), where); break;
+                case ParamKind::colour:
+                case ParamKind::direction: finite3(material.vec3(param.name), where); break;
+                case ParamKind::lobes: {
+                    const double count = material.values()[std::size_t(param.offset)];  // the stored lobe count
+                    if (!(count >= 0.0 && count <= kMaxLobes)) return at + ": too many lobes";
+                    for (const Lobe& lobe : material.lobes(param.name)) {
+                        finite(lobe.w, where + ".w");
+                        finite(lobe.m, where + ".m");
+                    }
+                    break;
+                }
+                case ParamKind::choice:
+                    if (material.choice(param.name) < 0 || material.choice(param.name) >= int(param.choices.size()))
+                        return where + ": choice out of range";
+                    break;
+                case ParamKind::flag: break;
+            }
         }
     }
     if (!problem.empty()) return problem;
@@ -134,10 +149,12 @@ inline std::string check_loaded_scene(const Scene& scene) {
     return "";
 }
 
-// An error message must be one line (SPEC 7); a loader error must start with the file name.
+// An error message must be one line of valid UTF-8 without control
+// characters (docs/spec.md#7-scene-files); a loader error must start with the file name.
 inline std::string check_error_message(const std::string& message, bool names_source) {
-    if (message.find('\n') != std::string::npos || message.find('\r') != std::string::npos)
-        return "error message spans lines: " + message;
+    if (!text::is_valid_utf8(message)) return "error message is not valid UTF-8: " + text::escape(message);
+    for (const unsigned char c : message)
+        if (c < 0x20 || c == 0x7F) return "error message spans lines or holds a control character: " + text::escape(message);
     if (names_source && message.rfind(std::string(kSource) + ": ", 0) != 0)
         return "error message does not name the file: " + message;
     return "";

@@ -23,7 +23,7 @@ struct Comparison {
 // Shared headless GL context + renderer for the whole test process.
 Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode = ShaderMode::specialized);
 
-// A scene with one sphere of `material` at the origin, the SPEC 7 camera
+// A scene with one sphere of `material` at the origin, the docs/spec.md#7-scene-files camera
 // (perspective, or orthographic with height 2.5), and `lights`.
 Scene single_sphere_scene(const Material& material, const std::vector<Light>& lights, bool orthographic);
 

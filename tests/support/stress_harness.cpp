@@ -4,6 +4,8 @@
 #include "gl/program.h"
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
+#include "passes/shader_plan.h"
+#include "models/model_spec.h"
 #include "reference/reference.h"
 
 #include <glm/geometric.hpp>
@@ -27,17 +29,18 @@ std::vector<Light> stress_lights(const StressBatch& batch) {
 }
 
 Material float_rounded(Material material) {
-    auto f = [](double& x) { x = double(float(x)); };
-    f(material.color.r), f(material.color.g), f(material.color.b);
-    f(material.d), f(material.w), f(material.m), f(material.t_n), f(material.t_p);
-    for (Lobe& lobe : material.lobes) f(lobe.w), f(lobe.m);
+    // Every parameter of the model (numbers, colours, directions, lobes); choices,
+    // flags and lobe counts are small whole numbers, which float holds exactly.
+    for (double& x : material.values()) x = double(float(x));
     return material;
 }
 
 struct StressHarness::Impl {
     std::unique_ptr<HeadlessContext> context = HeadlessContext::create(Backend::automatic);
     const GlApi& gl = context->gl();
-    unsigned program = build_program(gl, {"passes/fullscreen.vert", "passes/stress.frag", {}});
+    // The general program (every model, chosen per pixel at run time), as the renderer builds it.
+    unsigned program = build_program(gl, {"passes/fullscreen.vert", "passes/stress.frag",
+                                          specialization_defines(ShaderMode::general, {}, {})});
     unsigned vao = 0, material_buffer = 0, material_texture = 0;
     unsigned input_textures[3] = {0, 0, 0};  // N, V, P
     unsigned targets[2] = {0, 0};             // colour, transmittance
@@ -105,7 +108,7 @@ struct StressHarness::Impl {
         std::vector<float> texels[3];
         for (auto& t : texels) t.assign(std::size_t(w) * h * 4, 0.f);
         std::vector<float> materials;
-        materials.reserve(std::size_t(w) * h * kMaterialTexels * 4);
+        materials.reserve(std::size_t(w) * h * material_record_texels() * 4);
         for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
             const StressInput& in = batch.inputs[i < count ? i : 0];
             const glm::vec3 values[3] = {in.N, in.V, -in.L};
@@ -127,6 +130,7 @@ struct StressHarness::Impl {
         gl.UseProgram(program);
         auto loc = [&](const char* name) { return gl.GetUniformLocation(program, name); };
         gl.Uniform1i(loc("u_materials"), 0);
+        gl.Uniform1i(loc("u_material_texels"), material_record_texels());
         gl.Uniform1i(loc("u_normal"), 1);
         gl.Uniform1i(loc("u_view"), 2);
         gl.Uniform1i(loc("u_position"), 3);
@@ -176,7 +180,7 @@ StressOutput evaluate_reference(const StressInput& input, const std::vector<Ligh
     point.V = glm::normalize(dvec3(input.V));
     point.P = -dvec3(input.L);  // light 0 sits at the origin
     StressOutput out;
-    if (input.material.model == Model::translucent) {
+    if (is_translucent(input.material)) {
         const ref::TranslucentShade shade = ref::shade_translucent(input.material, lights, point);
         out.color = shade.color;
         out.transmittance = shade.transmittance;

@@ -30,7 +30,7 @@ struct StressInput {
 };
 
 // What a model gives: opaque models write `color` (transmittance 0);
-// translucent writes the premultiplied colour and the transmittance (SPEC 4.2).
+// translucent writes the premultiplied colour and the transmittance (docs/spec.md#42-translucent).
 struct StressOutput {
     dvec3 color{0.0};
     dvec3 transmittance{0.0};

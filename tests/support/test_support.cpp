@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,15 +11,17 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
+#include <chrono>
 
 #ifndef M3055_BINARY
 #define M3055_BINARY "m3055"
 #endif
+#ifndef M3055_MEASURE_CHILD
+#define M3055_MEASURE_CHILD "m3055_measure_child"
+#endif
 #ifndef M3055_SOURCE_DIR
 #define M3055_SOURCE_DIR "."
-#endif
-#ifndef M3055_SHARED_DIR
-#define M3055_SHARED_DIR "../shared"
 #endif
 
 namespace m3055::test {
@@ -39,34 +42,82 @@ TempDir::~TempDir() {
     fs::remove_all(path_, ignored);
 }
 
-RunResult run_m3055(const std::vector<std::string>& args) {
-    TempDir capture;
-    const std::string out_path = capture.file("stdout"), err_path = capture.file("stderr");
-    pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("fork failed");
-    if (pid == 0) {
+Running::Running(const std::vector<std::string>& args) {
+    const std::string out_path = capture_.file("stdout"), err_path = capture_.file("stderr");
+    pid_ = fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
         int out = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         int err = open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         if (out < 0 || err < 0) _exit(127);
         dup2(out, 1);
         dup2(err, 2);
+        // Through the launcher, so the peak memory measured is m3055's own.
+        std::vector<std::string> command = {M3055_MEASURE_CHILD, capture_.file("measured"), M3055_BINARY};
+        command.insert(command.end(), args.begin(), args.end());
         std::vector<char*> argv;
-        std::string binary = M3055_BINARY;
-        argv.push_back(binary.data());
-        std::vector<std::string> copy = args;
-        for (auto& a : copy) argv.push_back(a.data());
+        for (auto& a : command) argv.push_back(a.data());
         argv.push_back(nullptr);
-        execv(binary.c_str(), argv.data());
+        execv(argv[0], argv.data());
         _exit(127);
     }
-    int status = 0;
-    waitpid(pid, &status, 0);
+}
+
+Running::~Running() {
+    if (reaped_ || pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    waitpid(pid_, &status_, 0);
+}
+
+void Running::signal(int number) const { ::kill(pid_, number); }
+
+bool Running::finished() {
+    if (!reaped_ && waitpid(pid_, &status_, WNOHANG) == pid_) reaped_ = true;
+    return reaped_;
+}
+
+namespace {
+// A file's text, or "" when it cannot be read (a /proc entry of a process that ended).
+std::string read_text_if_any(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return file ? text.str() : std::string();
+}
+}  // namespace
+
+bool Running::wait_for_gl_driver(double seconds) {
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    // The program is the launcher's child (measure_child).
+    const std::string children = "/proc/" + std::to_string(pid_) + "/task/" + std::to_string(pid_) + "/children";
+    while (std::chrono::steady_clock::now() < give_up && !finished()) {
+        std::istringstream ids(read_text_if_any(children));
+        for (std::string id; ids >> id;) {
+            const std::string maps = read_text_if_any("/proc/" + id + "/maps");
+            if (maps.find("swrast_dri") != std::string::npos || maps.find("libgallium") != std::string::npos ||
+                maps.find("libOSMesa") != std::string::npos)
+                return true;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+}
+
+RunResult Running::wait() {
+    if (!reaped_) waitpid(pid_, &status_, 0);
+    reaped_ = true;
     RunResult result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = read_text(out_path);
-    result.err = read_text(err_path);
+    result.exit_code = WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
+    std::istringstream measured(read_text(capture_.file("measured")));
+    long peak_kb = 0;
+    measured >> result.seconds >> peak_kb >> result.killed_by;
+    result.peak_rss_mib = double(peak_kb) / 1024.0;  // Linux: kilobytes
+    result.out = read_text(capture_.file("stdout"));
+    result.err = read_text(capture_.file("stderr"));
     return result;
 }
+
+RunResult run_m3055(const std::vector<std::string>& args) { return Running(args).wait(); }
 
 void write_text(const std::string& path, const std::string& text) {
     std::ofstream file(path, std::ios::binary);
@@ -83,12 +134,26 @@ std::string read_text(const std::string& path) {
 
 bool file_exists(const std::string& path) { return fs::exists(path); }
 
+std::map<std::string, std::string> snapshot(const std::string& folder) {
+    std::map<std::string, std::string> entries;
+    for (auto it = fs::recursive_directory_iterator(folder); it != fs::recursive_directory_iterator(); ++it) {
+        const std::string name = fs::relative(it->path(), folder).string();
+        const fs::file_status status = it->symlink_status();
+        if (fs::is_symlink(status)) entries[name] = "<link> " + fs::read_symlink(it->path()).string();
+        else if (fs::is_regular_file(status)) entries[name] = read_text(it->path().string());
+        else if (fs::is_directory(status)) entries[name] = "<folder>";
+        else if (fs::is_fifo(status)) entries[name] = "<fifo>";
+        else entries[name] = "<other>";
+    }
+    return entries;
+}
+
 std::string source_path(const std::string& relative) {
     return std::string(M3055_SOURCE_DIR) + "/" + relative;
 }
 
-std::string shared_path(const std::string& relative) {
-    return std::string(M3055_SHARED_DIR) + "/" + relative;
+std::string reference_image_path(const std::string& name) {
+    return source_path("tests/data/reference-images/" + name);
 }
 
 }  // namespace m3055::test

@@ -1,0 +1,33 @@
+// Where things go in the window, and the emulated display drawn into it:
+// the display texture(s) magnified by whole pixels, nearest-neighbour.
+#pragma once
+
+#include "gl/gl_api.h"
+#include "image/image.h"
+
+#include <vector>
+
+namespace m3055::explore {
+
+struct Rect {
+    float x = 0, y = 0, w = 0, h = 0;
+};
+
+// The side panel, the bottom strip and the display's area (ImGui units).
+struct Layout {
+    Rect side, bottom, display;
+};
+
+inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
+
+Layout layout_for(float width, float height, bool panels);
+
+// Draws the display texture(s) (A, and B in compare) centred in `area`,
+// magnified by the largest whole number of pixels that fits (shrunk, no longer
+// whole pixels, when even 1:1 does not fit). Returns that scale (0: shrunk).
+int draw_display(const std::vector<unsigned>& textures, int width, int height, const Rect& area, float fb_scale);
+
+// The whole window as the user sees it (the back buffer, after ImGui has drawn).
+Rgb8Image read_window(const GlApi& gl, int width, int height);
+
+}  // namespace m3055::explore

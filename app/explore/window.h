@@ -1,0 +1,55 @@
+// The explorer's window: GLFW with an OpenGL 3.3 core context, made and
+// destroyed as one object, and the input events its callbacks note for the
+// frame loop (which acts on them; the callbacks only record and wake it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace m3055::explore {
+
+// After any input ImGui needs a few frames to settle (hover, press, release).
+inline constexpr int kFramesAfterInput = 3;
+
+struct WindowEvents {
+    int frames_owed = kFramesAfterInput;  // frames to draw whatever happens (the first ones too)
+    std::vector<std::string> dropped;     // files dropped onto the window
+    struct Key {
+        int key, mods;
+    };
+    std::vector<Key> keys;  // key presses, in order
+};
+
+class Window {
+public:
+    // Initializes GLFW and opens a window; ok() says whether it worked, and
+    // error() why not (one line).
+    Window(int width, int height, const char* title);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    bool ok() const { return window_ != nullptr; }
+    const std::string& error() const { return error_; }
+    GLFWwindow* handle() const { return window_; }
+    WindowEvents& events() { return events_; }
+
+    bool should_close() const;
+    void set_title(const std::string& title);  // only touches GLFW when it changes
+    void poll();                                // handle pending events, don't wait
+    void wait(double seconds);                  // sleep until an event or `seconds` (< 0: forever)
+    double time() const;                        // glfwGetTime()
+    void framebuffer_size(int* width, int* height) const;
+    void swap();
+
+private:
+    void install_callbacks();
+    GLFWwindow* window_ = nullptr;
+    bool glfw_ready_ = false;
+    std::string error_, title_;
+    WindowEvents events_;
+};
+
+}  // namespace m3055::explore

@@ -1,0 +1,321 @@
+// The model table's built-in entries: the paper's five models (docs/spec.md,
+// eq. 3-18) and the seeds' classic models (docs/models.md). Each entry is the
+// one place that states a model's name, label, citation, parameters (kind,
+// range, default, help, slider), GLSL hook and reference hook; see
+// models/model_spec.h for the fields and docs/adding-a-model.md for a walk
+// through adding one.
+#include "models/model_table.h"
+#include "numeric/normalization.h"
+
+namespace m3055 {
+
+// The reference hooks (renderer/reference/), declared by their family's
+// signature (reference/reference.h); each mirrors the GLSL hook of the same name.
+namespace ref {
+MetalLobeSumFn beckmann_lobe_sum, blinn_lobe_sum, phong_lobe_sum;
+ClassicDiffuseFn diffuse_lambert, diffuse_half_lambert, diffuse_half_lambert_clamped,
+    diffuse_half_lambert_normalized, diffuse_oren_nayar, diffuse_minnaert;
+ClassicSpecularFn specular_phong, specular_blinn_phong, specular_microfacet, specular_ward,
+    specular_heidrich_seidel;
+}  // namespace ref
+
+namespace {
+
+// ---- Parameter builders ------------------------------------------------------------
+
+ParamSpec number(std::string name, std::string label, Range range, double fallback, std::string help,
+                 std::string cite, bool log_slider = false, std::string format = "%.3f") {
+    ParamSpec p;
+    p.name = std::move(name), p.label = std::move(label), p.help = std::move(help), p.cite = std::move(cite);
+    p.kind = ParamKind::number;
+    p.range = range;
+    p.fallback = {fallback};
+    p.log_slider = log_slider;
+    p.format = std::move(format);
+    return p;
+}
+
+ParamSpec colour(std::string name, std::string label, dvec3 fallback, std::string help, std::string cite) {
+    ParamSpec p;
+    p.name = std::move(name), p.label = std::move(label), p.help = std::move(help), p.cite = std::move(cite);
+    p.kind = ParamKind::colour;
+    p.fallback = {fallback.x, fallback.y, fallback.z};
+    return p;
+}
+
+ParamSpec required(ParamSpec p) {
+    p.required = true;
+    return p;
+}
+
+ParamSpec lobe_list(std::string label, std::vector<LobeForm> forms, std::string help, std::string cite) {
+    ParamSpec p;
+    p.name = "lobes", p.label = std::move(label), p.help = std::move(help), p.cite = std::move(cite);
+    p.kind = ParamKind::lobes;
+    p.forms = std::move(forms);
+    return p;
+}
+
+const Range kExponent = closed(0.0, 10000.0);    // m, n_j, shininess
+const Range kBeckmannM = closed(0.001, 2.0);     // m_j, microfacet roughness
+const Range kPaperWeight = closed(0.0, 100.0);   // the paper's lobe weights
+const Range kUnitWeight = closed(0.0, 1.0);      // microfacet lobe weights
+
+// ---- The paper's models (docs/spec.md section 4) ------------------------------------
+
+ParamSpec paper_colour() {
+    ParamSpec p = required(colour("color", "colour C0", {0.8, 0.2, 0.2}, "the object's colour C0", "eq. 3"));
+    p.carry_from = {"kd"};
+    return p;
+}
+
+ParamSpec paper_d(double fallback, std::string label, std::string help) {
+    return number("d", std::move(label), closed(0.0, 1.0), fallback, std::move(help), "eq. 3, 12");
+}
+
+// highlight and translucent share d, w, m (eq. 3-4).
+std::vector<ParamSpec> highlight_params() {
+    return {paper_colour(),
+            paper_d(0.5, "d (environment)", "share of the diffuse light that comes from the environment"),
+            number("w", "w (highlight)", closed(0.0, 1.0), 1.0,
+                   "highlight brightness: 1 drives the highlight centre to display white", "eq. 4"),
+            number("m", "m (size)", kExponent, 10.0, "highlight exponent on R.V: larger is smaller and sharper",
+                   "eq. 4", true, "%.2f")};
+}
+
+ModelSpec highlight() {
+    ModelSpec s;
+    s.name = "highlight", s.label = "highlight (eq. 4)", s.citation = "Yokoi et al., eq. 3-4";
+    s.summary = "coloured object whose highlight is driven to display white";
+    s.family = Family::opaque;
+    s.params = highlight_params();
+    s.glsl_file = "models/highlight.glsl", s.glsl_hook = "shade_highlight";
+    s.reference.opaque = ref::shade_highlight;
+    return s;
+}
+
+ModelSpec translucent() {
+    ModelSpec s;
+    s.name = "translucent", s.label = "translucent (eq. 8)", s.citation = "Yokoi et al., eq. 5-8 (Newell, Kay)";
+    s.summary = "translucent object: Newell's blend with Kay's opacity, plus the highlight";
+    s.family = Family::translucent;
+    s.params = highlight_params();
+    s.params.push_back(number("t_n", "t_n (opacity)", closed(0.0, 1.0), 0.8,
+                              "opacity: 1 opaque, 0 clear (Newell's constant when t_p = 0)", "eq. 6"));
+    s.params.push_back(number("t_p", "t_p (falloff)", closed(0.0, 10.0), 1.0,
+                              "Kay's falloff power: larger makes faces towards the viewer clearer", "eq. 6"));
+    s.glsl_file = "models/translucent.glsl", s.glsl_hook = "shade_translucent";
+    s.reference.translucent = ref::shade_translucent;
+    return s;
+}
+
+ModelSpec paper_metal(std::string name, std::string label, std::string citation, LobeForm form) {
+    ModelSpec s;
+    s.name = std::move(name), s.label = std::move(label), s.citation = std::move(citation);
+    s.family = Family::metal;
+    ParamSpec d = paper_d(0.05, "d (background)", "background light (d << 1); eq. 14 wants d + D(0) = 1");
+    d.carry = false;  // from another family: the default, which meets eq. 14 with the default lobes
+    const bool beckmann = form.key == "m";
+    s.params = {paper_colour(), d,
+                lobe_list(beckmann ? "Beckmann lobes (w_j, m_j)" : "lobes (w_j, n_j)", {std::move(form)},
+                          "1 to 4 weighted lobes; a light may carry its own (Fig. 11)", "eq. 12-16")};
+    s.light_lobes = beckmann ? LobeKind::beckmann : LobeKind::exponent;
+    s.glsl_file = "models/metal.glsl";
+    return s;
+}
+
+LobeForm paper_lobes(std::string key, Range value, std::vector<Lobe> fallback, std::string owner,
+                     std::string value_help) {
+    return {std::move(key), kPaperWeight, value, std::move(fallback), std::move(owner), std::move(value_help)};
+}
+
+ModelSpec metal() {
+    ModelSpec s = paper_metal("metal", "metal, Cook-Torrance (eq. 12)", "Yokoi et al., eq. 12-14, 17-18",
+                              paper_lobes("m", kBeckmannM, {{0.013, 0.2}, {0.1, 0.4}}, "model metal",
+                                          "Beckmann roughness m_j (eq. 13)"));
+    s.summary = "metal after Cook-Torrance, a mixture of Beckmann lobes; F = C0";
+    s.glsl_hook = "beckmann_lobe_sum";
+    s.reference.metal = ref::beckmann_lobe_sum;
+    return s;
+}
+
+// The cheap metals' defaults are those of Figs. 12 and 13 (scenes/fig12, fig13.json):
+// with d = 0.05 they meet eq. 14, d + sum_j w_j = 1.
+ModelSpec metal_blinn() {
+    ModelSpec s = paper_metal("metal_blinn", "metal_blinn (eq. 15)", "Yokoi et al., eq. 15",
+                              paper_lobes("n", kExponent, {{0.95, 13.0}}, "model metal_blinn",
+                                          "exponent n_j on N.H"));
+    s.summary = "cheap metal: lobes ((N.H)+)^n_j";
+    s.glsl_hook = "blinn_lobe_sum";
+    s.reference.metal = ref::blinn_lobe_sum;
+    return s;
+}
+
+ModelSpec metal_phong() {
+    ModelSpec s = paper_metal("metal_phong", "metal_phong (eq. 16)", "Yokoi et al., eq. 16",
+                              paper_lobes("n", kExponent, {{0.19, 20.0}, {0.76, 3.0}}, "model metal_phong",
+                                          "exponent n_j on R.V"));
+    s.summary = "cheap metal: lobes ((R.V)+)^n_j, falls off twice as fast as eq. 15";
+    s.glsl_hook = "phong_lobe_sum";
+    s.reference.metal = ref::phong_lobe_sum;
+    return s;
+}
+
+// ---- The seeds' classic models (docs/models.md) --------------------------------------
+
+// kd, ka and emission: every classic model's; ks: those with a specular term,
+// whose diffuse term is Lambert's (the hooks: diffuse_NAME, specular_NAME).
+ModelSpec classic(std::string name, std::string label, std::string citation, std::string summary, bool specular) {
+    ModelSpec s;
+    s.name = std::move(name), s.label = std::move(label), s.citation = std::move(citation);
+    s.summary = std::move(summary);
+    s.family = Family::classic;
+    ParamSpec kd = required(colour("kd", "K_diff", {0.8, 0.2, 0.2}, "diffuse colour", "seed 003"));
+    kd.carry_from = {"color"};
+    ParamSpec ka = colour("ka", "K_amb", {0.8, 0.2, 0.2}, "ambient colour (the diffuse colour unless given)",
+                          "seed 001, 003");
+    ka.default_from = "kd";
+    ka.carry_from = {"color"};
+    s.params = {kd, ka, colour("emission", "emission", {0, 0, 0}, "emitted light L_emi, added as is", "seed 003")};
+    if (specular) s.params.push_back(colour("ks", "K_spec", {1, 1, 1}, "specular colour", "seed 003"));
+    s.misplaced_hints = {{"color", "its diffuse colour is \"kd\""}};
+    s.glsl_file = "models/classic.glsl";
+    s.glsl_hook = specular ? "diffuse_lambert" : "diffuse_" + s.name;
+    if (specular) {
+        s.glsl_specular = "specular_" + s.name;
+        s.reference.classic_diffuse = ref::diffuse_lambert;
+    }
+    return s;
+}
+
+ParamSpec shininess(std::string help, std::string cite) {
+    return number("shininess", "shininess", kExponent, 32.0, std::move(help), std::move(cite), true, "%.1f");
+}
+
+std::vector<ModelSpec> diffuse_models() {
+    std::vector<ModelSpec> out;
+    out.push_back(classic("lambert", "Lambert", "Lambert's cosine law (seed 003)", "(N.L)+ K_diff", false));
+    out.back().reference.classic_diffuse = ref::diffuse_lambert;
+    out.push_back(classic("half_lambert", "Half-Lambert", "Valve, Mitchell 2008 (seed 004)",
+                          "((N.L) 0.5 + 0.5)^2 K_diff: the back still gets light", false));
+    out.back().reference.classic_diffuse = ref::diffuse_half_lambert;
+    out.push_back(classic("half_lambert_clamped", "Half-Lambert, N.L clamped", "seed 004's code",
+                          "Half-Lambert of (N.L)+: the unlit side a flat 1/4", false));
+    out.back().reference.classic_diffuse = ref::diffuse_half_lambert_clamped;
+    out.push_back(classic("half_lambert_normalized", "Half-Lambert, normalized", "seed 004",
+                          "Half-Lambert x 3/(4 pi): integrates to 1 over the sphere", false));
+    out.back().reference.classic_diffuse = ref::diffuse_half_lambert_normalized;
+    ModelSpec on = classic("oren_nayar", "Oren-Nayar", "Oren & Nayar 1994 (seed 003)",
+                           "rough diffuse: brighter towards the light at grazing view", false);
+    on.params.push_back(number("sigma", "sigma (rad)", closed(0.0, 10.0), 0.3,
+                               "surface roughness: standard deviation of the facet angle, radians; 0 is Lambert",
+                               "seed 003", true, "%.3f"));
+    on.reference.classic_diffuse = ref::diffuse_oren_nayar;
+    out.push_back(std::move(on));
+    ModelSpec minnaert = classic("minnaert", "Minnaert", "Minnaert 1941 (BRDF Explorer's minnaert.brdf)",
+                                 "(N.L)^k (N.V)^(k-1): limb brightening (k < 1) or darkening (k > 1)", false);
+    minnaert.params.push_back(number("minnaert_k", "k (limb)", closed(0.5, 1.5), 0.75,
+                                     "Minnaert's exponent: 1 is Lambert, below 1 the limb brightens (the Moon)",
+                                     "Minnaert 1941"));
+    minnaert.reference.classic_diffuse = ref::diffuse_minnaert;
+    out.push_back(std::move(minnaert));
+    return out;
+}
+
+ModelSpec phong() {
+    ModelSpec s = classic("phong", "Phong", "Phong 1975 (seed 001)", "Lambert + ((R.V)+)^n K_spec", true);
+    s.params.push_back(shininess("exponent n on R.V: larger is a smaller, sharper highlight", "seed 001"));
+    s.reference.classic_specular = ref::specular_phong;
+    return s;
+}
+
+ModelSpec blinn_phong() {
+    ModelSpec s = classic("blinn_phong", "Blinn-Phong", "Blinn 1977 (seed 003)", "Lambert + ((N.H)+)^n K_spec", true);
+    s.params.push_back(shininess("exponent n on N.H: larger is a smaller, sharper highlight", "seed 003"));
+    s.reference.classic_specular = ref::specular_blinn_phong;
+    return s;
+}
+
+// D's lobes hold an exponent n for blinn_phong, a roughness m for the others.
+ParamSpec microfacet_lobes(const std::vector<std::string>& distributions) {
+    std::vector<LobeForm> forms;
+    for (const std::string& d : distributions) {
+        const bool exponent = d == "blinn_phong";
+        forms.push_back({exponent ? "n" : "m", kUnitWeight, exponent ? kExponent : kBeckmannM,
+                         {exponent ? Lobe{1.0, 100.0} : Lobe{1.0, 0.3}}, "distribution " + d,
+                         exponent ? "exponent n of the normalized Blinn-Phong D" : "roughness m of D"});
+    }
+    ParamSpec p = lobe_list("lobes (w_j, m_j or n_j)", std::move(forms),
+                            "1 to 4 weighted lobes of one D, weights in [0, 1]", "seed 002");
+    p.form_from = "distribution";
+    return p;
+}
+
+// Gaussian D's normalization b(m) per lobe (1 for the other distributions).
+void gaussian_norms(const Material& material, float* out) {
+    const LobeList lobes = material.lobes();
+    const bool gaussian = material.choice_name("distribution") == "gaussian";
+    for (int j = 0; j < kMaxLobes; ++j)
+        out[j] = gaussian && j < lobes.count ? float(numeric::gaussian_norm(lobes[j].m)) : 1.0f;
+}
+
+ModelSpec microfacet() {
+    ModelSpec s = classic("microfacet", "microfacet (D G F)", "Cook & Torrance 1982 (seeds 002, 003)",
+                          "Lambert + D G F / (4 N.L N.V), D a mixture of 1 to 4 lobes", true);
+    const std::vector<std::string> distributions = {"blinn_phong", "gaussian", "beckmann", "ggx"};
+    ParamSpec d;
+    d.name = "distribution", d.label = "D", d.kind = ParamKind::choice, d.choices = distributions;
+    d.fallback = {2.0};  // beckmann
+    d.help = "normal distribution: normalized Blinn-Phong, Gaussian, Beckmann or GGX", d.cite = "seed 002, 003";
+    ParamSpec f;
+    f.name = "fresnel", f.label = "F", f.kind = ParamKind::choice, f.choices = {"none", "schlick", "dielectric"};
+    f.fallback = {1.0};  // schlick
+    f.help = "Fresnel term: none (F = 1), Schlick, or the full dielectric Fresnel", f.cite = "seed 003";
+    s.params.push_back(d);
+    s.params.push_back(f);
+    s.params.push_back(number("ior", "IOR", closed(1.0, 5.0), 1.5,
+                              "index of refraction; Schlick's F0 = ((n - 1)/(n + 1))^2", "seed 003"));
+    s.params.push_back(microfacet_lobes(distributions));
+    s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}};
+    s.reference.classic_specular = ref::specular_microfacet;
+    return s;
+}
+
+ParamSpec tangent_axis() {
+    ParamSpec p;
+    p.name = "axis", p.label = "tangent axis", p.kind = ParamKind::direction, p.fallback = {0.0, 1.0, 0.0};
+    p.help = "grooves run around this axis: T = normalize(axis x N)", p.cite = "docs/models.md";
+    return p;
+}
+
+ModelSpec ward() {
+    ModelSpec s = classic("ward", "Ward (anisotropic)", "Ward 1992 (seed 002)",
+                          "Lambert + anisotropic Gaussian highlight, alpha_x along T, alpha_y across", true);
+    s.params.push_back(number("alpha_x", "alpha_x", closed(0.001, 1.0), 0.15, "roughness along the tangent T",
+                              "seed 002", true));
+    s.params.push_back(number("alpha_y", "alpha_y", closed(0.001, 1.0), 0.5,
+                              "roughness along the bitangent N x T", "seed 002", true));
+    s.params.push_back(tangent_axis());
+    s.reference.classic_specular = ref::specular_ward;
+    return s;
+}
+
+ModelSpec heidrich_seidel() {
+    ModelSpec s = classic("heidrich_seidel", "Heidrich-Seidel (fibres)", "Heidrich & Seidel 1998 (seed 002)",
+                          "Lambert + a highlight of fibres along the tangent T", true);
+    s.params.push_back(shininess("exponent n of the fibre highlight", "seed 002"));
+    s.params.push_back(tangent_axis());
+    s.reference.classic_specular = ref::specular_heidrich_seidel;
+    return s;
+}
+
+}  // namespace
+
+std::vector<ModelSpec> builtin_models() {
+    std::vector<ModelSpec> out = {highlight(), translucent(), metal(), metal_blinn(), metal_phong()};
+    for (ModelSpec& s : diffuse_models()) out.push_back(std::move(s));
+    for (ModelSpec s : {phong(), blinn_phong(), microfacet(), ward(), heidrich_seidel()}) out.push_back(std::move(s));
+    return out;
+}
+
+}  // namespace m3055

@@ -1,0 +1,138 @@
+// One reflection model, described once: its scene name, UI label, citation,
+// parameters (kind, range, default, help, slider), its GLSL shading function
+// and its C++ reference function. Everything else is derived from these
+// descriptions: the scene loader's validation and defaults, scene_to_json,
+// the GPU material record and its GLSL unpacking, the shader specialization
+// defines, the explorer's material panel and the presets' defaults.
+//
+// The built-in entries are in models/builtin_models.cpp; docs/adding-a-model.md
+// walks through adding one. A ModelSpec is plain data, so a model can also be
+// added at run time (models/model_table.h: ModelTable::add).
+#pragma once
+
+#include "models/range.h"
+#include "reference/reference.h"
+#include "scene/scene.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace m3055 {
+
+// What a parameter holds; decides how it is read, stored, packed and edited.
+enum class ParamKind {
+    number,     // one double in `range`
+    colour,     // RGB, each in [0, 1]
+    direction,  // non-zero 3-vector, stored unit
+    choice,     // one of `choices`, stored as its index
+    flag,       // true / false
+    lobes,      // 1 to kMaxLobes lobes {"w", key}: a LobeForm says key and ranges
+};
+
+// The shape of a lobe list: its value key ("m" roughness, "n" exponent), the
+// ranges, the default lobes, and who owns it in error messages
+// ("model metal_blinn", "distribution blinn_phong").
+struct LobeForm {
+    std::string key;
+    Range weight;
+    Range value;
+    std::vector<Lobe> fallback;
+    std::string owner;
+    std::string value_help;  // what the value means, for the UI's tooltip
+};
+
+struct ParamSpec {
+    std::string name;   // scene-file key; also the GLSL field mat.NAME
+    ParamKind kind = ParamKind::number;
+    std::string label;  // UI label ("d (background)")
+    std::string help;   // one line: meaning (the UI adds range and citation)
+    std::string cite;   // the equation or seed it comes from ("eq. 4")
+    Range range = closed(0.0, 1.0);  // number
+    std::vector<double> fallback;    // default: 1 value (number, choice, flag) or 3 (colour, direction)
+    bool required = false;           // absent is an error ("is required")
+    bool log_slider = false;         // the UI slider is logarithmic (values spanning decades)
+    std::string format = "%.3f";     // the UI's printf format
+    std::vector<std::string> choices;  // choice
+    std::vector<LobeForm> forms;       // lobes: one form, or one per choice of `form_from`
+    std::string form_from;             // lobes: the choice parameter that picks the form
+    std::string default_from;          // absent: copy this (earlier) parameter ("ka" <- "kd")
+    std::vector<std::string> carry_from;  // model switch in the explorer: also take these names
+    bool carry = true;                 // model switch keeps a same-named value
+
+    // Layout, set by ModelTable::add: doubles [offset, offset + size) of Material::values.
+    int offset = 0;
+    int size = 0;
+
+    // The lobe form in effect for `material` (lobes only).
+    const LobeForm& form_for(const Material& material) const;
+};
+
+// How a model is composed with the lights; decides the signature of its hook.
+enum class Family {
+    opaque,       // hook: the whole colour at a point            (the paper's highlight)
+    translucent,  // hook: premultiplied colour + transmittance   (the paper's translucent)
+    metal,        // hook: sum_j w_j lobe_j for one light          (the paper's metals, eq. 12-16)
+    classic,      // hooks: the diffuse factor and the specular     (the seeds' models, the lecture's equation)
+};
+
+// The C++ reference hook of each family: the double twin of the GLSL hook.
+struct ReferenceHooks {
+    ref::OpaqueShadeFn* opaque = nullptr;
+    ref::TranslucentShadeFn* translucent = nullptr;
+    ref::MetalLobeSumFn* metal = nullptr;
+    ref::ClassicDiffuseFn* classic_diffuse = nullptr;
+    ref::ClassicSpecularFn* classic_specular = nullptr;  // nullptr: no specular term
+};
+
+// Floats computed on the CPU (in double) per material and packed after the
+// parameters, e.g. the Gaussian distribution's normalization per lobe. The
+// GLSL field mat.NAME is a float or vecN.
+struct DerivedValue {
+    std::string name;
+    int floats = 1;  // 1 to 4
+    void (*fill)(const Material& material, float* out) = nullptr;
+};
+
+struct ModelSpec {
+    std::string name;      // scene file's "model"
+    std::string label;     // UI selector
+    std::string citation;  // the paper's equation or the seed ("eq. 12", "Ward 1992 (seed 002)")
+    std::string summary;   // one line: what the model is
+    Family family = Family::opaque;
+    std::vector<ParamSpec> params;  // in reading order (a `default_from`/`form_from` comes first)
+    // Extra words for a key of another model: {"color", "its diffuse colour is \"kd\""}.
+    std::vector<std::pair<std::string, std::string>> misplaced_hints;
+    std::optional<LobeKind> light_lobes;  // the per-light lobes it reads (Fig. 11), if any
+
+    std::string glsl_file;  // glsl/ file defining the hook (included when the model is present)
+    std::string glsl_hook;  // its GLSL function, with the family's signature (classic: the diffuse factor)
+    std::string glsl_specular;  // classic: the specular hook ("" for a diffuse-only model)
+    std::vector<DerivedValue> derived;
+    ReferenceHooks reference;
+
+    // Set by ModelTable::add.
+    int id = -1;           // MODEL_<NAME> in GLSL; index in the table
+    int value_count = 0;   // doubles in Material::values
+    int gpu_floats = 0;    // floats of its GPU record (model id, family, parameters, derived)
+
+    const ParamSpec* find(std::string_view param) const;  // nullptr if absent
+    const ParamSpec& param(std::string_view param) const;  // std::logic_error if absent
+    std::vector<std::string> param_names() const;
+    // "HIGHLIGHT": the model's name as a GLSL macro suffix (MODEL_X, HAS_X).
+    std::string macro_name() const;
+};
+
+// Floats a parameter takes in the GPU record (lobes: count + kMaxLobes pairs).
+int gpu_floats_of(ParamKind kind);
+// Doubles it takes in Material::values (the same numbers).
+inline int value_count_of(ParamKind kind) { return gpu_floats_of(kind); }
+
+// True for a material drawn in the translucent pass (over what lies behind).
+inline bool is_translucent(const Material& material) { return material.model().family == Family::translucent; }
+
+const char* to_string(Family family);
+const char* to_string(ParamKind kind);
+
+}  // namespace m3055

@@ -1,0 +1,86 @@
+#include "scene/json_material.h"
+
+#include "models/model_table.h"
+
+namespace m3055::scene_json {
+
+namespace {
+
+json vec(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+// The problem for a key the model does not read: another model's parameter is
+// "not a parameter of model X" (with the model's hint, if it has one for it).
+std::string misplaced(const ModelSpec& spec, const std::string& key) {
+    if (!model_table().is_builtin_param(key)) return std::string();  // a plain "unknown key"
+    const std::string problem = "not a parameter of model " + spec.name;
+    for (const auto& [hinted, hint] : spec.misplaced_hints)
+        if (hinted == key) return problem + " (" + hint + ")";
+    return problem;
+}
+
+// A parameter the file leaves out: its default, which may follow an earlier
+// value (ka <- kd; the lobes of the distribution read before).
+void read_absent(const Node& node, const ParamSpec& param, Material& material) {
+    if (param.required) node.required(param.name);  // throws "is required"
+    if (!param.default_from.empty()) material.set_vec3(param.name, material.vec3(param.default_from));
+    if (param.kind == ParamKind::lobes) material.set_lobes(param.name, param.form_for(material).fallback);
+}
+
+void read_param(const Node& node, const ParamSpec& param, Material& material) {
+    if (!node.has(param.name)) return read_absent(node, param, material);
+    const Node value = node.child(param.name);
+    switch (param.kind) {
+        case ParamKind::number: material.set_number(param.name, value.number_in(param.range)); break;
+        case ParamKind::colour: material.set_vec3(param.name, value.vec3_in(kUnit)); break;
+        case ParamKind::direction: material.set_vec3(param.name, value.direction()); break;
+        case ParamKind::choice: material.set_choice(param.name, int(value.one_of(param.choices))); break;
+        case ParamKind::flag: material.set_flag(param.name, value.boolean()); break;
+        case ParamKind::lobes: {
+            const LobeForm& form = param.form_for(material);
+            const std::string other = form.key == "m" ? "n" : "m";
+            material.set_lobes(param.name,
+                               read_lobe_list(value, form.key, other, form.weight, form.value, form.owner));
+            break;
+        }
+    }
+}
+
+json lobes_json(const LobeList& lobes, const std::string& key) {
+    json out = json::array();
+    for (const Lobe& lobe : lobes) out.push_back({{"w", lobe.w}, {key, lobe.m}});
+    return out;
+}
+
+}  // namespace
+
+Material read_material(const Node& node) {
+    node.expect_object();
+    const ModelTable& table = model_table();
+    const ModelSpec& spec = table.at(int(node.required("model").one_of(table.names())));
+    std::vector<std::string> allowed = spec.param_names();
+    allowed.push_back("model");
+    node.check_keys(allowed, [&](const std::string& key) { return misplaced(spec, key); });
+    Material material(spec);
+    for (const ParamSpec& param : spec.params) read_param(node, param, material);
+    return material;
+}
+
+json material_json(const Material& material) {
+    const ModelSpec& spec = material.model();
+    json out = {{"model", spec.name}};
+    for (const ParamSpec& param : spec.params) {
+        switch (param.kind) {
+            case ParamKind::number: out[param.name] = material.number(param.name); break;
+            case ParamKind::colour:
+            case ParamKind::direction: out[param.name] = vec(material.vec3(param.name)); break;
+            case ParamKind::choice: out[param.name] = material.choice_name(param.name); break;
+            case ParamKind::flag: out[param.name] = material.flag(param.name); break;
+            case ParamKind::lobes:
+                out[param.name] = lobes_json(material.lobes(param.name), param.form_for(material).key);
+                break;
+        }
+    }
+    return out;
+}
+
+}  // namespace m3055::scene_json

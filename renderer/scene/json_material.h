@@ -1,0 +1,19 @@
+// Materials in scene files, driven by the model table: every model's keys,
+// ranges, defaults and misplaced-key messages come from its ModelSpec
+// (models/builtin_models.cpp), so reading and writing need no per-model code.
+#pragma once
+
+#include "scene/json_node.h"
+#include "scene/material.h"
+
+namespace m3055::scene_json {
+
+// Reads and validates a material object ({"model": ..., its parameters}).
+// Errors: "SOURCE: objects[0].material.KEY: problem".
+Material read_material(const Node& node);
+
+// The material object scene_to_json writes: exactly the keys read_material
+// accepts for its model, so the round trip is exact.
+json material_json(const Material& material);
+
+}  // namespace m3055::scene_json
