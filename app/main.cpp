@@ -3,6 +3,7 @@
 //   m3055 figures --out screenshots/
 //   m3055 batch MANIFEST.json [--backend ...]
 //   m3055 bench [--out DIR] [--quick]
+//   m3055 compare A B [--fail-levels N] [--diff D.png] [--json]
 //   m3055 explore [--scene S.json]     (also plain `m3055` when $DISPLAY is set;
 //                                       not in a -DM3055_BUILD_EXPLORER=OFF build)
 #include "commands.h"
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
     m3055::add_batch_command(app);
     m3055::add_bench_command(app);
     m3055::add_explore_command(app);
+    m3055::add_compare_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& error) {

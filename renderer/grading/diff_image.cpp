@@ -1,0 +1,81 @@
+#include "grading/diff_image.h"
+
+#include "grading/tiny_font.h"
+
+#include <algorithm>
+
+namespace m3055::grading {
+
+namespace {
+
+// 1, 2, 3, 4-7, 8+ levels off: blue, green, yellow, orange, red: ordered by
+// alarm, and told apart by lightness too (readable printed in grey).
+constexpr std::uint8_t kPalette[5][3] = {
+    {40, 110, 255}, {0, 200, 60}, {255, 230, 0}, {255, 140, 0}, {230, 0, 0}};
+constexpr const char* kLabels[kDiffClasses] = {"0", "1", "2", "3", "4-7", "8+"};
+
+int diff_class(int off) {
+    if (off <= 3) return off;
+    return off <= 7 ? 4 : 5;
+}
+
+void dimmed(const LevelImage& a, std::size_t p, std::uint8_t rgb[3]) {
+    // A quarter of A's brightness in grey: context, never mistaken for a colour class.
+    const int top = (1 << a.bits) - 1;
+    const double luma = (0.2126 * a.levels[3 * p] + 0.7152 * a.levels[3 * p + 1] + 0.0722 * a.levels[3 * p + 2]) / top;
+    rgb[0] = rgb[1] = rgb[2] = std::uint8_t(20 + luma * 60.0);
+}
+
+int legend_width() {
+    int width = text_width("LEVELS OFF:", 2) + 4;
+    for (const char* label : kLabels) width += 14 + text_width(label, 2) + 6;
+    return width;
+}
+
+void draw_legend(Rgb8Image& image, int top) {
+    const std::uint8_t white[3] = {255, 255, 255};
+    draw_text(image, 2, top + 4, "LEVELS OFF:", 2, white);
+    int x = 2 + text_width("LEVELS OFF:", 2) + 4;
+    for (int k = 0; k < kDiffClasses; ++k) {
+        std::uint8_t rgb[3] = {50, 50, 50};
+        if (k > 0) std::copy_n(kPalette[k - 1], 3, rgb);
+        for (int y = top + 3; y < top + 15; ++y)
+            for (int dx = 0; dx < 12; ++dx) {
+                std::uint8_t* p = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x + dx)) * 3];
+                std::copy_n(rgb, 3, p);
+            }
+        draw_text(image, x + 14, top + 4, kLabels[k], 2, white);
+        x += 14 + text_width(kLabels[k], 2) + 6;
+    }
+}
+
+}  // namespace
+
+void diff_colour(int off, std::uint8_t rgb[3]) {
+    if (off <= 0) {
+        rgb[0] = rgb[1] = rgb[2] = 50;
+        return;
+    }
+    std::copy_n(kPalette[diff_class(off) - 1], 3, rgb);
+}
+
+Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
+    const std::vector<int> off = levels_off(a, b);
+    Rgb8Image image;
+    image.width = std::max(a.width, legend_width());
+    image.height = a.height + kLegendHeight;
+    image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 3, 0);
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(a.width) + std::size_t(x);
+            std::uint8_t* out = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
+            if (off[p] == 0)
+                dimmed(a, p, out);
+            else
+                diff_colour(off[p], out);
+        }
+    draw_legend(image, a.height);
+    return image;
+}
+
+}  // namespace m3055::grading

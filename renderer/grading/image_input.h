@@ -1,0 +1,27 @@
+// What `compare` and `grade` accept as an image: a PNG, a PFM, or a scene
+// (rendered first). Chosen by the name's extension, so an input's meaning
+// never depends on its bytes.
+#pragma once
+
+#include "grading/level_compare.h"
+#include "renderer.h"
+#include "scene/scene.h"
+
+#include <string>
+
+namespace m3055::grading {
+
+enum class InputKind { png, pfm, scene };
+// ".png" and ".pfm" (any case) are images; anything else is a scene file.
+InputKind input_kind(const std::string& path);
+
+// Reads a PNG or PFM as levels of a `bits`-bit display. Throws (ImageError,
+// io::InputError) with one line naming the file; a path that is not a regular
+// file is refused before it is opened (a FIFO would block the read).
+LevelImage read_level_image(const std::string& path, int bits);
+
+// Renders `scene` with `renderer` (its deadline, if any, applies) and returns
+// the display's levels and the linear colour.
+LevelImage render_levels(Renderer& renderer, const Scene& scene);
+
+}  // namespace m3055::grading

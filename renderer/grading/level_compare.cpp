@@ -1,0 +1,128 @@
+#include "grading/level_compare.h"
+
+#include "image/quantize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace m3055::grading {
+
+namespace {
+
+int max_level(int bits) { return (1 << bits) - 1; }
+
+// PFM rows are bottom to top; levels and linear are kept top to bottom.
+std::vector<float> flipped_rows(const RgbFloatImage& image) {
+    std::vector<float> out(image.pixels.size());
+    const std::size_t row = std::size_t(image.width) * 3;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.pixels.begin() + std::ptrdiff_t(row * std::size_t(image.height - 1 - y)), row,
+                    out.begin() + std::ptrdiff_t(row * std::size_t(y)));
+    return out;
+}
+
+std::string size_text(int width, int height) { return std::to_string(width) + " x " + std::to_string(height); }
+
+void check_comparable(const LevelImage& a, const LevelImage& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw CompareError("sizes differ: A is " + size_text(a.width, a.height) + ", B is " +
+                           size_text(b.width, b.height));
+    if (a.bits != b.bits)
+        throw CompareError("bit depths differ: A has " + std::to_string(a.bits) + " bits a channel, B has " +
+                           std::to_string(b.bits));
+}
+
+LinearStats linear_stats(const std::vector<float>& a, const std::vector<float>& b) {
+    LinearStats stats;
+    double sum = 0, sum_sq = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double d = std::abs(double(a[i]) - double(b[i]));
+        stats.max_abs = std::max(stats.max_abs, d);
+        sum += d;
+        sum_sq += d * d;
+    }
+    const double n = a.empty() ? 1.0 : double(a.size());
+    stats.mean_abs = sum / n;
+    const double mse = sum_sq / n;
+    stats.rms = std::sqrt(mse);
+    stats.psnr_db = mse > 0 ? 10.0 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
+    return stats;
+}
+
+}  // namespace
+
+const char* to_string(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::pass: return "pass";
+        case Verdict::warn: return "warn";
+        case Verdict::fail: return "fail";
+    }
+    return "?";
+}
+
+LevelImage levels_from_png(const Rgb8Image& png, int bits) {
+    LevelImage image{png.width, png.height, bits, {}, {}};
+    image.levels.resize(png.pixels.size());
+    const int top = max_level(bits);
+    for (std::size_t i = 0; i < png.pixels.size(); ++i)
+        image.levels[i] = std::uint8_t(std::lround(double(png.pixels[i]) * top / 255.0));
+    return image;
+}
+
+LevelImage levels_from_pfm(const RgbFloatImage& pfm, int bits) {
+    LevelImage image{pfm.width, pfm.height, bits, {}, flipped_rows(pfm)};
+    image.levels.resize(image.linear.size());
+    for (std::size_t i = 0; i < image.linear.size(); ++i)
+        image.levels[i] = std::uint8_t(quantize_level(double(image.linear[i]), bits));
+    return image;
+}
+
+LevelImage levels_from_render(const Rgb8Image& display, const RgbFloatImage& raw, int bits) {
+    LevelImage image = levels_from_png(display, bits);
+    if (raw.width != display.width || raw.height != display.height)
+        throw CompareError("the render's display and raw images differ in size");
+    image.linear = flipped_rows(raw);
+    return image;
+}
+
+std::vector<int> levels_off(const LevelImage& a, const LevelImage& b) {
+    check_comparable(a, b);
+    std::vector<int> off(std::size_t(a.width) * std::size_t(a.height), 0);
+    for (std::size_t p = 0; p < off.size(); ++p)
+        for (std::size_t c = 0; c < 3; ++c)
+            off[p] = std::max(off[p], std::abs(int(a.levels[3 * p + c]) - int(b.levels[3 * p + c])));
+    return off;
+}
+
+Comparison compare_levels(const LevelImage& a, const LevelImage& b, const Thresholds& thresholds) {
+    check_comparable(a, b);
+    Comparison result;
+    result.width = a.width;
+    result.height = a.height;
+    result.bits = a.bits;
+    result.pixels = std::uint64_t(a.width) * std::uint64_t(a.height);
+    result.thresholds = thresholds;
+    for (auto& channel : result.histogram) channel.assign(std::size_t(max_level(a.bits)) + 1, 0);
+    for (std::size_t p = 0; p < result.pixels; ++p) {
+        int off = 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const int d = std::abs(int(a.levels[3 * p + c]) - int(b.levels[3 * p + c]));
+            ++result.histogram[c][std::size_t(d)];
+            off = std::max(off, d);
+        }
+        if (off == 0) ++result.same_pixels;
+        if (off > thresholds.fail.levels) ++result.over_fail;
+        if (thresholds.warn && off > thresholds.warn->levels) ++result.over_warn;
+        result.max_levels = std::max(result.max_levels, off);
+    }
+    if (a.has_linear() && b.has_linear()) result.linear = linear_stats(a.linear, b.linear);
+    const double pixels = result.pixels ? double(result.pixels) : 1.0;
+    if (100.0 * double(result.over_fail) / pixels > thresholds.fail.percent)
+        result.verdict = Verdict::fail;
+    else if (thresholds.warn && 100.0 * double(result.over_warn) / pixels > thresholds.warn->percent)
+        result.verdict = Verdict::warn;
+    return result;
+}
+
+}  // namespace m3055::grading

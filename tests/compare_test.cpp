@@ -1,0 +1,203 @@
+// `m3055 compare` and renderer/grading/level_compare (issue 14): level
+// differences counted exactly on crafted images, thresholds at their edges,
+// the exit codes, and PNG vs PFM vs scene of the same picture.
+#include "grading/comparison_json.h"
+#include "grading/diff_image.h"
+#include "grading/level_compare.h"
+#include "image/image.h"
+#include "image/quantize.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace m3055;
+using namespace m3055::grading;
+
+namespace {
+
+// A w x h image of 5-bit levels, every channel at `level`.
+LevelImage flat(int w, int h, int level) {
+    LevelImage image;
+    image.width = w;
+    image.height = h;
+    image.bits = 5;
+    image.levels.assign(std::size_t(w) * std::size_t(h) * 3, std::uint8_t(level));
+    return image;
+}
+
+Rgb8Image to_png(const LevelImage& image) {
+    Rgb8Image png{image.width, image.height, {}};
+    for (std::uint8_t level : image.levels) png.pixels.push_back(level_to_png(level, image.bits));
+    return png;
+}
+
+}  // namespace
+
+TEST(LevelCompare, IdenticalImagesPassWithEveryPixelOnItsLevel) {
+    const Comparison c = compare_levels(flat(8, 4, 17), flat(8, 4, 17));
+    EXPECT_EQ(c.verdict, Verdict::pass);
+    EXPECT_EQ(c.same_pixels, 32u);
+    EXPECT_EQ(c.max_levels, 0);
+    for (const auto& channel : c.histogram) {
+        ASSERT_EQ(channel.size(), 32u);
+        EXPECT_EQ(channel[0], 32u);
+    }
+}
+
+TEST(LevelCompare, OnePixelOneLevelOffInOneChannel) {
+    LevelImage b = flat(8, 4, 17);
+    b.levels[3 * 5 + 1] = 18;  // pixel 5, green
+    const Comparison c = compare_levels(flat(8, 4, 17), b);
+    EXPECT_EQ(c.same_pixels, 31u);
+    EXPECT_EQ(c.max_levels, 1);
+    EXPECT_EQ(c.histogram[1][1], 1u);
+    EXPECT_EQ(c.histogram[1][0], 31u);
+    EXPECT_EQ(c.histogram[0][0], 32u);
+    EXPECT_EQ(c.over_fail, 1u);
+    EXPECT_EQ(c.verdict, Verdict::fail);  // default: any pixel off fails
+}
+
+TEST(LevelCompare, AWholeChannelOff) {
+    LevelImage b = flat(10, 10, 3);
+    for (std::size_t p = 0; p < 100; ++p) b.levels[3 * p + 2] = 10;  // blue 7 levels off everywhere
+    const Comparison c = compare_levels(flat(10, 10, 3), b);
+    EXPECT_EQ(c.same_pixels, 0u);
+    EXPECT_EQ(c.histogram[2][7], 100u);
+    EXPECT_EQ(c.histogram[0][0], 100u);
+    EXPECT_EQ(c.max_levels, 7);
+}
+
+TEST(LevelCompare, ThresholdsAtTheirEdges) {
+    LevelImage b = flat(10, 10, 10);
+    b.levels[0] = 12;  // one pixel of 100 (1 %) two levels off
+    const LevelImage a = flat(10, 10, 10);
+    EXPECT_EQ(compare_levels(a, b, {{2, 0.0}, {}}).verdict, Verdict::pass);  // 2 levels allowed
+    EXPECT_EQ(compare_levels(a, b, {{1, 0.0}, {}}).verdict, Verdict::fail);  // 1 % over, 0 % allowed
+    EXPECT_EQ(compare_levels(a, b, {{1, 1.0}, {}}).verdict, Verdict::pass);  // exactly 1 %: passes
+    EXPECT_EQ(compare_levels(a, b, {{1, 0.99}, {}}).verdict, Verdict::fail);
+    EXPECT_EQ(compare_levels(a, b, {{2, 0.0}, Threshold{1, 0.0}}).verdict, Verdict::warn);
+    EXPECT_EQ(compare_levels(a, b, {{2, 0.0}, Threshold{1, 1.0}}).verdict, Verdict::pass);
+    EXPECT_EQ(compare_levels(a, b, {{1, 0.0}, Threshold{0, 0.0}}).verdict, Verdict::fail);  // fail wins
+}
+
+TEST(LevelCompare, SizesDifferIsAnErrorNamingBoth) {
+    try {
+        compare_levels(flat(512, 320, 0), flat(256, 160, 0));
+        FAIL() << "no error";
+    } catch (const CompareError& e) {
+        EXPECT_STREQ(e.what(), "sizes differ: A is 512 x 320, B is 256 x 160");
+    }
+}
+
+TEST(LevelCompare, PngLevelsRoundTripForEveryBitDepth) {
+    for (int bits = 1; bits <= 8; ++bits)
+        for (int level = 0; level < (1 << bits); ++level) {
+            const Rgb8Image png{1, 1, {level_to_png(level, bits), 0, level_to_png(level, bits)}};
+            EXPECT_EQ(levels_from_png(png, bits).levels[0], level) << bits << " bits";
+        }
+}
+
+TEST(LevelCompare, PfmLinearStatsAndRowOrder) {
+    RgbFloatImage a{2, 2, std::vector<float>(12, 0.5f)};
+    RgbFloatImage b = a;
+    b.pixels[0] = 0.6f;  // bottom-left red in PFM order: top-to-bottom row 1
+    const LevelImage la = levels_from_pfm(a, 5), lb = levels_from_pfm(b, 5);
+    EXPECT_EQ(lb.levels[3 * 2], quantize_level(0.6, 5));
+    const Comparison c = compare_levels(la, lb);
+    ASSERT_TRUE(c.linear);
+    EXPECT_NEAR(c.linear->max_abs, 0.1, 1e-6);
+    EXPECT_NEAR(c.linear->mean_abs, 0.1 / 12, 1e-7);
+    EXPECT_NEAR(c.linear->rms, std::sqrt(0.01 / 12), 1e-7);
+    EXPECT_NEAR(c.linear->psnr_db, 10 * std::log10(12 / 0.01), 1e-4);
+    EXPECT_EQ(to_json(c)["linear"]["max_abs"].get<double>(), c.linear->max_abs);
+}
+
+TEST(DiffImage, ColoursByLevelsOffWithALegendBand) {
+    LevelImage b = flat(200, 10, 0);
+    b.levels[0] = 1;               // pixel (0,0) one level off
+    b.levels[3 * 1 + 0] = 9;       // pixel (1,0) nine levels off
+    const Rgb8Image image = difference_image(flat(200, 10, 0), b);
+    EXPECT_EQ(image.height, 10 + kLegendHeight);
+    std::uint8_t one[3], nine[3];
+    diff_colour(1, one);
+    diff_colour(9, nine);
+    EXPECT_TRUE(std::equal(one, one + 3, image.pixels.begin()));
+    EXPECT_TRUE(std::equal(nine, nine + 3, image.pixels.begin() + 3));
+    // Unchanged pixels are grey (the dimmed A), never a class colour.
+    EXPECT_EQ(image.pixels[6], image.pixels[7]);
+    EXPECT_EQ(image.pixels[7], image.pixels[8]);
+}
+
+// ---- The command --------------------------------------------------------------
+
+namespace {
+
+struct Files {
+    test::TempDir dir;
+    std::string png_a, png_b, png_small;
+    Files() {
+        LevelImage b = flat(16, 8, 12);
+        b.levels[0] = 14;
+        png_a = dir.file("a.png");
+        png_b = dir.file("b.png");
+        png_small = dir.file("small.png");
+        write_png(png_a, to_png(flat(16, 8, 12)));
+        write_png(png_b, to_png(b));
+        write_png(png_small, to_png(flat(8, 8, 12)));
+    }
+};
+
+}  // namespace
+
+TEST(CompareCommand, ExitCodesPassFailWarnError) {
+    Files f;
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_a}).exit_code, 0);
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b}).exit_code, 1);
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--fail-levels", "2"}).exit_code, 0);
+    const auto warn = test::run_m3055({"compare", f.png_a, f.png_b, "--fail-levels", "2", "--warn-levels", "1"});
+    EXPECT_EQ(warn.exit_code, 1);
+    EXPECT_NE(warn.out.find("warn:"), std::string::npos) << warn.out;
+    // 1 pixel of 128 is 0.78125 %.
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--fail-percent", "0.78125"}).exit_code, 0);
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--fail-percent", "0.78"}).exit_code, 1);
+    const auto sizes = test::run_m3055({"compare", f.png_a, f.png_small});
+    EXPECT_EQ(sizes.exit_code, 2);
+    EXPECT_NE(sizes.err.find("A is 16 x 8, B is 8 x 8"), std::string::npos) << sizes.err;
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.dir.file("missing.png")}).exit_code, 2);
+}
+
+TEST(CompareCommand, JsonIsOneObjectAndDiffIsWritten) {
+    Files f;
+    const std::string diff = f.dir.file("diff.png");
+    const auto run = test::run_m3055({"compare", f.png_a, f.png_b, "--json", "--diff", diff});
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    const nlohmann::json result = nlohmann::json::parse(run.out);
+    EXPECT_EQ(result["result"], "fail");
+    EXPECT_EQ(result["same_pixels"], 127);
+    EXPECT_EQ(result["max_levels"], 2);
+    EXPECT_EQ(result["histogram"]["r"][2], 1);
+    const Rgb8Image image = read_png(diff);
+    EXPECT_EQ(image.height, 8 + kLegendHeight);
+    // --diff may not overwrite an input.
+    EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--diff", f.png_a}).exit_code, 2);
+}
+
+TEST(CompareCommand, SceneAgainstItsOwnPngAndPfm) {
+    test::TempDir dir;
+    const std::string scene = test::source_path("scenes/spec_example.json");
+    ASSERT_EQ(test::run_m3055({"render", "--scene", scene, "--out", dir.file("s.png"), "--raw", dir.file("s.pfm")})
+                  .exit_code,
+              0);
+    for (const std::string other : {"s.png", "s.pfm"}) {
+        const auto run = test::run_m3055({"compare", scene, dir.file(other), "--json"});
+        EXPECT_EQ(run.exit_code, 0) << other << ": " << run.err << run.out;
+        const nlohmann::json result = nlohmann::json::parse(run.out);
+        EXPECT_EQ(result["same_percent"], 100.0);
+        if (other == "s.pfm") {
+            EXPECT_EQ(result["linear"]["max_abs"], 0.0);
+        }
+    }
+    // A PFM quantized on the CPU lands on the same levels as the GPU's PNG.
+    EXPECT_EQ(test::run_m3055({"compare", dir.file("s.png"), dir.file("s.pfm")}).exit_code, 0);
+}
