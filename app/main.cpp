@@ -4,6 +4,7 @@
 //   m3055 batch MANIFEST.json [--backend ...]
 //   m3055 bench [--out DIR] [--quick]
 //   m3055 compare A B [--fail-levels N] [--diff D.png] [--json]
+//   m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR [--shard K/N] | grade --merge DIR... --out DIR
 //   m3055 explore [--scene S.json]     (also plain `m3055` when $DISPLAY is set;
 //                                       not in a -DM3055_BUILD_EXPLORER=OFF build)
 #include "commands.h"
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
     m3055::add_bench_command(app);
     m3055::add_explore_command(app);
     m3055::add_compare_command(app);
+    m3055::add_grade_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& error) {

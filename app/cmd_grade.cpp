@@ -1,0 +1,99 @@
+// `m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR` (issue 14,
+// docs/grading.md): every submission rendered once, compared with the
+// assignment's reference, its rules checked, and grades.csv, grades.json,
+// report.html written. `--shard K/N` grades a deterministic share;
+// `--merge DIR...` joins the shards' outputs. The grading is renderer/grading/.
+// Exit 0: the run finished (whatever the scores); 1: it could not (bad
+// assignment, unusable reference or output folder); 2: usage.
+#include "capture.h"
+#include "commands.h"
+#include "interrupt.h"
+#include "progress.h"
+
+#include "grading/grade_run.h"
+#include "io/message_text.h"
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace m3055 {
+
+namespace {
+
+struct GradeOptions {
+    std::string assignment, submissions, out, shard = "1/1", gradescope, backend = "auto";
+    std::vector<std::string> merge;
+};
+
+void print_grade(const grading::Grade& grade) {
+    const std::vector<std::string> reasons = grade.reasons();
+    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", text::quote_name(grade.student).c_str(),
+                 text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
+                 grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
+                 reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+}
+
+void run_grade(const GradeOptions& options) {
+    if (!options.merge.empty()) {
+        const auto report = grading::merge_grading(options.merge, options.out, options.gradescope);
+        std::fprintf(stderr, "m3055: merged %zu shards, %zu submissions into %s\n", options.merge.size(),
+                     report.students.size(), text::quote_name(options.out).c_str());
+        return;
+    }
+    if (options.submissions.empty()) throw std::runtime_error("grade: SUBMISSIONS folder is required (or --merge)");
+    const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    grading::GradeRunOptions run;
+    run.out_dir = options.out;
+    run.shard = grading::parse_shard(options.shard);
+    run.gradescope = options.gradescope;
+    run.graded = print_grade;
+    std::unique_ptr<Capture> capture;  // made when the first scene is drawn
+    const Backend backend = parse_backend(options.backend);
+    const auto report = grading::run_grading(
+        assignment, options.submissions,
+        [&]() -> Renderer& {
+            if (!capture) capture = std::make_unique<Capture>(backend);
+            return capture->renderer();
+        },
+        run);
+    std::size_t passed = 0;
+    for (const auto& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
+    std::fprintf(stderr, "m3055: graded %zu submissions, %zu passed; wrote %s\n", report.students.size(), passed,
+                 text::quote_name(options.out + "/report.html").c_str());
+}
+
+}  // namespace
+
+void add_grade_command(CLI::App& app) {
+    auto options = std::make_shared<GradeOptions>();
+    CLI::App* command = app.add_subcommand(
+        "grade", "Grade a folder of submitted scenes against an assignment: grades.csv, grades.json, report.html");
+    command->add_option("assignment", options->assignment, "Assignment JSON (docs/grading.md)");
+    command->add_option("submissions", options->submissions, "Folder of NAME.json or NAME/scene.json submissions");
+    command->add_option("--out", options->out, "Output folder")->required();
+    command->add_option("--shard", options->shard, "Grade only shard K of N (sorted names), e.g. 2/4")
+        ->capture_default_str();
+    command->add_option("--merge", options->merge, "Merge the outputs of shard runs (their --out folders)")
+        ->expected(1, -1);
+    command->add_option("--gradescope", options->gradescope, "Also write a Gradescope-style results.json here");
+    command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
+        ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->callback([options]() {
+        // SIGINT, SIGTERM, SIGHUP: temporaries removed, images already graded kept,
+        // no tables (they are written last), one line.
+        const InterruptGuard interrupt([](int signal) {
+            return error_line("interrupted by " + signal_name(signal) + ": grades.csv, grades.json and report.html not written");
+        });
+        try {
+            if (options->merge.empty() && options->assignment.empty())
+                throw std::runtime_error("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
+            run_grade(*options);
+        } catch (const std::exception& error) {
+            std::cerr << error_text(error) << "\n";
+            throw CLI::RuntimeError(kExitFailure);
+        }
+    });
+}
+
+}  // namespace m3055

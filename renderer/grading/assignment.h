@@ -1,0 +1,59 @@
+// An assignment (`m3055 grade ASSIGNMENT.json`, docs/grading.md): the
+// reference the students' renders are compared with, the tolerance and points
+// of that comparison, and optional rules on the submitted scene file itself
+// from a small fixed vocabulary (no scripting). Loaded and validated whole
+// before any submission is looked at; every error is one line naming the file
+// and the field, like the scene loader's.
+#pragma once
+
+#include "grading/level_compare.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace m3055::grading {
+
+class AssignmentError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// One rule of the vocabulary (docs/grading.md#rules). Fields unused by a kind stay at their defaults.
+enum class RuleKind {
+    model,        // {"rule": "model", "is": "metal", "object": 0}       (no "object": every object)
+    light_count,  // {"rule": "light_count", "equals": 3}                 (enabled lights)
+    warmer,       // {"rule": "warmer", "light": "key", "than": "fill"}
+    key_to_fill,  // {"rule": "key_to_fill", "min": 2, "max": 4}          (analysis/lighting_ratio.h)
+    eq14,         // {"rule": "eq14", "object": 0, "within_percent": 1}  (scene/presets.h: highlight_peak)
+    range,        // {"rule": "range", "path": "objects[0].material.m", "min": 5, "max": 20}
+};
+const char* to_string(RuleKind kind);
+
+struct Rule {
+    RuleKind kind = RuleKind::model;
+    std::string label;   // "rules[2] (key_to_fill)", or the rule's own "name"
+    double points = 0;
+    std::string text;    // model: the model's name; warmer: the warmer light; range: the path
+    std::string other;   // warmer: the other light
+    int object = -1;     // model, eq14: the object's index (-1: every object, model only)
+    double min = 0, max = 0;  // key_to_fill, range (inclusive); light_count: min = max = N; eq14: max = percent
+};
+
+struct Assignment {
+    std::string path;       // the assignment file, as given
+    std::string title;
+    std::string reference;  // a scene, .png or .pfm, joined to the assignment's folder
+    double image_points = 0;
+    Thresholds image_tolerance;  // only "fail" is used for the score (warn is ignored)
+    std::vector<Rule> rules;
+    double pass_score = 0;  // a submission passes with at least this score
+    double time_budget_s = 30;  // each submission's render budget (capture.h: scene_deadline)
+    double max_score() const;
+};
+
+// Reads and validates ASSIGNMENT.json (io/input_file.h: bounded, regular files only).
+Assignment load_assignment(const std::string& path);
+Assignment assignment_from_json(const std::string& text, const std::string& path);
+
+}  // namespace m3055::grading

@@ -1,0 +1,94 @@
+#include "grading/grade.h"
+
+#include "grading/image_input.h"
+#include "scene/load.h"
+
+#include <cstdio>
+
+namespace m3055::grading {
+
+namespace {
+
+Check image_check(const Assignment& assignment, const Comparison& c) {
+    Check check;
+    check.label = "image";
+    check.points = assignment.image_points;
+    check.ok = c.verdict != Verdict::fail;
+    check.earned = check.ok ? check.points : 0.0;
+    char line[200];
+    std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
+                  100.0 * c.same_share(), 100.0 * double(c.over_fail) / double(c.pixels ? c.pixels : 1),
+                  c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
+    check.reason = std::string("image: ") + line;
+    return check;
+}
+
+void total(Grade& grade, const Assignment& assignment) {
+    grade.max = assignment.max_score();
+    grade.score = 0;
+    for (const Check& check : grade.checks) grade.score += check.earned;
+    grade.passed = grade.broken.empty() && grade.score >= assignment.pass_score;
+}
+
+}  // namespace
+
+std::vector<std::string> Grade::reasons() const {
+    if (!broken.empty()) return {broken};
+    std::vector<std::string> out;
+    for (const Check& check : checks)
+        if (!check.ok) out.push_back(check.label == "image" ? check.reason : check.label + ": " + check.reason);
+    if (!screenshot_ok) out.push_back(screenshot);
+    return out;
+}
+
+Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,
+                  const LevelImage& render) {
+    Grade grade;
+    try {
+        Thresholds tolerance;
+        tolerance.fail = assignment.image_tolerance.fail;
+        grade.comparison = compare_levels(reference, render, tolerance);
+        grade.checks.push_back(image_check(assignment, *grade.comparison));
+    } catch (const CompareError& e) {
+        // A student's display of another size or depth is their mistake, not an error of the run.
+        grade.checks.push_back({"image", assignment.image_points, 0.0, false, std::string("image: ") + e.what() +
+                                                                         " (A the reference, B the submission)"});
+    }
+    const nlohmann::json document = scene_to_json(scene);
+    for (const Rule& rule : assignment.rules) grade.checks.push_back(check_rule(rule, scene, document));
+    total(grade, assignment);
+    return grade;
+}
+
+Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
+                LevelImage* render_out) {
+    LevelImage render = render_levels(renderer, scene);
+    Grade grade = grade_scene(assignment, scene, reference, render);
+    if (render_out) *render_out = std::move(render);
+    return grade;
+}
+
+Grade broken_grade(const Assignment& assignment, const std::string& student, const std::string& reason) {
+    Grade grade;
+    grade.student = student;
+    grade.broken = reason;
+    total(grade, assignment);
+    return grade;
+}
+
+void check_screenshot(Grade& grade, const LevelImage& screenshot, const LevelImage& render,
+                      const std::string& screenshot_name) {
+    try {
+        const Comparison c = compare_levels(render, screenshot);
+        grade.screenshot_ok = c.same_pixels == c.pixels;
+        grade.screenshot = screenshot_name + (grade.screenshot_ok ? ": is the render of the scene"
+                                                                  : ": is not the render of the scene: " +
+                                                                        std::to_string(c.pixels - c.same_pixels) +
+                                                                        " pixels differ");
+    } catch (const CompareError& e) {
+        grade.screenshot_ok = false;
+        grade.screenshot = screenshot_name + ": is not the render of the scene: " + e.what() + " (A the render)";
+    }
+}
+
+}  // namespace m3055::grading

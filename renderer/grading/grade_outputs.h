@@ -1,0 +1,40 @@
+// The outputs of `m3055 grade` (docs/grading.md#outputs): grades.csv,
+// grades.json, report.html and the optional Gradescope results.json, all made
+// from one GradeReport, so an unsharded run and a merge of shards (which
+// reads the shards' grades.json back) write the same bytes. Nothing here
+// holds a timestamp for that reason.
+#pragma once
+
+#include "grading/assignment.h"
+#include "grading/grade.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace m3055::grading {
+
+struct GradeReport {
+    nlohmann::json assignment;             // title, max, pass, reference image name
+    std::vector<nlohmann::json> students;  // sorted by "student"
+};
+
+nlohmann::json assignment_json(const Assignment& assignment);
+// `images`: whether NAME.png and NAME-diff.png were written for this student.
+nlohmann::json grade_json(const Grade& grade, bool images);
+
+std::string grades_csv(const GradeReport& report);
+std::string grades_json(const GradeReport& report);
+std::string gradescope_json(const GradeReport& report);
+// One self-contained page: every image inlined as a data: URI (read through
+// `image_bytes(file name)`, empty when absent), no network, no framework; a
+// few lines of inline script sort the table by a column; readable printed.
+std::string report_html(const GradeReport& report,
+                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
+
+std::string base64(const std::vector<std::uint8_t>& bytes);
+
+}  // namespace m3055::grading

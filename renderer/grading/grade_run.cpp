@@ -1,0 +1,227 @@
+#include "grading/grade_run.h"
+
+#include "grading/diff_image.h"
+#include "grading/image_input.h"
+#include "image/image.h"
+#include "io/input_file.h"
+#include "io/message_text.h"
+#include "gl/program.h"
+#include "passes/draw_chunks.h"
+#include "scene/json_parse.h"
+#include "scene/load.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+namespace m3055::grading {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kTables[] = {"grades.csv", "grades.json", "report.html"};
+
+void prepare_out_dir(const std::string& out_dir) {
+    std::error_code error;
+    fs::create_directories(out_dir, error);
+    if (!fs::is_directory(out_dir, error))
+        throw std::runtime_error(text::quote_name(out_dir) + ": --out: cannot make the output folder: " +
+                                 (error ? error.message() : "not a folder"));
+    // Tables of an earlier run go first: after a run that was stopped there
+    // are none, rather than old ones beside new images.
+    for (const char* table : kTables) fs::remove(fs::path(out_dir) / table, error);
+}
+
+std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+
+std::vector<std::uint8_t> read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+LevelImage reference_levels(const Assignment& assignment, const std::function<Renderer&()>& renderer,
+                            Rgb8Image& display) {
+    if (input_kind(assignment.reference) != InputKind::scene) {
+        LevelImage image = read_level_image(assignment.reference, 5);
+        display = read_png(assignment.reference);  // shown as it is
+        return image;
+    }
+    const Scene scene = load_scene_file(assignment.reference);
+    Renderer& r = renderer();
+    r.set_deadline(std::nullopt);
+    r.render(scene);
+    display = r.read_display();
+    return levels_from_render(display, r.read_raw(), scene.display.bits);
+}
+
+// Grades one submission: score 0 and its one-line reason for whatever is wrong with it.
+Grade grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
+                       const LevelImage& reference, const std::string& out_dir) {
+    if (!s.problem.empty()) return broken_grade(assignment, s.student, s.problem);
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        const Scene scene = load_scene_file(s.scene);
+        Renderer& r = renderer();
+        if (assignment.time_budget_s > 0)
+            r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(assignment.time_budget_s)));
+        try {
+            r.render(scene);
+        } catch (const RenderTimeout&) {
+            r.set_deadline(std::nullopt);
+            return broken_grade(assignment, s.student,
+                                text::quote_name(s.scene) + ": over its time budget: not drawn within " +
+                                    text::format_number(assignment.time_budget_s) + " s (the assignment's time_budget)");
+        }
+        r.set_deadline(std::nullopt);
+        const Rgb8Image display = r.read_display();
+        const LevelImage render = levels_from_render(display, r.read_raw(), scene.display.bits);
+        Grade grade = grade_scene(assignment, scene, reference, render);
+        grade.student = s.student;
+        if (!s.screenshot.empty()) {
+            const std::string shown = text::quote_name(s.student + "/screenshot.png");
+            try {
+                check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), render, shown);
+            } catch (const std::exception& e) {
+                grade.screenshot_ok = false;
+                grade.screenshot = e.what();
+            }
+        }
+        std::vector<FileContents> files = {{join(out_dir, s.student + ".png"), encode_png(display)}};
+        if (render.width == reference.width && render.height == reference.height && render.bits == reference.bits)
+            files.push_back({join(out_dir, s.student + "-diff.png"), encode_png(difference_image(reference, render))});
+        write_files_atomic(files);
+        return grade;
+    } catch (const ShaderError&) {
+        throw;  // a broken build fails every scene: not the student's fault
+    } catch (const std::exception& e) {
+        return broken_grade(assignment, s.student, text::one_line(e.what()));
+    }
+}
+
+void write_tables(const std::string& out_dir, const GradeReport& report, const std::string& gradescope,
+                  const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    const auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
+    std::vector<FileContents> files = {{join(out_dir, "grades.csv"), bytes(grades_csv(report))},
+                                       {join(out_dir, "grades.json"), bytes(grades_json(report))},
+                                       {join(out_dir, "report.html"), bytes(report_html(report, image_bytes))}};
+    if (!gradescope.empty()) files.push_back({gradescope, bytes(gradescope_json(report))});
+    write_files_atomic(files);
+}
+
+}  // namespace
+
+GradeReport run_grading(const Assignment& assignment, const std::string& submissions_dir,
+                        const std::function<Renderer&()>& renderer, const GradeRunOptions& options) {
+    std::error_code error;
+    if (fs::equivalent(submissions_dir, options.out_dir, error))
+        throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
+    const std::vector<Submission> all = find_submissions(submissions_dir);
+    const std::vector<Submission> mine = take_shard(all, options.shard);
+    prepare_out_dir(options.out_dir);
+    Rgb8Image reference_display;
+    const LevelImage reference = reference_levels(assignment, renderer, reference_display);
+    write_png(join(options.out_dir, "reference.png"), reference_display);
+
+    GradeReport report;
+    report.assignment = assignment_json(assignment);
+    if (options.shard.n > 1)
+        report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
+    for (const Submission& s : mine) {
+        const Grade grade = grade_submission(assignment, s, renderer, reference, options.out_dir);
+        const bool images = grade.broken.empty();
+        json entry = grade_json(grade, images);
+        if (images && !fs::exists(join(options.out_dir, s.student + "-diff.png"), error)) entry["images"]["diff"] = "";
+        report.students.push_back(std::move(entry));
+        if (options.graded) options.graded(grade);
+    }
+    write_tables(options.out_dir, report, options.gradescope,
+                 [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
+    return report;
+}
+
+namespace {
+
+json read_shard(const std::string& dir) {
+    const std::string path = join(dir, "grades.json");
+    const json doc = scene_json::parse_document(io::read_input_file(path, std::size_t(256) << 20), text::quote_name(path));
+    if (!doc.is_object() || !doc.contains("assignment") || !doc.contains("students") || !doc["students"].is_array() ||
+        !doc["assignment"].is_object())
+        throw std::runtime_error(text::quote_name(path) + ": not the grades.json of m3055 grade");
+    return doc;
+}
+
+// Which shards are there: every K of one N, each once; a missing shard would
+// silently drop students from the class's grades.
+void check_shards(const std::vector<json>& docs, const std::vector<std::string>& dirs) {
+    std::set<int> seen;
+    int n = 0;
+    for (std::size_t i = 0; i < docs.size(); ++i) {
+        const json& a = docs[i]["assignment"];
+        const std::string shard = a.contains("shard") && a["shard"].is_string() ? a["shard"].get<std::string>() : "1/1";
+        const Shard parsed = parse_shard(shard);
+        if (n && parsed.n != n)
+            throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " is not of the same " +
+                                     std::to_string(n) + " shards as the others");
+        n = parsed.n;
+        if (!seen.insert(parsed.k).second)
+            throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " given twice");
+        json plain = a;
+        plain.erase("shard");
+        json first = docs[0]["assignment"];
+        first.erase("shard");
+        if (plain != first)
+            throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another assignment than " +
+                                     text::quote_name(dirs[0]));
+    }
+    for (int k = 1; k <= n; ++k)
+        if (!seen.count(k))
+            throw std::runtime_error("--merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+}
+
+}  // namespace
+
+GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std::string& out_dir,
+                          const std::string& gradescope) {
+    std::vector<json> docs;
+    for (const std::string& dir : shard_dirs) docs.push_back(read_shard(dir));
+    check_shards(docs, shard_dirs);
+    GradeReport report;
+    report.assignment = docs[0]["assignment"];
+    report.assignment.erase("shard");
+    std::map<std::string, std::string> image_dir;  // image file name -> the shard folder holding it
+    image_dir["reference.png"] = shard_dirs[0];
+    for (std::size_t i = 0; i < docs.size(); ++i)
+        for (const json& s : docs[i]["students"]) {
+            report.students.push_back(s);
+            if (s["images"].is_object())
+                for (const char* key : {"render", "diff"})
+                    if (!s["images"][key].get<std::string>().empty()) image_dir[s["images"][key]] = shard_dirs[i];
+        }
+    std::stable_sort(report.students.begin(), report.students.end(), [](const json& a, const json& b) {
+        return a["student"].get<std::string>() < b["student"].get<std::string>();
+    });
+    for (std::size_t i = 1; i < report.students.size(); ++i)
+        if (report.students[i]["student"] == report.students[i - 1]["student"])
+            throw std::runtime_error("--merge: " + text::quote_name(report.students[i]["student"].get<std::string>()) +
+                                     " is graded in two shards");
+    prepare_out_dir(out_dir);
+    std::error_code error;
+    for (const auto& [name, dir] : image_dir) {
+        if (fs::exists(join(out_dir, name), error) && fs::equivalent(join(out_dir, name), join(dir, name), error))
+            continue;  // merging into one of the shards' own folders
+        const std::vector<std::uint8_t> bytes = read_bytes(join(dir, name));
+        write_file_atomic(join(out_dir, name), bytes.data(), bytes.size());
+    }
+    write_tables(out_dir, report, gradescope, [&](const std::string& name) {
+        return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(out_dir, name));
+    });
+    return report;
+}
+
+}  // namespace m3055::grading

@@ -1,0 +1,137 @@
+#include "grading/rules.h"
+
+#include "analysis/lighting_ratio.h"
+#include "io/message_text.h"
+#include "models/model_spec.h"
+#include "scene/presets.h"
+
+#include <cmath>
+
+namespace m3055::grading {
+
+namespace {
+
+using text::format_number;
+
+std::string fixed(double value, int digits = 3) {
+    char out[64];
+    std::snprintf(out, sizeof out, "%.*f", digits, value);
+    return out;
+}
+
+std::string object_name(int index) { return "objects[" + std::to_string(index) + "]"; }
+
+// Passes when `ok`; the reason is said either way.
+Check result(const Rule& rule, bool ok, std::string reason) {
+    return {rule.label, rule.points, ok ? rule.points : 0.0, ok, std::move(reason)};
+}
+
+Check check_model(const Rule& rule, const Scene& scene) {
+    if (rule.object >= int(scene.objects.size()))
+        return result(rule, false, "no " + object_name(rule.object) + " (the scene has " +
+                                       std::to_string(scene.objects.size()) + " objects)");
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        if (rule.object >= 0 && i != rule.object) continue;
+        const std::string& model = scene.objects[std::size_t(i)].material.model_name();
+        if (model != rule.text) return result(rule, false, object_name(i) + " is " + model + ", not " + rule.text);
+    }
+    if (scene.objects.empty()) return result(rule, false, "the scene has no objects");
+    return result(rule, true, (rule.object >= 0 ? object_name(rule.object) : "every object") + " is " + rule.text);
+}
+
+int enabled_lights(const Scene& scene) {
+    int count = 0;
+    for (const Light& light : scene.lights) count += (light.enabled && light.intensity > 0) ? 1 : 0;
+    return count;
+}
+
+const Light* named_light(const Scene& scene, const std::string& name) {
+    for (const Light& light : scene.lights)
+        if (light.name == name) return &light;
+    return nullptr;
+}
+
+// Warmth of a light's colour: how much redder than blue it is (c_r - c_b),
+// the axis along which a warm (orange) and a cool (blue) key differ.
+double warmth(const Light& light) { return light.color.r - light.color.b; }
+
+Check check_warmer(const Rule& rule, const Scene& scene) {
+    const Light* warm = named_light(scene, rule.text);
+    const Light* other = named_light(scene, rule.other);
+    if (!warm || !other)
+        return result(rule, false, "no light named " + text::quote(!warm ? rule.text : rule.other));
+    const std::string values = " (red - blue " + fixed(warmth(*warm)) + " against " + fixed(warmth(*other)) + ")";
+    if (warmth(*warm) > warmth(*other))
+        return result(rule, true, text::quote(rule.text) + " is warmer than " + text::quote(rule.other) + values);
+    return result(rule, false, text::quote(rule.text) + " is not warmer than " + text::quote(rule.other) + values);
+}
+
+Check check_key_to_fill(const Rule& rule, const Scene& scene) {
+    const KeyFillRatio ratio = key_to_fill_ratio(scene);
+    if (!ratio.ok()) return result(rule, false, ratio.problem);
+    const std::string range = format_number(rule.min) + ":1 to " + format_number(rule.max) + ":1";
+    const bool ok = ratio.ratio >= rule.min && ratio.ratio <= rule.max;
+    return result(rule, ok, "key-to-fill " + ratio.text() + (ok ? ", within " : ", not within ") + range);
+}
+
+Check check_eq14(const Rule& rule, const Scene& scene) {
+    if (rule.object >= int(scene.objects.size())) return result(rule, false, "no " + object_name(rule.object));
+    const Material& material = scene.objects[std::size_t(rule.object)].material;
+    if (material.model().family != Family::metal)
+        return result(rule, false, object_name(rule.object) + " is " + material.model_name() + ", not a metal model");
+    const double peak = highlight_peak(material);
+    const double off = 100.0 * std::abs(peak - 1.0);
+    const bool ok = off <= rule.max;
+    return result(rule, ok, object_name(rule.object) + ": highlight centre d + sum = " + fixed(peak, 4) + ", " +
+                                fixed(off, 2) + " % from 1 (eq. 14), allowed " + format_number(rule.max) + " %");
+}
+
+// "objects[0].material.m" -> the JSON pointer "/objects/0/material/m".
+nlohmann::json::json_pointer pointer_of(const std::string& path) {
+    std::string pointer = "/";
+    for (char c : path) {
+        if (c == '.' || c == '[') {
+            if (pointer.back() != '/') pointer += '/';
+        } else if (c != ']') {
+            pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+        }
+    }
+    return nlohmann::json::json_pointer(pointer);
+}
+
+Check check_range(const Rule& rule, const nlohmann::json& document) {
+    const std::string name = text::cut_end(rule.text, text::kMaxPathBytes);
+    const std::string range = "[" + format_number(rule.min) + ", " + format_number(rule.max) + "]";
+    const nlohmann::json* value = nullptr;
+    try {
+        const auto pointer = pointer_of(rule.text);
+        if (document.contains(pointer)) value = &document.at(pointer);
+    } catch (const nlohmann::json::exception&) {
+    }
+    if (!value) return result(rule, false, name + ": not in the scene");
+    if (!value->is_number()) return result(rule, false, name + ": not a number");
+    const double v = value->get<double>();
+    const bool ok = v >= rule.min && v <= rule.max;
+    return result(rule, ok, name + " = " + format_number(v) + (ok ? ", within " : ", not within ") + range);
+}
+
+}  // namespace
+
+Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& document) {
+    switch (rule.kind) {
+        case RuleKind::model: return check_model(rule, scene);
+        case RuleKind::light_count: {
+            const int count = enabled_lights(scene);
+            const int want = int(rule.min);
+            return result(rule, count == want,
+                          std::to_string(count) + " lights enabled" + (count == want ? "" : ", not " + std::to_string(want)));
+        }
+        case RuleKind::warmer: return check_warmer(rule, scene);
+        case RuleKind::key_to_fill: return check_key_to_fill(rule, scene);
+        case RuleKind::eq14: return check_eq14(rule, scene);
+        case RuleKind::range: return check_range(rule, document);
+    }
+    return result(rule, false, "unknown rule");
+}
+
+}  // namespace m3055::grading
