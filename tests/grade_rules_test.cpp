@@ -1,0 +1,151 @@
+// The rule vocabulary of grading (renderer/grading/rules.h) and the
+// assignment loader: each rule passes and fails on a crafted scene, with the
+// one-line reason; a malformed assignment is one line naming the field.
+#include "grading/assignment.h"
+#include "grading/grade.h"
+#include "grading/rules.h"
+#include "grading/submissions.h"
+#include "scene/load.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+using namespace m3055;
+using namespace m3055::grading;
+
+namespace {
+
+// The worked assignment's reference: gold metal sphere (eq. 14 holds exactly),
+// warm key a = 1, white fill a = 0.3, back a = 0.7.
+nlohmann::json reference_doc() {
+    return nlohmann::json::parse(test::read_text(test::source_path("assignments/three-point/reference.json")));
+}
+
+Check check(const std::string& rule_json, const nlohmann::json& doc) {
+    const std::string assignment = R"({"reference": "r.json", "rules": [)" + rule_json + "]}";
+    const Assignment a = assignment_from_json(assignment, "a.json");
+    const Scene scene = scene_from_json(doc, "s.json");
+    return check_rule(a.rules.at(0), scene, scene_to_json(scene));
+}
+
+}  // namespace
+
+TEST(GradeRules, ModelPassesAndFails) {
+    nlohmann::json doc = reference_doc();
+    EXPECT_TRUE(check(R"({"rule": "model", "is": "metal", "points": 1})", doc).ok);
+    const Check wrong = check(R"({"rule": "model", "is": "metal_blinn", "object": 0, "points": 1})", doc);
+    EXPECT_FALSE(wrong.ok);
+    EXPECT_EQ(wrong.reason, "objects[0] is metal, not metal_blinn");
+    EXPECT_EQ(check(R"({"rule": "model", "is": "metal", "object": 3, "points": 1})", doc).reason,
+              "no objects[3] (the scene has 1 objects)");
+}
+
+TEST(GradeRules, LightCountCountsEnabledLights) {
+    nlohmann::json doc = reference_doc();
+    EXPECT_TRUE(check(R"({"rule": "light_count", "equals": 3, "points": 1})", doc).ok);
+    doc["lights"][2]["enabled"] = false;
+    const Check two = check(R"({"rule": "light_count", "equals": 3, "points": 1})", doc);
+    EXPECT_FALSE(two.ok);
+    EXPECT_EQ(two.reason, "2 lights enabled, not 3");
+}
+
+TEST(GradeRules, WarmerComparesRedMinusBlue) {
+    nlohmann::json doc = reference_doc();
+    const std::string rule = R"({"rule": "warmer", "light": "key", "than": "fill", "points": 1})";
+    EXPECT_TRUE(check(rule, doc).ok);
+    doc["lights"][0]["color"] = {1, 1, 1};  // as warm as the fill: not warmer
+    EXPECT_FALSE(check(rule, doc).ok);
+    doc["lights"][0].erase("name");
+    EXPECT_EQ(check(rule, doc).reason, "no light named \"key\"");
+}
+
+TEST(GradeRules, KeyToFillUsesTheExplorersRatio) {
+    nlohmann::json doc = reference_doc();
+    // Y(key) = 0.2126 + 0.7152 * 0.82 + 0.0722 * 0.6 = 0.842384; fill 0.3: 2.808:1.
+    const Check ok = check(R"({"rule": "key_to_fill", "min": 2, "max": 4, "points": 1})", doc);
+    EXPECT_TRUE(ok.ok) << ok.reason;
+    EXPECT_EQ(ok.reason.rfind("key-to-fill 2.81:1", 0), 0u) << ok.reason;
+    // The edges are inclusive: a range ending just below the ratio fails.
+    EXPECT_FALSE(check(R"({"rule": "key_to_fill", "min": 2, "max": 2.8, "points": 1})", doc).ok);
+    doc["lights"][1]["intensity"] = 0.65;
+    EXPECT_FALSE(check(R"({"rule": "key_to_fill", "min": 2, "max": 4, "points": 1})", doc).ok);
+}
+
+TEST(GradeRules, Eq14WithinPercent) {
+    nlohmann::json doc = reference_doc();  // d + 0.013/0.04 + 0.1/0.16 = 1 exactly
+    const std::string rule = R"({"rule": "eq14", "object": 0, "within_percent": 1, "points": 1})";
+    EXPECT_TRUE(check(rule, doc).ok);
+    doc["objects"][0]["material"]["d"] = 0.0595;  // 0.95 % over: passes
+    EXPECT_TRUE(check(rule, doc).ok);
+    doc["objects"][0]["material"]["d"] = 0.0605;  // 1.05 % over: fails
+    EXPECT_FALSE(check(rule, doc).ok);
+    doc["objects"][0]["material"] = {{"model", "highlight"}, {"color", {1, 0, 0}}};
+    EXPECT_EQ(check(rule, doc).reason, "objects[0] is highlight, not a metal model");
+}
+
+TEST(GradeRules, RangeFindsDefaultsAndMissingPaths) {
+    nlohmann::json doc = reference_doc();
+    EXPECT_TRUE(check(R"({"rule": "range", "path": "objects[0].material.d", "min": 0, "max": 0.1, "points": 1})", doc).ok);
+    EXPECT_FALSE(check(R"({"rule": "range", "path": "lights[1].intensity", "min": 0.5, "max": 1, "points": 1})", doc).ok);
+    // The default of an unwritten field is what the scene means, so it counts.
+    doc["lights"][1].erase("intensity");
+    EXPECT_TRUE(check(R"({"rule": "range", "path": "lights[1].intensity", "min": 1, "max": 1, "points": 1})", doc).ok);
+    EXPECT_EQ(check(R"({"rule": "range", "path": "objects[4].radius", "min": 0, "max": 1, "points": 1})", doc).reason,
+              "objects[4].radius: not in the scene");
+}
+
+TEST(GradeAssignment, ErrorsNameTheField) {
+    const auto error = [](const std::string& text) {
+        try {
+            assignment_from_json(text, "a.json");
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error(R"({})"), "a.json: reference: is required");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "colour"}]})"),
+              "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range)");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "eq14", "object": 0, "within_percent": 1}]})"),
+              "a.json: rules[0].points: is required");
+    EXPECT_EQ(error(R"({"reference": "r.json", "image": {"points": 10, "fail_levels": -1}})"),
+              "a.json: image.fail_levels: must be in [0, 255], got -1");
+    EXPECT_EQ(error(R"({"reference": "r.json", "extra": 1})"), "a.json: extra: is not a field here");
+    EXPECT_EQ(error(R"({"reference": "r.json", "image": {"points": 10}, "pass": 11})"),
+              "a.json: pass: must be in [0, 10], got 11");
+}
+
+TEST(GradeScore, PointsAddUpAndPassNeedsThePassScore) {
+    const Assignment a = assignment_from_json(
+        R"({"reference": "r.json", "image": {"points": 40},
+            "rules": [{"rule": "light_count", "equals": 3, "points": 10}, {"rule": "light_count", "equals": 2, "points": 5}],
+            "pass": 50})",
+        "a.json");
+    const Scene scene = scene_from_json(reference_doc(), "s.json");
+    LevelImage image;
+    image.width = image.height = 2;
+    image.levels.assign(12, 3);
+    const Grade grade = grade_scene(a, scene, image, image);
+    EXPECT_EQ(grade.score, 50);
+    EXPECT_EQ(grade.max, 55);
+    EXPECT_TRUE(grade.passed);
+    ASSERT_EQ(grade.reasons().size(), 1u);
+    EXPECT_EQ(grade.reasons()[0], "rules[1] (light_count): 3 lights enabled, not 2");
+    const Grade broken = broken_grade(a, "x", "x.json: invalid JSON");
+    EXPECT_EQ(broken.score, 0);
+    EXPECT_FALSE(broken.passed);
+}
+
+TEST(GradeShards, EveryItemInExactlyOneShard) {
+    std::vector<Submission> all(11);
+    for (std::size_t i = 0; i < all.size(); ++i) all[i].student = std::to_string(i);
+    std::size_t total = 0;
+    for (int k = 1; k <= 4; ++k) total += take_shard(all, {k, 4}).size();
+    EXPECT_EQ(total, 11u);
+    EXPECT_EQ(take_shard(all, {2, 4})[1].student, "5");
+    EXPECT_THROW(parse_shard("0/4"), std::invalid_argument);
+    EXPECT_THROW(parse_shard("5/4"), std::invalid_argument);
+    EXPECT_THROW(parse_shard("1/4x"), std::invalid_argument);
+    EXPECT_EQ(parse_shard("3/4").k, 3);
+}

@@ -1,0 +1,183 @@
+// `m3055 grade` as a teacher runs it (issue 14): the worked assignment's
+// scores, every kind of broken submission scoring 0 with its reason without
+// stopping the run, a run killed halfway leaving no tables, report.html in
+// headless Chromium, and 4 shards under GNU parallel merged to the same bytes.
+#include "grading/grade_outputs.h"
+#include "image/image.h"
+#include "test_support.h"
+#include "untrusted_harness.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <signal.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <thread>
+
+namespace m3055::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kAssignment = source_path("assignments/three-point/assignment.json");
+const std::string kSubmissions = source_path("assignments/three-point/submissions");
+
+json read_json(const std::string& path) { return json::parse(read_text(path)); }
+
+std::map<std::string, json> by_student(const json& grades) {
+    std::map<std::string, json> out;
+    for (const json& s : grades["students"]) out[s["student"]] = s;
+    return out;
+}
+
+bool have_program(const std::string& name) {
+    return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+TEST(Grade, WorkedAssignmentScores) {
+    TempDir out;
+    const RunResult run = run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path(), "--gradescope",
+                                     out.file("results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(out.file("grades.json")));
+    const std::map<std::string, double> expected = {{"alice", 100}, {"bob", 100}, {"carol", 50},
+                                                    {"dave", 50},   {"erin", 50}, {"frank", 0}};
+    ASSERT_EQ(s.size(), expected.size());
+    for (const auto& [name, score] : expected) EXPECT_EQ(s.at(name)["score"], score) << name;
+    EXPECT_EQ(s.at("alice")["comparison"]["same_pixels"], s.at("alice")["comparison"]["pixels"]);
+    EXPECT_EQ(s.at("carol")["screenshot"], "carol/screenshot.png: is the render of the scene");
+    EXPECT_NE(s.at("dave")["reasons"][1].get<std::string>().find("is metal_blinn, not metal"), std::string::npos);
+    EXPECT_NE(s.at("frank")["broken"].get<std::string>().find("lobes[0].m: must be in [0.001, 2], got 5"),
+              std::string::npos);
+    // alice.png is byte for byte what `m3055 render` writes for her scene.
+    const RunResult render = run_m3055({"render", "--scene", kSubmissions + "/alice.json", "--out", out.file("r.png")});
+    ASSERT_EQ(render.exit_code, 0);
+    EXPECT_EQ(read_text(out.file("r.png")), read_text(out.file("alice.png")));
+    const std::string csv = read_text(out.file("grades.csv"));
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max,result,reasons");
+    EXPECT_NE(csv.find("\nalice,100,100,pass,\n"), std::string::npos) << csv;
+    EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
+}
+
+TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
+    TempDir dir;
+    const std::string subs = dir.file("subs");
+    fs::create_directories(subs + "/nofile");
+    fs::create_directories(subs + "/ok");
+    fs::copy_file(kSubmissions + "/alice.json", subs + "/ok/scene.json");
+    write_text(subs + "/badjson.json", "{\"display\": ");
+    json range = read_json(kSubmissions + "/alice.json");
+    range["lights"][0]["intensity"] = 11;
+    write_text(subs + "/range.json", range.dump());
+    write_text(subs + "/large.json", "");
+    fs::resize_file(subs + "/large.json", std::uintmax_t(17) << 20);  // over the 16 MiB limit
+    ASSERT_EQ(mkfifo((subs + "/fifo.json").c_str(), 0600), 0);
+    write_stalling_scene(subs + "/slow.json");  // 100 000 spheres under many lights
+    json assignment = read_json(kAssignment);
+    assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment["time_budget"] = 2;
+    write_text(dir.file("a.json"), assignment.dump());
+    const RunResult run = run_m3055({"grade", dir.file("a.json"), subs, "--out", dir.file("out")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    const std::map<std::string, std::string> reasons = {
+        {"badjson", "invalid JSON"},
+        {"range", "lights[0].intensity: must be in [0, 10], got 11"},
+        {"large", "too large"},
+        {"fifo", "a FIFO"},
+        {"nofile", "nofile/scene.json: missing"},
+        {"slow", "over its time budget"},
+    };
+    for (const auto& [name, reason] : reasons) {
+        ASSERT_TRUE(s.count(name)) << name;
+        EXPECT_EQ(s.at(name)["score"], 0) << name;
+        EXPECT_NE(s.at(name)["broken"].get<std::string>().find(reason), std::string::npos)
+            << name << ": " << s.at(name)["broken"];
+        EXPECT_FALSE(file_exists(dir.file("out/" + name + ".png"))) << name;
+    }
+    EXPECT_TRUE(s.at("ok")["broken"].get<std::string>().empty()) << s.at("ok")["broken"];
+}
+
+TEST(Grade, KilledHalfwayLeavesNoTables) {
+    TempDir dir;
+    const std::string subs = dir.file("subs");
+    fs::create_directories(subs);
+    for (int i = 0; i < 150; ++i) fs::copy_file(kSubmissions + "/bob.json", subs + "/s" + std::to_string(1000 + i) + ".json");
+    Running grade({"grade", kAssignment, subs, "--out", dir.file("out")});
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+    while (!file_exists(dir.file("out/s1003.png")) && !grade.finished() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    grade.signal(SIGTERM);
+    const RunResult run = grade.wait();
+    ASSERT_EQ(run.killed_by, SIGTERM) << "the run ended before the signal: " << run.err;
+    for (const char* table : {"grades.csv", "grades.json", "report.html"})
+        EXPECT_FALSE(file_exists(dir.file(std::string("out/") + table))) << table;
+    for (const auto& entry : fs::directory_iterator(dir.file("out"))) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_TRUE(std::regex_match(name, std::regex(R"((s\d{4}(-diff)?|reference)\.png)"))) << "left behind: " << name;
+    }
+}
+
+TEST(Grade, ReportOpensInHeadlessChromium) {
+    if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup installs it)";
+    TempDir out;
+    ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()}).exit_code, 0);
+    // The page as shipped, plus a probe that counts the images that did not decode.
+    std::string page = read_text(out.file("report.html"));
+    EXPECT_EQ(page.find("http"), std::string::npos) << "no network";
+    const std::string probe = "<script>window.addEventListener('load',function(){var n=0;"
+                              "for(var i of document.images)if(!i.complete||i.naturalWidth===0)n++;"
+                              "document.body.setAttribute('data-broken',n);});</script>";
+    write_text(out.file("probe.html"), page.replace(page.rfind("</body>"), 7, probe + "</body>"));
+    const std::string dom = out.file("dom.html");
+    const std::string command = "chromium --headless --no-sandbox --disable-gpu --user-data-dir=" + out.file("profile") +
+                                " --virtual-time-budget=5000 --dump-dom file://" + out.file("probe.html") + " > " +
+                                dom + " 2>/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const std::string text = read_text(dom);
+    EXPECT_NE(text.find("data-broken=\"0\""), std::string::npos) << "a broken image, or the probe did not run";
+    const std::string body = text.substr(text.find("<tbody>"));
+    std::size_t rows = 0;
+    for (std::size_t at = body.find("<tr>"); at != std::string::npos; at = body.find("<tr>", at + 1)) ++rows;
+    EXPECT_EQ(rows, 6u);
+    // Five renders and five difference images (frank's scene is broken), and the reference.
+    std::size_t images = 0;
+    for (std::size_t at = text.find("<img"); at != std::string::npos; at = text.find("<img", at + 1)) ++images;
+    EXPECT_EQ(images, 11u);
+}
+
+TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
+    if (!have_program("parallel")) GTEST_SKIP() << "GNU parallel is not installed (scripts/setup installs it)";
+    TempDir dir;
+    const std::string subs = dir.file("subs");
+    fs::create_directories(subs);
+    for (const auto& entry : fs::directory_iterator(kSubmissions))
+        fs::copy(entry.path(), subs + "/" + entry.path().filename().string(), fs::copy_options::recursive);
+    for (int i = 0; i < 5; ++i) fs::copy_file(kSubmissions + "/bob.json", subs + "/extra" + std::to_string(i) + ".json");
+    ASSERT_EQ(run_m3055({"grade", kAssignment, subs, "--out", dir.file("one")}).exit_code, 0);
+    const std::string command = "parallel --will-cite -j 4 '" M3055_BINARY " grade " + kAssignment + " " + subs +
+                                " --out " + dir.path() + "/shard{} --shard {}/4 2>/dev/null' ::: 1 2 3 4";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    // Shards in any order on the command line.
+    const RunResult merge = run_m3055({"grade", "--merge", dir.file("shard3"), dir.file("shard1"), dir.file("shard4"),
+                                       dir.file("shard2"), "--out", dir.file("merged")});
+    ASSERT_EQ(merge.exit_code, 0) << merge.err;
+    for (const auto& entry : fs::directory_iterator(dir.file("one"))) {
+        const std::string name = entry.path().filename().string();
+        EXPECT_EQ(read_text(entry.path().string()), read_text(dir.file("merged/" + name))) << name;
+    }
+    EXPECT_EQ(snapshot(dir.file("one")).size(), snapshot(dir.file("merged")).size());
+    // A missing shard is an error, not a smaller class.
+    const RunResult partial = run_m3055({"grade", "--merge", dir.file("shard1"), dir.file("shard2"), "--out", dir.file("p")});
+    EXPECT_EQ(partial.exit_code, 1);
+    EXPECT_NE(partial.err.find("is missing"), std::string::npos) << partial.err;
+}
+
+}  // namespace
+}  // namespace m3055::test
