@@ -76,10 +76,12 @@ private:
 
 }  // namespace
 
-void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest) {
+void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest, const std::string& report) {
     constexpr io::RunFiles::Owner kManifest = ~io::RunFiles::Owner(0);
     io::RunFiles files;
     if (!manifest.empty()) files.add_input(kManifest, "the manifest", manifest);
+    constexpr io::RunFiles::Owner kReport = kManifest - 1;
+    if (!report.empty()) files.add_output(kReport, "--report", report);
     for (std::size_t i = 0; i < items.size(); ++i) {
         const std::string entry = "[" + std::to_string(items[i].entry) + "]";
         files.add_input(i, entry + ".scene", items[i].scene);
@@ -87,7 +89,10 @@ void check_batch_files(std::vector<BatchItem>& items, const std::string& manifes
         if (!items[i].raw.empty()) files.add_output(i, entry + ".raw", items[i].raw);
     }
     const std::string prefix = manifest.empty() ? "" : text::quote_name(manifest) + ": ";
-    for (const auto& [owner, problem] : files.check(prefix))
+    const std::map<io::RunFiles::Owner, std::string> problems = files.check(prefix);
+    // A report that cannot be written, or would overwrite an input or an output, stops the run.
+    if (const auto it = problems.find(kReport); it != problems.end()) throw std::runtime_error(it->second);
+    for (const auto& [owner, problem] : problems)
         if (owner != kManifest && items[owner].problem.empty()) items[owner].problem = problem;
 }
 

@@ -15,8 +15,9 @@ namespace m3055 {
 // written (io/run_files.h): an output that is the manifest, a scene, or
 // another output, or that is not a regular file, or whose folder is missing,
 // sets the item's `problem` (both items of a clash), naming both entries.
-// `manifest` may be empty when the items come from elsewhere.
-void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest);
+// `manifest` may be empty when the items come from elsewhere; `report`, when
+// not empty, is one more output of the run (`batch --report`).
+void check_batch_files(std::vector<BatchItem>& items, const std::string& manifest, const std::string& report = "");
 
 // Called after each item: index (0-based), item, and the error line ("" on success).
 using BatchProgress = std::function<void(std::size_t index, const BatchItem& item, const std::string& error)>;

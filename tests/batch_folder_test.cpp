@@ -1,0 +1,78 @@
+// `m3055 batch --out DIR` over folders and glob patterns, `--report` and
+// `--shard K/N` (issue 14): outputs named after the scenes, byte-identical to
+// `m3055 render`, a report line per scene, and shards that cover every scene once.
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <set>
+
+namespace m3055::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// Three small scenes and one broken one in `dir`/scenes.
+void write_scenes(const TempDir& dir) {
+    fs::create_directories(dir.file("scenes"));
+    json scene = json::parse(read_text(source_path("scenes/spec_example.json")));
+    scene["display"] = {{"width", 64}, {"height", 40}, {"bits", 5}};
+    for (const char* name : {"a", "b", "c"}) {
+        scene["background"] = {name[0] == 'a' ? 0.1 : 0.2, 0.1, name[0] == 'c' ? 0.3 : 0.1};
+        write_text(dir.file(std::string("scenes/") + name + ".json"), scene.dump());
+    }
+    write_text(dir.file("scenes/broken.json"), "{");
+    write_text(dir.file("scenes/notes.txt"), "not a scene");
+}
+
+TEST(BatchFolder, FolderInputNamesOutputsAfterScenesAndReports) {
+    TempDir dir;
+    write_scenes(dir);
+    const RunResult run = run_m3055({"batch", dir.file("scenes"), "--out", dir.file("out"), "--raw", "--report",
+                                     dir.file("report.json")});
+    EXPECT_EQ(run.exit_code, 1) << "broken.json fails: " << run.err;
+    for (const char* name : {"a", "b", "c"}) {
+        const std::string scene = dir.file(std::string("scenes/") + name + ".json");
+        ASSERT_EQ(run_m3055({"render", "--scene", scene, "--out", dir.file("r.png"), "--raw", dir.file("r.pfm")}).exit_code, 0);
+        EXPECT_EQ(read_text(dir.file("r.png")), read_text(dir.file(std::string("out/") + name + ".png"))) << name;
+        EXPECT_EQ(read_text(dir.file("r.pfm")), read_text(dir.file(std::string("out/") + name + ".pfm"))) << name;
+    }
+    const json report = json::parse(read_text(dir.file("report.json")));
+    ASSERT_EQ(report.size(), 4u);
+    std::map<std::string, json> by_scene;
+    for (const json& entry : report) by_scene[fs::path(entry["scene"].get<std::string>()).stem().string()] = entry;
+    EXPECT_EQ(by_scene["a"]["status"], "ok");
+    EXPECT_EQ(by_scene["a"]["out"], dir.file("out/a.png"));
+    EXPECT_GE(by_scene["a"]["seconds"].get<double>(), 0.0);
+    EXPECT_EQ(by_scene["broken"]["status"], "failed");
+    EXPECT_NE(by_scene["broken"]["message"].get<std::string>().find("invalid JSON"), std::string::npos);
+    EXPECT_FALSE(file_exists(dir.file("out/notes.png")));
+}
+
+TEST(BatchFolder, GlobPatternsAndShardsCoverEverySceneOnce) {
+    TempDir dir;
+    write_scenes(dir);
+    std::set<std::string> seen;
+    for (int k = 1; k <= 2; ++k) {
+        const std::string out = dir.file("shard" + std::to_string(k));
+        const RunResult run = run_m3055({"batch", dir.file("scenes/[abc].json"), "--out", out, "--shard",
+                                         std::to_string(k) + "/2"});
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        for (const auto& entry : fs::directory_iterator(out)) EXPECT_TRUE(seen.insert(entry.path().filename()).second);
+    }
+    EXPECT_EQ(seen, (std::set<std::string>{"a.png", "b.png", "c.png"}));
+    const RunResult none = run_m3055({"batch", dir.file("scenes/z*.json"), "--out", dir.file("z")});
+    EXPECT_EQ(none.exit_code, 1);
+    EXPECT_NE(none.err.find("matches no file"), std::string::npos) << none.err;
+    // The report may not overwrite a scene.
+    const RunResult clash = run_m3055({"batch", dir.file("scenes/a.json"), "--out", dir.file("o"), "--report",
+                                       dir.file("scenes/a.json")});
+    EXPECT_EQ(clash.exit_code, 1);
+    EXPECT_NE(clash.err.find("--report"), std::string::npos) << clash.err;
+}
+
+}  // namespace
+}  // namespace m3055::test
