@@ -60,7 +60,7 @@ void diff_colour(int off, std::uint8_t rgb[3]) {
 }
 
 Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
-    const std::vector<int> off = levels_off(a, b);
+    check_comparable(a, b);
     Rgb8Image image;
     image.width = std::max(a.width, legend_width());
     image.height = a.height + kLegendHeight;
@@ -68,11 +68,14 @@ Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x) {
             const std::size_t p = std::size_t(y) * std::size_t(a.width) + std::size_t(x);
+            int off = 0;
+            for (std::size_t c = 0; c < 3; ++c)
+                off = std::max(off, std::abs(int(a.levels[3 * p + c]) - int(b.levels[3 * p + c])));
             std::uint8_t* out = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
-            if (off[p] == 0)
+            if (off == 0)
                 dimmed(a, p, out);
             else
-                diff_colour(off[p], out);
+                diff_colour(off, out);
         }
     draw_legend(image, a.height);
     return image;

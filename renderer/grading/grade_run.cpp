@@ -12,7 +12,10 @@
 
 #include <chrono>
 #include <filesystem>
+#include <deque>
 #include <fstream>
+#include <future>
+#include <memory>
 #include <map>
 #include <set>
 
@@ -56,13 +59,20 @@ LevelImage reference_levels(const Assignment& assignment, const std::function<Re
     r.set_deadline(std::nullopt);
     r.render(scene);
     display = r.read_display();
-    return levels_from_render(display, r.read_raw(), scene.display.bits);
+    return levels_from_png(display, scene.display.bits);
 }
 
+// A graded submission and the job that writes its images (run on a
+// writer thread while the next submission renders, as batch's encoders do).
+struct Graded {
+    Grade grade;
+    std::function<void()> write_images;
+};
+
 // Grades one submission: score 0 and its one-line reason for whatever is wrong with it.
-Grade grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
-                       const LevelImage& reference, const std::string& out_dir) {
-    if (!s.problem.empty()) return broken_grade(assignment, s.student, s.problem);
+Graded grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
+                        const LevelImage& reference, const std::string& out_dir) {
+    if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
     try {
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = load_scene_file(s.scene);
@@ -74,33 +84,39 @@ Grade grade_submission(const Assignment& assignment, const Submission& s, const 
             r.render(scene);
         } catch (const RenderTimeout&) {
             r.set_deadline(std::nullopt);
-            return broken_grade(assignment, s.student,
-                                text::quote_name(s.scene) + ": over its time budget: not drawn within " +
-                                    text::format_number(assignment.time_budget_s) + " s (the assignment's time_budget)");
+            return {broken_grade(assignment, s.student,
+                                 text::quote_name(s.scene) + ": over its time budget: not drawn within " +
+                                     text::format_number(assignment.time_budget_s) +
+                                     " s (the assignment's time_budget)"),
+                    {}};
         }
         r.set_deadline(std::nullopt);
-        const Rgb8Image display = r.read_display();
-        const LevelImage render = levels_from_render(display, r.read_raw(), scene.display.bits);
-        Grade grade = grade_scene(assignment, scene, reference, render);
+        auto display = std::make_shared<Rgb8Image>(r.read_display());
+        // Levels only: the score needs no linear colour, and reading the float
+        // frame back would cost grading a third of its time over rendering.
+        auto render = std::make_shared<LevelImage>(levels_from_png(*display, scene.display.bits));
+        Grade grade = grade_scene(assignment, scene, reference, *render);
         grade.student = s.student;
         if (!s.screenshot.empty()) {
             const std::string shown = text::quote_name(s.student + "/screenshot.png");
             try {
-                check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), render, shown);
+                check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), *render, shown);
             } catch (const std::exception& e) {
                 grade.screenshot_ok = false;
                 grade.screenshot = e.what();
             }
         }
-        std::vector<FileContents> files = {{join(out_dir, s.student + ".png"), encode_png(display)}};
-        if (render.width == reference.width && render.height == reference.height && render.bits == reference.bits)
-            files.push_back({join(out_dir, s.student + "-diff.png"), encode_png(difference_image(reference, render))});
-        write_files_atomic(files);
-        return grade;
+        const bool diff = grade.comparison.has_value();  // same size and depth as the reference
+        const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
+        return {std::move(grade), [display, render, diff, png, diff_png, &reference]() {
+                    std::vector<FileContents> files = {{png, encode_png(*display)}};
+                    if (diff) files.push_back({diff_png, encode_png(difference_image(reference, *render))});
+                    write_files_atomic(files);
+                }};
     } catch (const ShaderError&) {
         throw;  // a broken build fails every scene: not the student's fault
     } catch (const std::exception& e) {
-        return broken_grade(assignment, s.student, text::one_line(e.what()));
+        return {broken_grade(assignment, s.student, text::one_line(e.what())), {}};
     }
 }
 
@@ -132,14 +148,26 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     report.assignment = assignment_json(assignment);
     if (options.shard.n > 1)
         report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
+    // A few writer jobs in flight: images are encoded and written (each file
+    // synced, image/atomic_file.cpp) while the next submissions render; their
+    // memory is bounded by the count (two 512 x 320 images each). A write that
+    // fails (disk full) stops the run.
+    constexpr std::size_t kWritersInFlight = 4;
+    std::deque<std::future<void>> writing;
     for (const Submission& s : mine) {
-        const Grade grade = grade_submission(assignment, s, renderer, reference, options.out_dir);
-        const bool images = grade.broken.empty();
-        json entry = grade_json(grade, images);
-        if (images && !fs::exists(join(options.out_dir, s.student + "-diff.png"), error)) entry["images"]["diff"] = "";
+        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir);
+        const Grade& grade = graded.grade;
+        json entry = grade_json(grade, grade.broken.empty());
+        if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
         report.students.push_back(std::move(entry));
+        while (writing.size() >= kWritersInFlight) {
+            writing.front().get();
+            writing.pop_front();
+        }
+        if (graded.write_images) writing.push_back(std::async(std::launch::async, std::move(graded.write_images)));
         if (options.graded) options.graded(grade);
     }
+    for (auto& job : writing) job.get();
     write_tables(options.out_dir, report, options.gradescope,
                  [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
     return report;

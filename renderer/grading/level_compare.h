@@ -80,6 +80,9 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Throws CompareError unless a and b have the same size and bit depth.
+void check_comparable(const LevelImage& a, const LevelImage& b);
+
 Comparison compare_levels(const LevelImage& a, const LevelImage& b, const Thresholds& thresholds = {});
 
 // Per pixel, the largest level difference of its three channels.
