@@ -67,6 +67,7 @@ LevelImage reference_levels(const Assignment& assignment, const std::function<Re
 struct Graded {
     Grade grade;
     std::function<void()> write_images;
+    std::size_t bytes = 0;  // what write_images holds until it has run
 };
 
 // Grades one submission: score 0 and its one-line reason for whatever is wrong with it.
@@ -108,11 +109,14 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
         const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
-        return {std::move(grade), [display, render, diff, png, diff_png, &reference]() {
+        const std::size_t bytes = display->pixels.size() * 4;  // display, levels, and the diff while encoding
+        return {std::move(grade),
+                [display, render, diff, png, diff_png, &reference]() {
                     std::vector<FileContents> files = {{png, encode_png(*display)}};
                     if (diff) files.push_back({diff_png, encode_png(difference_image(reference, *render))});
                     write_files_atomic(files);
-                }};
+                },
+                bytes};
     } catch (const ShaderError&) {
         throw;  // a broken build fails every scene: not the student's fault
     } catch (const std::exception& e) {
@@ -149,25 +153,37 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     if (options.shard.n > 1)
         report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
     // A few writer jobs in flight: images are encoded and written (each file
-    // synced, image/atomic_file.cpp) while the next submissions render; their
-    // memory is bounded by the count (two 512 x 320 images each). A write that
-    // fails (disk full) stops the run.
+    // synced, image/atomic_file.cpp) while the next submissions render. Their
+    // memory is bounded by count and by bytes (an 8192 x 8192 display holds
+    // 400 MB until written), as batch bounds its encoders. A write that fails
+    // (disk full) stops the run.
     constexpr std::size_t kWritersInFlight = 4;
-    std::deque<std::future<void>> writing;
+    constexpr std::size_t kBytesInFlight = std::size_t(512) << 20;
+    struct Writing {
+        std::future<void> done;
+        std::size_t bytes;
+    };
+    std::deque<Writing> writing;
+    std::size_t bytes_in_flight = 0;
     for (const Submission& s : mine) {
         Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir);
         const Grade& grade = graded.grade;
         json entry = grade_json(grade, grade.broken.empty());
         if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
         report.students.push_back(std::move(entry));
-        while (writing.size() >= kWritersInFlight) {
-            writing.front().get();
+        while (!writing.empty() &&
+               (writing.size() >= kWritersInFlight || bytes_in_flight + graded.bytes > kBytesInFlight)) {
+            writing.front().done.get();
+            bytes_in_flight -= writing.front().bytes;
             writing.pop_front();
         }
-        if (graded.write_images) writing.push_back(std::async(std::launch::async, std::move(graded.write_images)));
+        if (graded.write_images) {
+            bytes_in_flight += graded.bytes;
+            writing.push_back({std::async(std::launch::async, std::move(graded.write_images)), graded.bytes});
+        }
         if (options.graded) options.graded(grade);
     }
-    for (auto& job : writing) job.get();
+    for (auto& job : writing) job.done.get();
     write_tables(options.out_dir, report, options.gradescope,
                  [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
     return report;
