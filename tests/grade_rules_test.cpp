@@ -3,6 +3,7 @@
 // one-line reason; a malformed assignment is one line naming the field.
 #include "grading/assignment.h"
 #include "grading/grade.h"
+#include "grading/grade_outputs.h"
 #include "grading/rules.h"
 #include "grading/submissions.h"
 #include "scene/load.h"
@@ -148,4 +149,31 @@ TEST(GradeShards, EveryItemInExactlyOneShard) {
     EXPECT_THROW(parse_shard("5/4"), std::invalid_argument);
     EXPECT_THROW(parse_shard("1/4x"), std::invalid_argument);
     EXPECT_EQ(parse_shard("3/4").k, 3);
+}
+
+TEST(GradeOutputs, NamesAndReasonsAreEscapedInHtmlAndCsv) {
+    GradeReport report;
+    report.assignment = {{"title", "<T>"}, {"max", 10}, {"pass", 5}, {"reference_image", "reference.png"}};
+    report.students.push_back({{"student", "<b>x&y</b>"},
+                               {"score", 0},
+                               {"max", 10},
+                               {"passed", false},
+                               {"reasons", {"=cmd(), \"quoted\"\nsecond line"}},
+                               {"broken", "x"},
+                               {"checks", nlohmann::json::array()},
+                               {"images", nullptr}});
+    const std::string html = report_html(report, [](const std::string&) { return std::vector<std::uint8_t>{}; });
+    EXPECT_EQ(html.find("<b>x"), std::string::npos);
+    EXPECT_NE(html.find("&lt;b&gt;x&amp;y&lt;/b&gt;"), std::string::npos);
+    EXPECT_NE(html.find("<title>&lt;T&gt;: grades</title>"), std::string::npos);
+    const std::string csv = grades_csv(report);
+    // One record: the newline stays inside quotes, the formula is defused, quotes doubled.
+    EXPECT_EQ(csv, "student,score,max,result,reasons\n<b>x&y</b>,0,10,fail,\"'=cmd(), \"\"quoted\"\"\nsecond line\"\n");
+}
+
+TEST(GradeOutputs, Base64) {
+    EXPECT_EQ(base64({}), "");
+    EXPECT_EQ(base64({'M'}), "TQ==");
+    EXPECT_EQ(base64({'M', 'a'}), "TWE=");
+    EXPECT_EQ(base64({'M', 'a', 'n'}), "TWFu");
 }
