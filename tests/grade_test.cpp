@@ -181,3 +181,22 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
 
 }  // namespace
 }  // namespace m3055::test
+
+namespace m3055::test {
+namespace {
+
+// grades/ inside the submissions folder, as a teacher may put it: on the
+// second run it is not taken for a student's folder.
+TEST(Grade, AnOutputFolderInsideTheSubmissionsIsNoStudent) {
+    TempDir dir;
+    const std::string subs = dir.file("subs");
+    fs::create_directories(subs);
+    fs::copy_file(kSubmissions + "/alice.json", subs + "/alice.json");
+    for (int run = 0; run < 2; ++run) {
+        ASSERT_EQ(run_m3055({"grade", kAssignment, subs, "--out", subs + "/grades"}).exit_code, 0);
+        EXPECT_EQ(read_json(subs + "/grades/grades.json")["students"].size(), 1u) << "run " << run;
+    }
+}
+
+}  // namespace
+}  // namespace m3055::test

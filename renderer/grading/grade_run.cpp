@@ -2,21 +2,22 @@
 
 #include "grading/diff_image.h"
 #include "grading/image_input.h"
+#include "gl/program.h"
 #include "image/image.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
-#include "gl/program.h"
 #include "passes/draw_chunks.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
 
+#include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <deque>
+#include <filesystem>
 #include <fstream>
 #include <future>
-#include <memory>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace m3055::grading {
@@ -45,6 +46,14 @@ std::vector<std::uint8_t> read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return {};
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// An image a shard's grades.json names: missing means the shard is incomplete.
+std::vector<std::uint8_t> read_shard_image(const std::string& path) {
+    std::error_code error;
+    if (!fs::is_regular_file(path, error))
+        throw std::runtime_error(text::quote_name(path) + ": missing: its shard's grades.json names it");
+    return read_bytes(path);
 }
 
 LevelImage reference_levels(const Assignment& assignment, const std::function<Renderer&()>& renderer,
@@ -141,7 +150,14 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     std::error_code error;
     if (fs::equivalent(submissions_dir, options.out_dir, error))
         throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
-    const std::vector<Submission> all = find_submissions(submissions_dir);
+    std::vector<Submission> all = find_submissions(submissions_dir);
+    // An --out folder inside the submissions folder (subs/grades/) is not a student.
+    all.erase(std::remove_if(all.begin(), all.end(),
+                             [&](const Submission& s) {
+                                 std::error_code ignored;
+                                 return fs::equivalent(fs::path(submissions_dir) / s.student, options.out_dir, ignored);
+                             }),
+              all.end());
     const std::vector<Submission> mine = take_shard(all, options.shard);
     prepare_out_dir(options.out_dir);
     Rgb8Image reference_display;
@@ -256,12 +272,24 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
                                      " is graded in two shards");
     prepare_out_dir(out_dir);
     std::error_code error;
+    // Copied by a few threads: each file is synced (image/atomic_file.cpp),
+    // and one at a time the merge would mostly wait for the disk.
+    std::vector<std::pair<std::string, std::string>> copies;  // from, to
     for (const auto& [name, dir] : image_dir) {
         if (fs::exists(join(out_dir, name), error) && fs::equivalent(join(out_dir, name), join(dir, name), error))
             continue;  // merging into one of the shards' own folders
-        const std::vector<std::uint8_t> bytes = read_bytes(join(dir, name));
-        write_file_atomic(join(out_dir, name), bytes.data(), bytes.size());
+        copies.emplace_back(join(dir, name), join(out_dir, name));
     }
+    constexpr std::size_t kCopiers = 4;
+    std::vector<std::future<void>> copiers;
+    for (std::size_t t = 0; t < kCopiers; ++t)
+        copiers.push_back(std::async(std::launch::async, [&copies, t]() {
+            for (std::size_t i = t; i < copies.size(); i += kCopiers) {
+                const std::vector<std::uint8_t> bytes = read_shard_image(copies[i].first);
+                write_file_atomic(copies[i].second, bytes.data(), bytes.size());
+            }
+        }));
+    for (auto& copier : copiers) copier.get();
     write_tables(out_dir, report, gradescope, [&](const std::string& name) {
         return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(out_dir, name));
     });
