@@ -200,3 +200,29 @@ TEST(Grade, AnOutputFolderInsideTheSubmissionsIsNoStudent) {
 
 }  // namespace
 }  // namespace m3055::test
+
+namespace m3055::test {
+namespace {
+
+// The reference may be an image instead of a scene: the render's PNG, or its
+// PFM, grade the worked submissions exactly as the scene does.
+TEST(Grade, ImageReferencesGradeAsTheSceneDoes) {
+    TempDir dir;
+    const std::string scene = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    ASSERT_EQ(run_m3055({"render", "--scene", scene, "--out", dir.file("ref.png"), "--raw", dir.file("ref.pfm")}).exit_code, 0);
+    ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("scene")}).exit_code, 0);
+    const std::string expected = read_text(dir.file("scene/grades.csv"));
+    for (const std::string reference : {"ref.png", "ref.pfm"}) {
+        json assignment = read_json(kAssignment);
+        assignment["reference"] = reference;
+        write_text(dir.file("a.json"), assignment.dump());
+        const std::string out = dir.file("out-" + reference);
+        const RunResult run = run_m3055({"grade", dir.file("a.json"), kSubmissions, "--out", out});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_EQ(read_text(out + "/grades.csv"), expected) << reference;
+        EXPECT_EQ(read_text(out + "/reference.png"), read_text(dir.file("ref.png"))) << reference;
+    }
+}
+
+}  // namespace
+}  // namespace m3055::test

@@ -1,6 +1,7 @@
 #include "grading/grade.h"
 
 #include "grading/image_input.h"
+#include "image/quantize.h"
 #include "scene/load.h"
 
 #include <cstdio>
@@ -8,6 +9,16 @@
 namespace m3055::grading {
 
 namespace {
+
+// What the report shows for an image reference: a PNG as it is, a PFM as the
+// display would show it (its levels as PNG values).
+Rgb8Image read_png_or_levels(const std::string& path, const LevelImage& levels) {
+    if (input_kind(path) == InputKind::png) return read_png(path);
+    Rgb8Image image{levels.width, levels.height, {}};
+    image.pixels.reserve(levels.levels.size());
+    for (std::uint8_t level : levels.levels) image.pixels.push_back(level_to_png(level, levels.bits));
+    return image;
+}
 
 Check image_check(const Assignment& assignment, const Comparison& c) {
     Check check;
@@ -39,6 +50,22 @@ std::vector<std::string> Grade::reasons() const {
         if (!check.ok) out.push_back(check.label == "image" ? check.reason : check.label + ": " + check.reason);
     if (!screenshot_ok) out.push_back(screenshot);
     return out;
+}
+
+LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display) {
+    if (input_kind(assignment.reference) != InputKind::scene) {
+        LevelImage image = read_level_image(assignment.reference, 5);
+        if (display) *display = read_png_or_levels(assignment.reference, image);
+        return image;
+    }
+    const Scene scene = load_scene_file(assignment.reference);
+    if (!renderer) throw std::logic_error("load_reference: a scene reference needs a renderer");
+    renderer->set_deadline(std::nullopt);
+    renderer->render(scene);
+    Rgb8Image shown = renderer->read_display();
+    LevelImage image = levels_from_png(shown, scene.display.bits);
+    if (display) *display = std::move(shown);
+    return image;
 }
 
 Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,

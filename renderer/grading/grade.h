@@ -30,6 +30,11 @@ struct Grade {
     std::vector<std::string> reasons() const;
 };
 
+// The assignment's reference as levels: its image read (at 5 bits), or its
+// scene rendered with `renderer` (needed only then; no deadline). The image
+// shown for it (the PNG, or the render) is left in *display when given.
+LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display = nullptr);
+
 // Scores a scene whose render is `render` (levels_from_render of it).
 Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,
                   const LevelImage& render);

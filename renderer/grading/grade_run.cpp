@@ -56,21 +56,6 @@ std::vector<std::uint8_t> read_shard_image(const std::string& path) {
     return read_bytes(path);
 }
 
-LevelImage reference_levels(const Assignment& assignment, const std::function<Renderer&()>& renderer,
-                            Rgb8Image& display) {
-    if (input_kind(assignment.reference) != InputKind::scene) {
-        LevelImage image = read_level_image(assignment.reference, 5);
-        display = read_png(assignment.reference);  // shown as it is
-        return image;
-    }
-    const Scene scene = load_scene_file(assignment.reference);
-    Renderer& r = renderer();
-    r.set_deadline(std::nullopt);
-    r.render(scene);
-    display = r.read_display();
-    return levels_from_png(display, scene.display.bits);
-}
-
 // A graded submission and the job that writes its images (run on a
 // writer thread while the next submission renders, as batch's encoders do).
 struct Graded {
@@ -161,7 +146,12 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     const std::vector<Submission> mine = take_shard(all, options.shard);
     prepare_out_dir(options.out_dir);
     Rgb8Image reference_display;
-    const LevelImage reference = reference_levels(assignment, renderer, reference_display);
+    // Made only for a scene reference: a folder of broken submissions graded
+    // against a PNG never needs a GL context.
+    const LevelImage reference =
+        input_kind(assignment.reference) == InputKind::scene
+            ? load_reference(assignment, &renderer(), &reference_display)
+            : load_reference(assignment, nullptr, &reference_display);
     write_png(join(options.out_dir, "reference.png"), reference_display);
 
     GradeReport report;
