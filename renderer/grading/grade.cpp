@@ -1,7 +1,6 @@
 #include "grading/grade.h"
 
 #include "grading/image_input.h"
-#include "image/quantize.h"
 #include "scene/load.h"
 
 #include <cstdio>
@@ -9,16 +8,6 @@
 namespace m3055::grading {
 
 namespace {
-
-// What the report shows for an image reference: a PNG as it is, a PFM as the
-// display would show it (its levels as PNG values).
-Rgb8Image read_png_or_levels(const std::string& path, const LevelImage& levels) {
-    if (input_kind(path) == InputKind::png) return read_png(path);
-    Rgb8Image image{levels.width, levels.height, {}};
-    image.pixels.reserve(levels.levels.size());
-    for (std::uint8_t level : levels.levels) image.pixels.push_back(level_to_png(level, levels.bits));
-    return image;
-}
 
 Check image_check(const Assignment& assignment, const Comparison& c) {
     Check check;
@@ -55,7 +44,8 @@ std::vector<std::string> Grade::reasons() const {
 LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display) {
     if (input_kind(assignment.reference) != InputKind::scene) {
         LevelImage image = read_level_image(assignment.reference, 5);
-        if (display) *display = read_png_or_levels(assignment.reference, image);
+        // A PNG is shown as it is, a PFM as the display would show it.
+        if (display) *display = input_kind(assignment.reference) == InputKind::png ? read_png(assignment.reference) : display_of(image);
         return image;
     }
     const Scene scene = load_scene_file(assignment.reference);
@@ -89,7 +79,7 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
 
 Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
                 LevelImage* render_out) {
-    LevelImage render = render_levels(renderer, scene);
+    LevelImage render = render_levels(renderer, scene, false);
     Grade grade = grade_scene(assignment, scene, reference, render);
     if (render_out) *render_out = std::move(render);
     return grade;

@@ -75,8 +75,10 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         if (assignment.time_budget_s > 0)
             r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                        std::chrono::duration<double>(assignment.time_budget_s)));
+        auto render = std::make_shared<LevelImage>();
+        Grade grade;
         try {
-            r.render(scene);
+            grade = grade_one(assignment, scene, r, reference, render.get());  // what the explorer calls too
         } catch (const RenderTimeout&) {
             r.set_deadline(std::nullopt);
             return {broken_grade(assignment, s.student,
@@ -86,11 +88,6 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
                     {}};
         }
         r.set_deadline(std::nullopt);
-        auto display = std::make_shared<Rgb8Image>(r.read_display());
-        // Levels only: the score needs no linear colour, and reading the float
-        // frame back would cost grading a third of its time over rendering.
-        auto render = std::make_shared<LevelImage>(levels_from_png(*display, scene.display.bits));
-        Grade grade = grade_scene(assignment, scene, reference, *render);
         grade.student = s.student;
         if (!s.screenshot.empty()) {
             const std::string shown = text::quote_name(s.student + "/screenshot.png");
@@ -103,10 +100,11 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
         const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
-        const std::size_t bytes = display->pixels.size() * 4;  // display, levels, and the diff while encoding
+        const std::size_t bytes = render->levels.size() * 3;  // levels, display and diff while encoding
         return {std::move(grade),
-                [display, render, diff, png, diff_png, &reference]() {
-                    std::vector<FileContents> files = {{png, encode_png(*display)}};
+                [render, diff, png, diff_png, &reference]() {
+                    // The display's own bytes, from its levels: byte-identical to `m3055 render`.
+                    std::vector<FileContents> files = {{png, encode_png(display_of(*render))}};
                     if (diff) files.push_back({diff_png, encode_png(difference_image(reference, *render))});
                     write_files_atomic(files);
                 },

@@ -43,8 +43,9 @@ LevelImage read_level_image(const std::string& path, int bits) {
     return levels_from_png(read_png(path), bits);
 }
 
-LevelImage render_levels(Renderer& renderer, const Scene& scene) {
+LevelImage render_levels(Renderer& renderer, const Scene& scene, bool linear) {
     renderer.render(scene);
+    if (!linear) return levels_from_png(renderer.read_display(), scene.display.bits);
     return levels_from_render(renderer.read_display(), renderer.read_raw(), scene.display.bits);
 }
 

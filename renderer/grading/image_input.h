@@ -21,7 +21,8 @@ InputKind input_kind(const std::string& path);
 LevelImage read_level_image(const std::string& path, int bits);
 
 // Renders `scene` with `renderer` (its deadline, if any, applies) and returns
-// the display's levels and the linear colour.
-LevelImage render_levels(Renderer& renderer, const Scene& scene);
+// the display's levels and, with `linear`, the linear colour (a second
+// read-back, of floats: grading does without it).
+LevelImage render_levels(Renderer& renderer, const Scene& scene, bool linear = true);
 
 }  // namespace m3055::grading

@@ -71,6 +71,15 @@ LevelImage levels_from_png(const Rgb8Image& png, int bits) {
     return image;
 }
 
+Rgb8Image display_of(const LevelImage& levels) {
+    Rgb8Image image{levels.width, levels.height, {}};
+    std::uint8_t png_of[256] = {};
+    for (int level = 0; level <= max_level(levels.bits); ++level) png_of[level] = level_to_png(level, levels.bits);
+    image.pixels.resize(levels.levels.size());
+    for (std::size_t i = 0; i < levels.levels.size(); ++i) image.pixels[i] = png_of[levels.levels[i]];
+    return image;
+}
+
 LevelImage levels_from_pfm(const RgbFloatImage& pfm, int bits) {
     LevelImage image{pfm.width, pfm.height, bits, {}, flipped_rows(pfm)};
     image.levels.resize(image.linear.size());

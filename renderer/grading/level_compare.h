@@ -36,6 +36,10 @@ LevelImage levels_from_pfm(const RgbFloatImage& pfm, int bits);
 // included) plus its linear colour. Both must be the same size.
 LevelImage levels_from_render(const Rgb8Image& display, const RgbFloatImage& raw, int bits);
 
+// The display image of `levels` (png = round(level * 255 / (2^bits - 1))):
+// exactly the bytes the renderer reads back for the same levels.
+Rgb8Image display_of(const LevelImage& levels);
+
 // When two images differ too much (OpenImageIO idiff's -fail/-failpercent,
 // -warn/-warnpercent): a pixel is "over" a threshold when one of its channels
 // is more than `levels` levels off; the comparison fails (warns) when the
