@@ -20,6 +20,14 @@ const char* find_glsl_source(const std::string& path) {
 
 namespace {
 
+// How messages name a source: glsl/FILE, generated/FILE, or a .brdf file's
+// own name for its shader block ("brdf/ID/NAME", brdf_file/brdf_glsl.cpp).
+std::string shown_name(const std::string& path) {
+    if (path.rfind("generated/", 0) == 0) return path;
+    if (path.rfind("brdf/", 0) == 0 && path.find('/', 5) != std::string::npos) return path.substr(path.find('/', 5) + 1);
+    return "glsl/" + path;
+}
+
 struct Composer {
     const ExtraSources& extra;
     ComposedShader out;
@@ -34,7 +42,7 @@ struct Composer {
 
     int number_of(const std::string& path) {
         const auto [it, added] = numbers.emplace(path, int(out.files.size()));
-        if (added) out.files.push_back(path.rfind("generated/", 0) == 0 ? path : "glsl/" + path);
+        if (added) out.files.push_back(shown_name(path));
         return it->second;
     }
 

@@ -1,6 +1,7 @@
 #include "scene/json_material.h"
 
 #include "models/model_table.h"
+#include "scene/json_brdf.h"
 
 namespace m3055::scene_json {
 
@@ -55,6 +56,7 @@ json lobes_json(const LobeList& lobes, const std::string& key) {
 
 Material read_material(const Node& node) {
     node.expect_object();
+    if (is_brdf_material(node)) return read_brdf_material(node);
     const ModelTable& table = model_table();
     const ModelSpec& spec = table.at(int(node.required("model").one_of(table.names())));
     std::vector<std::string> allowed = spec.param_names();
@@ -67,6 +69,7 @@ Material read_material(const Node& node) {
 
 json material_json(const Material& material) {
     const ModelSpec& spec = material.model();
+    if (spec.family == Family::brdf) return brdf_material_json(material);
     json out = {{"model", spec.name}};
     for (const ParamSpec& param : spec.params) {
         switch (param.kind) {
