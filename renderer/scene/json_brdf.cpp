@@ -75,9 +75,9 @@ Material read_brdf_material(const Node& node) {
     if (node.has("params")) {
         const Node params = node.child("params");
         params.expect_object();
-        params.check_keys({}, [&](const std::string& key) {
-            return model->file.find(key) ? std::string() : "not a parameter of " + model->file.name;
-        });
+        std::vector<std::string> names;
+        for (const BrdfParam& p : model->file.params) names.push_back(p.name);
+        params.check_keys(names, [&](const std::string&) { return "not a parameter of " + model->file.name; });
         for (const BrdfParam& p : model->file.params)
             if (params.has(p.name)) read_value(params.child(p.name), *model, p, material);
     }
