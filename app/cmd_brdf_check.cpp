@@ -15,6 +15,7 @@
 #include "models/model_spec.h"
 #include "passes/brdf_grid.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -24,6 +25,7 @@ namespace m3055 {
 namespace {
 
 constexpr int kThetaSteps = 12, kPhiSteps = 16;   // 193 directions: 37 249 (L, V) pairs a setting
+// (theta every 7.5 deg to 90, phi every 22.5 deg: L = V, mirror and retro directions included)
 constexpr int kMuCells = 64, kAlbedoPhiCells = 128;  // 8192 incident directions for the albedo
 const std::vector<double> kViewDegrees = {0, 15, 30, 45, 60, 75, 85, 89};
 
@@ -35,6 +37,8 @@ std::string number(double x, const char* format = "%.3g") {
 
 struct Report {
     GridStats grid;
+    std::vector<Material> corners;
+    std::vector<dvec3> dirs;
     std::size_t settings = 0, directions = 0;
     std::vector<double> albedo;
     std::optional<DistributionIntegral> D;
@@ -42,16 +46,38 @@ struct Report {
 
 Report measure(const BrdfTarget& target, BrdfGrid& grid) {
     Report r;
-    const std::vector<dvec3> dirs = check_directions(kThetaSteps, kPhiSteps);
-    r.directions = dirs.size();
-    const std::vector<Material> corners = parameter_corners(target);
-    r.settings = corners.size();
-    for (const Material& m : corners) merge(r.grid, grid_stats(grid.evaluate(m, dirs, dirs), dirs));
+    r.dirs = check_directions(kThetaSteps, kPhiSteps);
+    r.directions = r.dirs.size();
+    r.corners = parameter_corners(target);
+    r.settings = r.corners.size();
+    for (std::size_t k = 0; k < r.corners.size(); ++k)
+        merge(r.grid, grid_stats(grid.evaluate(r.corners[k], r.dirs, r.dirs), r.dirs), long(k));
     const AlbedoSamples samples = albedo_samples(kMuCells, kAlbedoPhiCells);
     r.albedo = directional_albedo(grid.evaluate(target.material, samples.L, view_directions(kViewDegrees)), samples,
                                   kViewDegrees.size());
     r.D = distribution_integral(target.material);
     return r;
+}
+
+std::string angles(const dvec3& d) {
+    return "(" + number(std::acos(std::min(1.0, d.z)) * 180.0 / 3.14159265358979323846, "%.1f") + ", " +
+           number(std::atan2(d.y, d.x) * 180.0 / 3.14159265358979323846, "%.1f") + ")";
+}
+
+// Where the first bad value is: the directions and the parameters that differ from the defaults.
+std::string first_bad(const BrdfTarget& target, const Report& r) {
+    if (r.grid.first_bad < 0) return "";
+    const std::size_t n = r.dirs.size();
+    std::string where = "; first at L " + angles(r.dirs[std::size_t(r.grid.first_bad) % n]) + ", V " +
+                        angles(r.dirs[std::size_t(r.grid.first_bad) / n]) + " (theta, phi deg)";
+    const Material& m = r.corners[std::size_t(r.grid.first_setting)];
+    std::string changed;
+    for (const ParamSpec& p : m.model().params)
+        if (p.kind == ParamKind::number && m.number(p.name) != target.material.number(p.name))
+            changed += " " + p.label + "=" + number(m.number(p.name), "%g");
+        else if (p.kind == ParamKind::flag && m.flag(p.name) != target.material.flag(p.name))
+            changed += " " + p.label + "=" + (m.flag(p.name) ? "1" : "0");
+    return where + (changed.empty() ? ", defaults" : "," + changed);
 }
 
 bool print(const BrdfTarget& target, const Report& r, bool require_conserving) {
@@ -67,7 +93,9 @@ bool print(const BrdfTarget& target, const Report& r, bool require_conserving) {
         << "| f finite and >= 0 on " << r.directions << " x " << r.directions << " (L, V) x " << r.settings
         << " parameter settings (defaults, range corners) | " << (values_ok ? "PASS" : "FAIL") << " | "
         << r.grid.nonfinite << " NaN/Inf, " << r.grid.negative << " negative of " << r.grid.values
-        << " values; max f " << number(r.grid.max_value) << " |\n"
+        << " values; max f " << number(r.grid.max_value) << first_bad(target, r) << " |\n"
+        << "| exactly grazing view (N.V = 0, a silhouette's limit; not counted above) | "
+        << (r.grid.grazing_nonfinite ? "warning" : "finite") << " | " << r.grid.grazing_nonfinite << " NaN/Inf |\n"
         << "| reciprocity: max \\|f(L,V) - f(V,L)\\| / max(f) | "
         << (r.grid.max_reciprocity <= 1e-3 ? "reciprocal" : "NOT reciprocal") << " | "
         << number(r.grid.max_reciprocity) << " |\n"

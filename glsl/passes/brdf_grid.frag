@@ -6,6 +6,7 @@
 // exactly L with scale 1 (the stress test's trick); the result is the
 // model's f = I / (pi N.L) on the classic models' scale (docs/models.md), or
 // 0 where N.L <= 0.
+#include "common/constants.glsl"
 #include "models/shade.glsl"
 
 uniform sampler2D u_dirs_l;

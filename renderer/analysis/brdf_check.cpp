@@ -34,7 +34,13 @@ GridStats grid_stats(const std::vector<float>& f, const std::vector<dvec3>& dirs
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t c = 0; c < 3; ++c) {
                 const double a = f[(j * n + i) * 3 + c];
+                if (!(dirs[j].z > 0.0)) {  // exactly grazing view: reported apart
+                    if (!std::isfinite(a)) ++s.grazing_nonfinite;
+                    continue;
+                }
                 ++s.values;
+                const bool bad = !std::isfinite(a) || a < 0.0;
+                if (bad && s.first_bad < 0) s.first_bad = long(j * n + i);
                 if (!std::isfinite(a)) {
                     ++s.nonfinite;
                     continue;
@@ -49,7 +55,9 @@ GridStats grid_stats(const std::vector<float>& f, const std::vector<dvec3>& dirs
     return s;
 }
 
-void merge(GridStats& a, const GridStats& b) {
+void merge(GridStats& a, const GridStats& b, long setting) {
+    if (a.first_bad < 0 && b.first_bad >= 0) a.first_bad = b.first_bad, a.first_setting = setting;
+    a.grazing_nonfinite += b.grazing_nonfinite;
     a.nonfinite += b.nonfinite;
     a.negative += b.negative;
     a.values += b.values;

@@ -19,14 +19,17 @@ namespace m3055 {
 std::vector<dvec3> check_directions(int n_theta, int n_phi);
 
 struct GridStats {
-    long nonfinite = 0, negative = 0, values = 0;
+    long nonfinite = 0, negative = 0, values = 0;  // with L and V above the horizon (z > 0)
+    long grazing_nonfinite = 0;                     // NaN/Inf with V exactly grazing (N.V = 0)
+    long first_bad = -1;                            // index (j * n + i) of the first NaN/Inf/negative inside
+    long first_setting = -1;                        // merge(): the setting it came from
     double max_value = 0;           // largest finite f
     double max_reciprocity = 0;     // max |f(L,V) - f(V,L)| / max(|f(L,V)|, |f(V,L)|), both L.z, V.z > 0
 };
 // f: RGB per (L_i, V_j) for L and V both `dirs` (so f(V, L) is the transpose).
 GridStats grid_stats(const std::vector<float>& f, const std::vector<dvec3>& dirs);
-// Folds b into a (counts add, maxima are the larger).
-void merge(GridStats& a, const GridStats& b);
+// Folds b, measured at setting `setting`, into a (counts add, maxima are the larger).
+void merge(GridStats& a, const GridStats& b, long setting);
 
 // Incident directions for the albedo integral, cosine-midpoint: mu = cos theta
 // in n_mu cells, phi in n_phi cells; each sample's weight mu dmu dphi.
