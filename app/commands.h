@@ -11,6 +11,7 @@ void add_batch_command(CLI::App& app);    // app/cmd_batch.cpp
 void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
 void add_explore_command(CLI::App& app);  // app/cmd_explore.cpp
 void add_brdf_check_command(CLI::App& app);  // app/cmd_brdf_check.cpp
+void add_plot_command(CLI::App& app);        // app/cmd_plot.cpp
 
 // Plain `m3055` (app/cmd_explore.cpp): the explorer when this build has one and
 // $DISPLAY is set; otherwise the usage and one line saying why, kExitUsage.

@@ -103,8 +103,19 @@ std::vector<float> draw(const GlApi& gl, unsigned program, int w, int h, double 
 
 std::vector<float> BrdfGrid::evaluate(const Material& material, const std::vector<dvec3>& Ls,
                                       const std::vector<dvec3>& Vs) {
+    return run(material, Ls, Vs, false);
+}
+
+std::vector<float> BrdfGrid::evaluate_pairs(const Material& material, const std::vector<dvec3>& Ls,
+                                            const std::vector<dvec3>& Vs) {
+    if (Ls.size() != Vs.size()) throw std::invalid_argument("BRDF grid: as many L as V for pairs");
+    return run(material, Ls, Vs, true);
+}
+
+std::vector<float> BrdfGrid::run(const Material& material, const std::vector<dvec3>& Ls, const std::vector<dvec3>& Vs,
+                                 bool paired) {
     const GlApi& gl = impl_->gl;
-    const int w = int(Ls.size()), h = int(Vs.size());
+    const int w = int(Ls.size()), h = paired ? 1 : int(Vs.size());
     if (w < 1 || h < 1 || w > 16384 || h > 16384) throw std::invalid_argument("BRDF grid: 1 to 16384 L and V");
     Object object;
     object.material = material;
@@ -123,6 +134,7 @@ std::vector<float> BrdfGrid::evaluate(const Material& material, const std::vecto
     gl.Uniform1i(loc("u_material_texels"), material_record_texels());
     gl.Uniform1i(loc("u_dirs_l"), 1);
     gl.Uniform1i(loc("u_dirs_v"), 2);
+    gl.Uniform1i(loc("u_paired"), paired ? 1 : 0);
     std::vector<float> f = draw(gl, program, w, h, 1.0, impl_->vao);
     // The paper's models add a light-independent term (d C0, eq. 3 and 12): the
     // BRDF is what the light adds, so that term (drawn with the light off) goes.

@@ -25,8 +25,13 @@ public:
     // if the model's code does not compile.
     std::vector<float> evaluate(const Material& material, const std::vector<dvec3>& Ls,
                                 const std::vector<dvec3>& Vs);
+    // f(L_k, V_k) for pairs (Ls and Vs of one length, at most 16384): RGB at [k * 3].
+    std::vector<float> evaluate_pairs(const Material& material, const std::vector<dvec3>& Ls,
+                                      const std::vector<dvec3>& Vs);
 
 private:
+    std::vector<float> run(const Material& material, const std::vector<dvec3>& Ls, const std::vector<dvec3>& Vs,
+                           bool paired);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
