@@ -67,3 +67,16 @@ TEST(BrdfPlot, BadTargetIsOneLineAndNoFile) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(BrdfBench, QuickRunWritesTheTable) {
+    m3055::test::TempDir dir;
+    const auto r = run_m3055({"bench", "--quick", "--brdf", m3055::test::source_path("tests/data/brdf"), "--out", dir.path()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string md = m3055::test::read_text(dir.file("brdf.md"));
+    for (const char* row : {"| Lambert |", "| Blinn-Phong n 32 |", "| GGX + Schlick m 0.3 |"})
+        EXPECT_NE(md.find(row), std::string::npos) << md;
+}
+
+}  // namespace
