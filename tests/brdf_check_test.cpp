@@ -3,6 +3,7 @@
 // models; deliberately broken .brdf files fail and correct ones pass; every
 // built-in model is classified as docs/models.md says.
 #include "analysis/brdf_check.h"
+#include "brdf_file/brdf_model.h"
 #include "gl/context.h"
 #include "models/model_table.h"
 #include "passes/brdf_grid.h"
@@ -42,6 +43,23 @@ TEST(BrdfGrid, GpuIsTheCpuReferenceBrdfForBuiltInModels) {
             }
         EXPECT_LE(worst, 1e-3) << name;
     }
+}
+
+// The explorer's edit loop (renderer side): a reload that breaks the GLSL is
+// reported with the .brdf's line and the last good material still compiles.
+TEST(BrdfGrid, ACompileErrorNamesTheFilesLineAndTheLastGoodMaterialStays) {
+    const auto context = HeadlessContext::create(Backend::automatic);
+    test::TempDir dir;
+    const std::string path = dir.file("live.brdf");
+    const std::string head = "analytic\n::begin parameters\nfloat k 0 1 0.5\n::end parameters\n::begin shader\n";
+    test::write_text(path, head + "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) { return vec3(k); }\n::end shader\n");
+    const Material good = reload_brdf_material(Material::of("lambert"), path);
+    EXPECT_EQ(brdf_compile_error(context->gl(), good), "");
+    test::write_text(path, head + "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y) {\n    return vec3(k) + kk;\n}\n"
+                                  "::end shader\n");
+    const Material broken = reload_brdf_material(good, path);
+    EXPECT_EQ(brdf_compile_error(context->gl(), broken), path + ":7: error: `kk' undeclared");
+    EXPECT_EQ(brdf_compile_error(context->gl(), good), "");
 }
 
 TEST(BrdfCheck, ASqrtOfANegativeFails) {

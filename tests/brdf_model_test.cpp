@@ -214,8 +214,8 @@ TEST(BrdfCli, GlslErrorNamesTheBrdfLine) {
     test::write_text(dir.file("s.json"), scene_with({{"model", "brdf"}, {"file", "bad.brdf"}}).dump());
     const test::RunResult r = test::run_m3055({"render", "--scene", dir.file("s.json"), "--out", dir.file("o.png")});
     EXPECT_EQ(r.exit_code, 1);
-    // One line, the .brdf's own line 9, column 29, the author's names (not the renamed ones).
-    EXPECT_EQ(r.err, "m3055: " + dir.file("bad.brdf") + ":9:29: error: `undefined_thing' undeclared\n");
+    // One line, the .brdf's own line 9, the author's names (not the renamed ones).
+    EXPECT_EQ(r.err, "m3055: " + dir.file("bad.brdf") + ":9: error: `undefined_thing' undeclared\n");
     EXPECT_FALSE(std::filesystem::exists(dir.file("o.png")));
 }
 

@@ -3,6 +3,7 @@
 #include "gl/shader_source.h"
 #include "models/model_table.h"
 
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -35,8 +36,11 @@ static unsigned compile(const GlApi& gl, GLenum stage, const std::string& path,
         std::istringstream lines(annotated);
         for (std::string line; std::getline(lines, line);)
             for (const std::string& file : source.user_files)
-                if (line.rfind(file + ":", 0) == 0 && line.find("error") != std::string::npos)
-                    throw ShaderError(line);
+                if (line.rfind(file + ":", 0) == 0 && line.find("error") != std::string::npos) {
+                    // FILE:LINE:COL: the column counts the renamed (longer) names, so it goes.
+                    static const std::regex column("^(:[0-9]+):[0-9]+:");
+                    throw ShaderError(file + std::regex_replace(line.substr(file.size()), column, "$1:"));
+                }
         throw ShaderError("cannot compile glsl/" + path + ":\n" + annotated);
     }
     return shader;

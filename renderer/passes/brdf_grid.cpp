@@ -75,6 +75,15 @@ BrdfGrid::~BrdfGrid() = default;
 
 namespace {
 
+unsigned grid_program(const GlApi& gl, const Material& material) {
+    Object object;
+    object.material = material;
+    Light light;
+    light.type = LightType::point;
+    return build_program(gl, {"passes/fullscreen.vert", "passes/brdf_grid.frag",
+                              specialization_defines(ShaderMode::specialized, {&object}, {light})});
+}
+
 // One draw of the grid with light 0 of colour `white`: RGB per (L, V). (Black,
 // not intensity 0: a light of intensity 0 is dropped from the uniforms.)
 std::vector<float> draw(const GlApi& gl, unsigned program, int w, int h, double white, unsigned vao) {
@@ -117,13 +126,7 @@ std::vector<float> BrdfGrid::run(const Material& material, const std::vector<dve
     const GlApi& gl = impl_->gl;
     const int w = int(Ls.size()), h = paired ? 1 : int(Vs.size());
     if (w < 1 || h < 1 || w > 16384 || h > 16384) throw std::invalid_argument("BRDF grid: 1 to 16384 L and V");
-    Object object;
-    object.material = material;
-    Light light;
-    light.type = LightType::point;
-    const unsigned program =
-        build_program(gl, {"passes/fullscreen.vert", "passes/brdf_grid.frag",
-                           specialization_defines(ShaderMode::specialized, {&object}, {light})});
+    const unsigned program = grid_program(gl, material);
     impl_->targets_of(w, h);
     impl_->material(material);
     impl_->directions(1, impl_->dirs[0], Ls);
@@ -152,6 +155,15 @@ std::vector<float> BrdfGrid::run(const Material& material, const std::vector<dve
     const GLenum error = gl.GetError();
     if (error != GL_NO_ERROR) throw std::runtime_error("BRDF grid: GL error " + std::to_string(error));
     return f;
+}
+
+std::string brdf_compile_error(const GlApi& gl, const Material& material) {
+    try {
+        gl.DeleteProgram(grid_program(gl, material));
+    } catch (const ShaderError& e) {
+        return e.what();
+    }
+    return "";
 }
 
 }  // namespace m3055

@@ -9,9 +9,17 @@
 #include "scene/scene.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace m3055 {
+
+// The GLSL error of `material`'s model ("" if its code compiles), one line
+// naming a .brdf file's own line: for a caller that keeps the last good
+// material on screen while a file is edited (brdf_file/brdf_model.h:
+// reload_brdf_material). Compiles the grid pass, which holds the same model code
+// as the renderer's passes.
+std::string brdf_compile_error(const GlApi& gl, const Material& material);
 
 class BrdfGrid {
 public:
