@@ -240,3 +240,19 @@ TEST(BrdfCli, RenderAcceptsTheFileAndBatchOnlyWithAllowBrdf) {
 
 }  // namespace
 }  // namespace m3055
+
+namespace m3055 {
+namespace {
+
+TEST(BrdfCli, FiguresRendersAFolderWithABrdfScene) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.file("scenes"));
+    test::write_text(dir.file("scenes/lambert.brdf"), test::read_text(data_file("lambert.brdf")));
+    test::write_text(dir.file("scenes/fig_brdf.json"), scene_with({{"model", "brdf"}, {"file", "lambert.brdf"}}).dump());
+    const test::RunResult r = test::run_m3055({"figures", "--scenes", dir.file("scenes"), "--out", dir.file("out")});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("out/fig_brdf.png")));
+}
+
+}  // namespace
+}  // namespace m3055
