@@ -1,6 +1,5 @@
 #include "brdf_file/brdf_file.h"
 
-#include "io/input_file.h"
 #include "io/message_text.h"
 
 #include <cmath>
@@ -169,16 +168,6 @@ const BrdfParam* BrdfFile::find(std::string_view param) const {
 }
 
 BrdfFile parse_brdf(std::string_view text, const std::string& name) { return Parser(text, name).run(); }
-
-BrdfFile read_brdf_file(const std::string& path) {
-    std::string text;
-    try {
-        text = io::read_input_file(path, std::size_t(1) << 20);
-    } catch (const io::InputError& e) {
-        throw BrdfError(e.what());
-    }
-    return parse_brdf(text, text::quote_name(path));
-}
 
 bool is_glsl_reserved(const std::string& name) {
     // GLSL 4.50 keywords and reserved words, the built-in types and the

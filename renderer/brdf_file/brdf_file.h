@@ -44,9 +44,6 @@ struct BrdfFile {
 // Parses `text`; `name` prefixes every message. Throws BrdfError.
 BrdfFile parse_brdf(std::string_view text, const std::string& name);
 
-// Reads (io::read_input_file: regular files only, bounded) and parses.
-BrdfFile read_brdf_file(const std::string& path);
-
 // True for a GLSL keyword, reserved word or built-in function name, and for
 // the names the renderer gives the file's code (BRDF, its arguments L V N X Y,
 // the renderer's macros): a parameter may not be called so.
