@@ -256,3 +256,31 @@ TEST(BrdfCli, FiguresRendersAFolderWithABrdfScene) {
 
 }  // namespace
 }  // namespace m3055
+
+namespace m3055 {
+namespace {
+
+// Three files that all declare PI (and the renderer has its own) in one
+// program, one of them twice with different values: each file's names are its own.
+TEST(BrdfCli, SeveralFilesWithTheSameNamesInOneScene) {
+    test::TempDir dir;
+    for (const char* f : {"lambert.brdf", "blinn_phong.brdf", "ggx_schlick.brdf"})
+        test::write_text(dir.file(f), test::read_text(data_file(f)));
+    json scene = scene_with({{"model", "brdf"}, {"file", "lambert.brdf"}});
+    json& objects = scene["objects"];
+    const auto sphere = [](double x, const json& material) {
+        return json{{"shape", "sphere"}, {"center", {x, 0, 0}}, {"radius", 0.4}, {"material", material}};
+    };
+    objects = json::array({sphere(-0.9, {{"model", "brdf"}, {"file", "lambert.brdf"}}),
+                           sphere(0.0, {{"model", "brdf"}, {"file", "blinn_phong.brdf"}}),
+                           sphere(0.9, {{"model", "brdf"}, {"file", "ggx_schlick.brdf"}, {"params", {{"m", 0.1}}}}),
+                           sphere(0.0, {{"model", "brdf"}, {"file", "ggx_schlick.brdf"}, {"params", {{"m", 0.6}}}})});
+    objects[3]["center"] = {0, 0.9, 0};
+    test::write_text(dir.file("s.json"), scene.dump());
+    const test::RunResult r = test::run_m3055({"render", "--scene", dir.file("s.json"), "--out", dir.file("s.png")});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.file("s.png")));
+}
+
+}  // namespace
+}  // namespace m3055
