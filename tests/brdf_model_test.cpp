@@ -5,6 +5,7 @@
 #include "brdf_file/brdf_model.h"
 #include "gpu_compare.h"
 #include "models/model_spec.h"
+#include "reference/reference.h"
 #include "scene/load.h"
 #include "test_support.h"
 
@@ -280,6 +281,19 @@ TEST(BrdfCli, SeveralFilesWithTheSameNamesInOneScene) {
     const test::RunResult r = test::run_m3055({"render", "--scene", dir.file("s.json"), "--out", dir.file("s.png")});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir.file("s.png")));
+}
+
+}  // namespace
+}  // namespace m3055
+
+namespace m3055 {
+namespace {
+
+// No C++ twin: the reference says NaN (its callers skip it) rather than throw.
+TEST(BrdfModel, CpuReferenceIsNanNotAnException) {
+    const Material m(*load_brdf_model(data_file("lambert.brdf")).spec);
+    const dvec3 I = ref::shade_opaque(m, {test::directional({0, 0, 1})}, {dvec3(0.0), dvec3(0, 0, 1), dvec3(0, 0, 1)});
+    EXPECT_TRUE(std::isnan(I.x) && std::isnan(I.y) && std::isnan(I.z));
 }
 
 }  // namespace
