@@ -1,6 +1,6 @@
-#include "bench/brdf_bench.h"
+#include "brdf_bench.h"
 
-#include "bench/timing.h"
+#include "timing.h"
 #include "brdf_file/brdf_model.h"
 #include "image/image.h"
 #include "renderer.h"

@@ -4,7 +4,7 @@
 // time, written as DIR_OUT/brdf.md and printed.
 #pragma once
 
-#include "bench/bench.h"
+#include "bench.h"
 
 namespace m3055::bench {
 
