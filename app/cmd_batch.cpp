@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "progress.h"
+#include "scene/json_brdf.h"
 
 #include "grading/submissions.h"
 #include "image/image.h"
@@ -36,6 +37,7 @@ struct BatchCommandOptions {
     std::string backend = "auto", out_dir, report, shard = "1/1";
     bool raw = false;
     double scene_timeout = kBatchSceneTimeout;
+    bool allow_brdf = false;
 };
 
 // The items to render: the manifest's, or one per scene input named into --out.
@@ -89,7 +91,11 @@ void add_batch_command(CLI::App& app) {
                         "Skip a scene not drawn within SECONDS of starting to load it (0: no limit)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    command->add_flag("--allow-brdf", options->allow_brdf,
+                      "Accept materials from .brdf files (their shader code runs; off: a scene with one is an error)");
     command->callback([options]() {
+        // A .brdf file is code: a class's scenes run it only when asked to.
+        scene_json::set_brdf_files_allowed(options->allow_brdf);
         std::atomic<std::size_t> total{0}, written{0};
         // SIGINT, SIGTERM, SIGHUP: wherever the batch is, temporaries removed,
         // finished files kept, one line, ended by the signal.

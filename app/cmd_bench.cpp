@@ -1,5 +1,6 @@
 // `m3055 bench [--out DIR] [--quick]`: run time against error (issue 4, part 1).
 #include "bench/bench.h"
+#include "bench/brdf_bench.h"
 #include "commands.h"
 
 #include <iostream>
@@ -10,6 +11,7 @@ void add_bench_command(CLI::App& app) {
     struct Options {
         bench::BenchOptions bench;
         std::string backend = "auto";
+        std::string brdf;  // --brdf DIR: only the .brdf section (app/bench/brdf_bench.h)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -23,9 +25,14 @@ void add_bench_command(CLI::App& app) {
         ->excludes("--quick");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->add_option("--brdf", options->brdf,
+                        "Only the .brdf section: the files of DIR (tests/data/brdf) against their built-in "
+                        "models, written to --out/brdf.md")
+        ->excludes("--replot");
     command->callback([options]() {
         try {
             options->bench.backend = parse_backend(options->backend);
+            if (!options->brdf.empty()) return bench::run_brdf_bench(options->bench, options->brdf);
             bench::run_bench(options->bench);
         } catch (const std::exception& error) {
             std::cerr << "m3055: " << error.what() << "\n";

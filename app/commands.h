@@ -12,6 +12,8 @@ void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
 void add_explore_command(CLI::App& app);  // app/cmd_explore.cpp
 void add_compare_command(CLI::App& app);  // app/cmd_compare.cpp (issue 14)
 void add_grade_command(CLI::App& app);    // app/cmd_grade.cpp (issue 14)
+void add_brdf_check_command(CLI::App& app);  // app/cmd_brdf_check.cpp
+void add_plot_command(CLI::App& app);        // app/cmd_plot.cpp
 
 // Plain `m3055` (app/cmd_explore.cpp): the explorer when this build has one and
 // $DISPLAY is set; otherwise the usage and one line saying why, kExitUsage.

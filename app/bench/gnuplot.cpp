@@ -14,11 +14,9 @@
 #include <stdexcept>
 
 namespace m3055::bench {
-namespace {
 
 namespace fs = std::filesystem;
 
-// gnuplot on $PATH, or "".
 std::string find_gnuplot() {
     const char* path = std::getenv("PATH");
     std::istringstream dirs(path ? path : "/usr/bin:/bin");
@@ -29,8 +27,6 @@ std::string find_gnuplot() {
     return "";
 }
 
-// `gnuplot -e "out='OUT'" SCRIPT` in `dir`, stdout and stderr into `log`;
-// returns the exit status (127: it could not be started).
 int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script,
                 const std::string& out, const std::string& log) {
     const pid_t pid = fork();
@@ -57,8 +53,6 @@ std::string first_line(const std::string& path) {
         if (line.find_first_not_of(" \t^") != std::string::npos) return line;
     return "(no message)";
 }
-
-}  // namespace
 
 PlotOutcome write_plot(const std::string& dir, const std::vector<PlotPoint>& points, const std::string& title) {
     const std::string script = gnuplot_script(points, title);

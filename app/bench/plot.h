@@ -30,6 +30,15 @@ std::vector<PlotPoint> read_plot_points(const std::string& csv_path);
 // clear of the points, of each other and of the legend.
 std::string gnuplot_script(const std::vector<PlotPoint>& points, const std::string& title);
 
+// gnuplot on $PATH, or "".
+std::string find_gnuplot();
+// `gnuplot -e "out='OUT'" SCRIPT` in `dir`, stdout and stderr into `log`;
+// returns the exit status (127: it could not be started).
+int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script,
+                const std::string& out, const std::string& log);
+// The first line of `path` with text in it (gnuplot's error message).
+std::string first_line(const std::string& path);
+
 enum class PlotOutcome { drawn, no_gnuplot };
 // Writes DIR/bench.gp and, when gnuplot is on $PATH, DIR/bench.png (atomically:
 // gnuplot draws into a temporary file that is renamed). Throws

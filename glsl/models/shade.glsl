@@ -8,6 +8,9 @@
 #include "generated/material.glsl"
 #include "common/lights.glsl"
 #include "generated/models.glsl"
+#ifdef HAS_FAMILY_BRDF
+#include "brdf/shade_brdf.glsl"
+#endif
 
 // An opaque point (every family but translucent). C++ twin: ref::shade_opaque.
 vec3 shade_opaque(Material mat, vec3 P, vec3 N, vec3 V) {
@@ -16,6 +19,9 @@ vec3 shade_opaque(Material mat, vec3 P, vec3 N, vec3 V) {
 #endif
 #ifdef HAS_FAMILY_METAL
     if (mat.family == FAMILY_METAL) return shade_metal(mat, P, N, V);
+#endif
+#ifdef HAS_FAMILY_BRDF
+    if (mat.family == FAMILY_BRDF) return shade_brdf(mat, P, N, V);
 #endif
 #ifdef HAS_FAMILY_OPAQUE
     if (mat.family == FAMILY_OPAQUE) return opaque_shade(mat, P, N, V);

@@ -3,6 +3,8 @@
 #include "gl/shader_source.h"
 #include "models/model_table.h"
 
+#include <regex>
+#include <sstream>
 #include <stdexcept>
 #include <tuple>
 
@@ -29,7 +31,17 @@ static unsigned compile(const GlApi& gl, GLenum stage, const std::string& path,
         gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
         gl.DeleteShader(shader);
         while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-        throw ShaderError("cannot compile glsl/" + path + ":\n" + annotate_shader_log(log, source.files));
+        const std::string annotated = annotate_shader_log(log, source.files);
+        // An error in a .brdf file's code is the file's own: its first error, one line.
+        std::istringstream lines(annotated);
+        for (std::string line; std::getline(lines, line);)
+            for (const std::string& file : source.user_files)
+                if (line.rfind(file + ":", 0) == 0 && line.find("error") != std::string::npos) {
+                    // FILE:LINE:COL: the column counts the renamed (longer) names, so it goes.
+                    static const std::regex column("^(:[0-9]+):[0-9]+:");
+                    throw ShaderError(file + std::regex_replace(line.substr(file.size()), column, "$1:"));
+                }
+        throw ShaderError("cannot compile glsl/" + path + ":\n" + annotated);
     }
     return shader;
 }

@@ -12,6 +12,10 @@
 
 namespace m3055 {
 
+namespace {
+constexpr int kBrdfLineBase = 1000000;  // a .brdf file has fewer lines (1 MB at most)
+}  // namespace
+
 const char* find_glsl_source(const std::string& path) {
     for (const auto& source : glsl_sources())
         if (path == source.path) return source.text;
@@ -19,6 +23,14 @@ const char* find_glsl_source(const std::string& path) {
 }
 
 namespace {
+
+// How messages name a source: glsl/FILE, generated/FILE, or a .brdf file's
+// own name for its shader block ("brdf/ID/NAME", brdf_file/brdf_glsl.cpp).
+std::string shown_name(const std::string& path) {
+    if (path.rfind("generated/", 0) == 0) return path;
+    if (path.rfind("brdf/", 0) == 0 && path.find('/', 5) != std::string::npos) return path.substr(path.find('/', 5) + 1);
+    return "glsl/" + path;
+}
 
 struct Composer {
     const ExtraSources& extra;
@@ -34,7 +46,7 @@ struct Composer {
 
     int number_of(const std::string& path) {
         const auto [it, added] = numbers.emplace(path, int(out.files.size()));
-        if (added) out.files.push_back(path.rfind("generated/", 0) == 0 ? path : "glsl/" + path);
+        if (added) out.files.push_back(shown_name(path));
         return it->second;
     }
 
@@ -46,7 +58,12 @@ struct Composer {
         const std::string number = std::to_string(number_of(path));
         const std::string guard = "M3055_INCLUDED_" + number;
         open.push_back(path);
-        out.text += "#ifndef " + guard + "\n#define " + guard + "\n#line 1 " + number + "\n";
+        // A .brdf block's lines are numbered from kBrdfLineBase x its number: Mesa
+        // names some errors' source as 0, and the line alone then still says whose.
+        const bool brdf = path.rfind("brdf/", 0) == 0;
+        const int base = brdf ? kBrdfLineBase * std::stoi(number) : 0;
+        if (brdf) out.user_files.push_back(out.files.back());
+        out.text += "#ifndef " + guard + "\n#define " + guard + "\n#line " + std::to_string(base + 1) + " " + number + "\n";
         std::istringstream lines(text);
         std::string line;
         int line_number = 0;
@@ -56,7 +73,7 @@ struct Composer {
             std::smatch match;
             if (std::regex_match(line, match, include)) {
                 append(match[1].str(), out.files[std::size_t(std::stoi(number))] + ":" + std::to_string(line_number));
-                out.text += "#line " + std::to_string(line_number + 1) + " " + number + "\n";
+                out.text += "#line " + std::to_string(base + line_number + 1) + " " + number + "\n";
             } else if (line.rfind("#version", 0) == 0) {
                 out.text += "\n";  // the composed shader's #version comes first, once
             } else {
@@ -91,8 +108,12 @@ std::string annotate_shader_log(const std::string& log, const std::vector<std::s
     std::smatch match;
     while (std::regex_search(begin, log.cend(), match, prefix)) {
         result.append(begin, match[0].first);
-        const std::size_t file = std::stoul(match[2].str());
-        const std::string line = match[3].matched ? match[3].str() : match[5].str();
+        std::size_t file = std::stoul(match[2].str());
+        std::string line = match[3].matched ? match[3].str() : match[5].str();
+        if (line.size() < 11 && std::stol(line) > kBrdfLineBase) {  // a .brdf block's (compose_shader)
+            file = std::size_t(std::stol(line) / kBrdfLineBase);
+            line = std::to_string(std::stol(line) % kBrdfLineBase);
+        }
         result += match[1].str();
         result += file < files.size() ? files[file] : "source " + match[2].str();
         result += ":" + line;
@@ -100,7 +121,9 @@ std::string annotate_shader_log(const std::string& log, const std::vector<std::s
         begin = match[0].second;
     }
     result.append(begin, log.cend());
-    return result;
+    // The .brdf code's names as its author wrote them (brdf_file/brdf_glsl.h renames them).
+    static const std::regex renamed("m3055_b[0-9]+_");
+    return std::regex_replace(result, renamed, "");
 }
 
 }  // namespace m3055

@@ -14,6 +14,7 @@ namespace m3055 {
 struct ComposedShader {
     std::string text;                // ready for glShaderSource
     std::vector<std::string> files;  // source-string number -> "glsl/PATH" (or "generated/PATH")
+    std::vector<std::string> user_files;  // those that are .brdf files' code (brdf_file/brdf_glsl.h)
 };
 
 // Files that are not in glsl/: (path, text), e.g. models/glsl_generator.h's.

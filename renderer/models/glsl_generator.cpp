@@ -12,7 +12,7 @@ namespace m3055 {
 
 namespace {
 
-constexpr Family kFamilies[] = {Family::opaque, Family::translucent, Family::metal, Family::classic};
+constexpr Family kFamilies[] = {Family::opaque, Family::translucent, Family::metal, Family::classic, Family::brdf};
 
 std::string upper(std::string text) {
     for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -43,6 +43,8 @@ const Dispatcher kDispatchers[] = {
      "mat, NoL, NoV, LoV", "return 0.0;"},
     {Family::classic, true, "classic_specular", "vec3", "Material mat, vec3 N, vec3 L, vec3 V, float NoL, float NoV",
      "mat, N, L, V, NoL, NoV", "return vec3(0.0);"},
+    {Family::brdf, false, "brdf_eval", "vec3", "Material mat, vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y",
+     "mat, L, V, N, X, Y", "return vec3(0.0);"},
 };
 
 std::string glsl_type(ParamKind kind) {
@@ -200,7 +202,11 @@ std::vector<std::string> every_model_define(const ModelTable& table) {
 }
 
 std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table) {
-    return {{"generated/material.glsl", material_file(table)}, {"generated/models.glsl", models_file(table)}};
+    std::vector<std::pair<std::string, std::string>> out = {{"generated/material.glsl", material_file(table)},
+                                                             {"generated/models.glsl", models_file(table)}};
+    for (const ModelSpec& spec : table.models())
+        out.insert(out.end(), spec.glsl_sources.begin(), spec.glsl_sources.end());
+    return out;
 }
 
 std::vector<std::pair<std::string, std::string>> generated_glsl() {

@@ -51,6 +51,7 @@ const char* to_string(Family family) {
         case Family::translucent: return "translucent";
         case Family::metal: return "metal";
         case Family::classic: return "classic";
+        case Family::brdf: return "brdf";
     }
     return "?";
 }

@@ -75,6 +75,7 @@ enum class Family {
     translucent,  // hook: premultiplied colour + transmittance   (the paper's translucent)
     metal,        // hook: sum_j w_j lobe_j for one light          (the paper's metals, eq. 12-16)
     classic,      // hooks: the diffuse factor and the specular     (the seeds' models, the lecture's equation)
+    brdf,         // hook: f(L, V, N, X, Y) of a BRDF Explorer file (run time only: brdf_file/brdf_model.h)
 };
 
 // The C++ reference hook of each family: the double twin of the GLSL hook.
@@ -111,6 +112,10 @@ struct ModelSpec {
     std::string glsl_specular;  // classic: the specular hook ("" for a diffuse-only model)
     std::vector<DerivedValue> derived;
     ReferenceHooks reference;
+    // GLSL the entry brings itself, (path, text) as the composer includes it
+    // (run-time models: a .brdf file's code and its wrapper); built-in models
+    // have theirs in glsl/.
+    std::vector<std::pair<std::string, std::string>> glsl_sources;
 
     // Set by ModelTable::add.
     int id = -1;           // MODEL_<NAME> in GLSL; index in the table

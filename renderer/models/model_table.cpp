@@ -15,6 +15,7 @@ std::vector<std::string> family_params(Family family) {
     switch (family) {
         case Family::metal: return {"color", "d", "lobes"};  // (d + sum_l ...) C0; lobes by the hook
         case Family::classic: return {"ka", "emission"};     // L_glob K_amb + L_emi, a_k ambient_k K_amb
+        case Family::brdf: return {"axis"};                   // X, Y: the tangent frame of axis
         case Family::opaque:
         case Family::translucent: return {};
     }
@@ -29,6 +30,7 @@ bool has_hook(const ModelSpec& spec) {
         case Family::classic:
             return spec.reference.classic_diffuse != nullptr &&
                    spec.glsl_specular.empty() == (spec.reference.classic_specular == nullptr);
+        case Family::brdf: return false;  // run-time models only, without a C++ twin
     }
     return false;
 }

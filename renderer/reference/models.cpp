@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <limits>
 
 namespace m3055::ref {
 
@@ -140,6 +141,9 @@ dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights, c
         case Family::metal: return shade_metal(material, lights, point);
         case Family::opaque: return model.reference.opaque(material, lights, point);
         case Family::translucent: return shade_highlight(material, lights, point);  // as if t = 1
+        case Family::brdf:  // code from a .brdf file runs on the GPU only (passes/brdf_grid.h):
+            // no value, and callers that draw what they get (the explorer's polar plot) skip NaN
+            return dvec3(std::numeric_limits<double>::quiet_NaN());
     }
     return dvec3(0.0);
 }

@@ -1,6 +1,7 @@
 #include "scene/json_material.h"
 
 #include "models/model_table.h"
+#include "scene/json_brdf.h"
 
 namespace m3055::scene_json {
 
@@ -55,8 +56,14 @@ json lobes_json(const LobeList& lobes, const std::string& key) {
 
 Material read_material(const Node& node) {
     node.expect_object();
+    if (is_brdf_material(node)) return read_brdf_material(node);
     const ModelTable& table = model_table();
-    const ModelSpec& spec = table.at(int(node.required("model").one_of(table.names())));
+    // The models a scene names: every entry but the .brdf files' (named "brdf" + "file").
+    std::vector<std::string> names;
+    for (const ModelSpec& model : table.models())
+        if (model.family != Family::brdf) names.push_back(model.name);
+    names.push_back("brdf");
+    const ModelSpec& spec = table.get(names.at(node.required("model").one_of(names)));
     std::vector<std::string> allowed = spec.param_names();
     allowed.push_back("model");
     node.check_keys(allowed, [&](const std::string& key) { return misplaced(spec, key); });
@@ -67,6 +74,7 @@ Material read_material(const Node& node) {
 
 json material_json(const Material& material) {
     const ModelSpec& spec = material.model();
+    if (spec.family == Family::brdf) return brdf_material_json(material);
     json out = {{"model", spec.name}};
     for (const ParamSpec& param : spec.params) {
         switch (param.kind) {

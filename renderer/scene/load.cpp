@@ -4,6 +4,9 @@
 
 #include "geometry/mesh.h"
 #include "io/input_file.h"
+#include "scene/json_brdf.h"
+
+#include <filesystem>
 #include "io/message_text.h"
 #include "models/model_table.h"
 #include "scene/json_material.h"
@@ -241,6 +244,8 @@ Scene load_scene_file(const std::string& path, const std::vector<Override>& over
         throw SceneError(error.what());
     }
     apply_overrides(doc, overrides, source);
+    // .brdf files named by the scene are relative to its folder.
+    const scene_json::BrdfScope brdf(std::filesystem::path(path).parent_path().string(), true);
     return scene_from_json(doc, source);
 }
 

@@ -37,11 +37,15 @@ std::string Comparison::describe() const {
 }
 
 Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode) {
+    return compare_gpu_with_reference_of(scene, scene, mode);
+}
+
+Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene, ShaderMode mode) {
     Gpu& g = gpu();
     g.renderer.set_shader_mode(mode);
     g.renderer.render(scene);
     const RgbFloatImage raw = g.renderer.read_raw();
-    const ref::ReferenceImage reference = ref::render_reference(scene);
+    const ref::ReferenceImage reference = ref::render_reference(reference_scene);
     const int w = scene.display.width, h = scene.display.height, bits = scene.display.bits;
 
     Comparison result;

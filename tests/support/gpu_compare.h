@@ -22,6 +22,10 @@ struct Comparison {
 
 // Shared headless GL context + renderer for the whole test process.
 Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode = ShaderMode::specialized);
+// The GPU's render of `scene` against the CPU reference of `reference_scene`
+// (same geometry and lights; e.g. a .brdf model against the built-in it copies).
+Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene,
+                                         ShaderMode mode = ShaderMode::specialized);
 
 // A scene with one sphere of `material` at the origin, the docs/spec.md#7-scene-files camera
 // (perspective, or orthographic with height 2.5), and `lights`.

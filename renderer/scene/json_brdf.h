@@ -1,0 +1,37 @@
+// Materials from BRDF Explorer files in scenes:
+//   "material": {"model": "brdf", "file": "shiny.brdf", "params": {"roughness": 0.2}, "axis": [0, 1, 0]}
+// `file` is relative to the scene file's folder; a parameter left out takes
+// the file's default; an unknown name, a wrong type or a value outside the
+// file's MIN..MAX is an error naming the scene file, the JSON path and the .brdf.
+#pragma once
+
+#include "scene/json_node.h"
+#include "scene/material.h"
+
+#include <string>
+
+namespace m3055::scene_json {
+
+// While one lives, relative .brdf paths are taken from `folder` (the scene
+// file's), and .brdf files are accepted only if `allowed` (m3055 batch without
+// --allow-brdf: a .brdf file is code).
+class BrdfScope {
+public:
+    BrdfScope(std::string folder, bool allowed);
+    ~BrdfScope();
+    BrdfScope(const BrdfScope&) = delete;
+    BrdfScope& operator=(const BrdfScope&) = delete;
+
+private:
+    std::string old_folder_;
+    bool old_allowed_;
+};
+
+// Whether .brdf materials are accepted outside any scope (the default: yes).
+void set_brdf_files_allowed(bool allowed);
+
+bool is_brdf_material(const Node& node);  // its "model" is "brdf"
+Material read_brdf_material(const Node& node);
+json brdf_material_json(const Material& material);  // {"model": "brdf", "file", "params", "axis"}
+
+}  // namespace m3055::scene_json
