@@ -23,6 +23,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <system_error>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -48,12 +50,19 @@ std::string json_beside(const std::string& png_path) {
 
 // The screenshot: exactly what `m3055 render` writes for the saved scene (the
 // same Renderer, the same read_display and write_png), and the scene beside it.
+// A script's `screenshot PATH` names the file; F12 takes the next free
+// NAME-0001.png in the chosen folder, so nothing is overwritten.
 void take_screenshot(ExplorerState& state, Renderer& renderer) {
-    const std::string& png = state.screenshot_path;
+    const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
+    state.screenshot_path.clear();
     try {
         renderer.render(state.scene);
         write_png(png, renderer.read_display());
-        if (save_scene(state, json_beside(png))) state.status = "screenshot " + png + " + " + json_beside(png);
+        const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
+        write_file_atomic(json, text.data(), text.size());
+        std::error_code ec;
+        const std::string full = std::filesystem::absolute(png, ec).string();
+        state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);
     } catch (const std::exception& e) {
         state.error = e.what();
     }
@@ -80,6 +89,7 @@ bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
     }
     try {
         set_scene(state, load_scene_file(options.scene_path), options.scene_path);
+        state.scene_file = options.scene_path;
         return true;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
@@ -112,8 +122,14 @@ public:
     }
 
     // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
-    bool done() const {
-        if (window_.should_close() || state_.quit) return true;
+    bool done() {
+        if (state_.quit) return true;
+        if (window_.should_close()) {
+            if (!unsaved(state_)) return true;
+            window_.cancel_close();  // ask first (the unsaved-edits dialog)
+            state_.quit_requested = true;
+            window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+        }
         return script_ && script_->finished() && options_.exit_after_script && pending_capture_.empty() &&
                (options_.capture_window.empty() || window_captured_) && !frame_needed();
     }
@@ -136,7 +152,8 @@ public:
 
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
-        for (const std::string& path : window_.events().dropped) load_scene(state_, path);
+        for (const std::string& path : window_.events().dropped)
+            if (!load_scene(state_, path)) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
@@ -149,13 +166,16 @@ public:
             draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
         }
+        draw_dialogs(state_);
+        // A finished edit (no widget held, no drag on the display) is one undo step.
+        if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
             take_screenshot(state_, *renderer_a_);
         }
         draw_displays(layout, fb_scale);
-        window_.set_title("M3055 material explorer - " + state_.scene_name);
+        window_.set_title("M3055 material explorer - " + title_name(state_));
         present();
         info_.frame_ms = milliseconds_since(frame_start);
         schedule_window_capture();
@@ -187,10 +207,14 @@ private:
         }
     }
 
-    // Shortcuts, unless the user is typing into a text field.
+    // Shortcuts, unless a widget or a dialog takes the keyboard (keys.h).
     void apply_keys() {
-        for (const WindowEvents::Key& k : window_.events().keys)
-            if (!ImGui::GetIO().WantTextInput) handle_shortcut(state_, k.key, k.mods);
+        const ImGuiIO& io = ImGui::GetIO();
+        KeyFocus focus;
+        focus.text_input = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+        focus.wants_keyboard = io.WantCaptureKeyboard;
+        focus.item_active = ImGui::IsAnyItemActive();
+        for (const WindowEvents::Key& k : window_.events().keys) handle_shortcut(state_, k.key, k.mods, focus);
         window_.events().keys.clear();
     }
 
@@ -288,6 +312,7 @@ int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
     if (!load_start_scene(state, options)) return 1;
+    start_history(state);
     std::optional<Script> script;
     if (!options.script_path.empty()) {
         try {

@@ -19,7 +19,8 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
-    ImGui::Begin("M3055 material explorer", nullptr, kFixed);
+    ImGui::Begin("M3055 material explorer", nullptr, kFixed | ImGuiWindowFlags_MenuBar);
+    draw_menu_bar(state);
     ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
 
     if (!state.error.empty()) {

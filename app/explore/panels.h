@@ -29,6 +29,11 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
                        float width, float height);
 
+// The side panel's menu bar (File, Edit: undo/redo by name) and the modal
+// dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
+void draw_menu_bar(ExplorerState& state);
+void draw_dialogs(ExplorerState& state);
+
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);
 void material_section(ExplorerState& state);

@@ -187,6 +187,26 @@ void compare_model(Call& c) {
     c.state.changed();
 }
 
+void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
+
+// ---- Undo/redo (Edit menu) -----------------------------------------------------------------
+
+void undo_command(Call& c) {
+    if (!undo(c.state)) throw std::runtime_error("undo: nothing to undo");
+}
+void redo_command(Call& c) {
+    if (!redo(c.state)) throw std::runtime_error("redo: nothing to redo");
+}
+// One line: the title's name, and what Undo and Redo would do.
+void print_state(Call& c) {
+    commit_edits(c.state);
+    const History& h = c.state.history;
+    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\n", title_name(c.state).c_str(),
+                h.can_undo() ? h.undo_label().c_str() : "", h.can_redo() ? h.redo_label().c_str() : "",
+                h.undo_steps());
+    std::fflush(stdout);
+}
+
 // ---- Keys, files and the script itself -----------------------------------------------------
 
 void key(Call& c) {
@@ -205,6 +225,7 @@ void save(Call& c) {
     if (!save_scene(c.state, c.word())) throw std::runtime_error(c.state.error);
 }
 
+void screenshot_dir(Call& c) { c.state.screenshot_dir = c.rest(); }
 void capture(Call& c) { c.script.capture_path = c.word(); }
 void idle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames); }
 void quit(Call& c) { c.state.quit = true; }
@@ -226,6 +247,9 @@ const std::map<std::string, Handler>& commands() {
         {"key", key},               {"screenshot", screenshot},
         {"save", save},             {"capture", capture},
         {"idle", idle},             {"quit", quit},
+        {"undo", undo_command},     {"redo", redo_command},
+        {"copy_b", copy_b},         {"print_state", print_state},
+        {"screenshot_dir", screenshot_dir},
     };
     return table;
 }

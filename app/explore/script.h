@@ -18,13 +18,17 @@
 //   display m3055|modern    the Display panel's two preset buttons
 //   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
 //   projection perspective|orthographic
-//   compare on|off | compare_model NAME
-//   key NAME                a key press: escape, r, f1, f12, ctrl+s, 0-9
+//   compare on|off | compare_model NAME | copy_b (the "B = copy of A" button)
+//   key NAME                a key press: escape, r, f1, f12, ctrl+s, ctrl+z, ctrl+shift+z,
+//                           ctrl+y, 0-9, ctrl+0-9 (as with no widget active)
+//   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
+//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
+//   screenshot_dir DIR      the folder F12 writes NAME-0001.png ... into
 //   save PATH               scene JSON
 //   capture PATH            a PNG of the whole window after the next frame
 //   idle SECONDS            no input for that long; counts the frames drawn meanwhile
-//   quit
+//   quit                    quit at once (Esc asks first when there are unsaved edits)
 #pragma once
 
 #include "explore/state.h"
