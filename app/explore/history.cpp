@@ -11,7 +11,8 @@ void History::reset(Snapshot base) {
 }
 
 bool History::commit(Snapshot now, const std::string& label) {
-    if (now.doc == head_.doc && now.material_b == head_.material_b && now.scene_name == head_.scene_name) return false;
+    // The name and file alone (a save) are no step: set_head_file follows them.
+    if (now.doc == head_.doc && now.material_b == head_.material_b) return false;
     std::string name = label;
     if (name.empty()) {
         name = first_difference(head_.doc, now.doc);
@@ -22,6 +23,11 @@ bool History::commit(Snapshot now, const std::string& label) {
     redo_.clear();
     head_ = std::move(now);
     return true;
+}
+
+void History::set_head_file(const std::string& name, const std::string& file) {
+    head_.scene_name = name;
+    head_.scene_file = file;
 }
 
 const Snapshot& History::undo() {

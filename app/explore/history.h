@@ -34,6 +34,9 @@ public:
     // forgets the redo steps. Returns whether a step was added.
     bool commit(Snapshot now, const std::string& label);
 
+    // A save gives the scene a (new) name and file: no step of its own.
+    void set_head_file(const std::string& name, const std::string& file);
+
     bool can_undo() const { return !undo_.empty(); }
     bool can_redo() const { return !redo_.empty(); }
     const std::string& undo_label() const { return undo_.back().label; }

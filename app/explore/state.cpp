@@ -104,7 +104,11 @@ bool load_figure(ExplorerState& state, const std::string& name) {
         try {
             const std::string source = "scenes/" + name + ".json";
             set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
-            state.scene_file.clear();  // built in: Ctrl+S asks where to save
+            // Built in: nothing to lose yet (digit keys may flip through the
+            // figures); Ctrl+S asks where to save.
+            state.scene_file.clear();
+            state.clean_file.clear();
+            state.clean_doc = scene_to_json(state.scene);
             state.pending_label = "figure preset " + name;
             state.status = "figure preset " + name;
             state.error.clear();
@@ -125,6 +129,8 @@ bool save_scene(ExplorerState& state, const std::string& path) {
         state.scene_file = state.clean_file = path;
         state.clean_doc = scene_to_json(state.scene);
         state.scene_name = std::filesystem::path(path).filename().string();
+        commit_edits(state);  // the edits before the save are a step; the save itself is none
+        state.history.set_head_file(state.scene_name, path);
         std::error_code ec;
         const auto full = std::filesystem::absolute(path, ec);
         state.status = "saved " + (ec ? path : full.string());
