@@ -79,14 +79,17 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Text("frames drawn %ld, scene renders %ld", info.frames, info.renders);
     if (info.scale >= 1) ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
     else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "shrunk to fit the window (not whole pixels)");
-    ImGui::Separator();
-    ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
-    ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
-    ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
+    // The last message (saved, screenshot, loaded: with the full path) where it is seen.
+    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
     ImGui::Separator();
     hint("Left: the CPU reference's red, green and blue value for every view direction in "
          "the plane of L (yellow) and N; dashed: the mirror direction R.");
-    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+    if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
+        ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
+        ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
+        ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
+        ImGui::TreePop();
+    }
     ImGui::EndGroup();
     ImGui::End();
 }

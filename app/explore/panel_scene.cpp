@@ -26,11 +26,15 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
         display.height = std::clamp(size[1], 1, kMaxDisplaySize);
         state.changed();
     }
+    tooltip("the display's size in dots, each in [1, 8192] (Enter applies; spec section 2)");
     if (ImGui::SliderInt("bits", &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) state.changed();
+    tooltip("bits per channel, in [1, 8]: the M3055 has 5 (32 levels; spec section 2)");
     ImGui::SameLine();
     ImGui::TextDisabled("%d levels", 1 << display.bits);
     if (ImGui::Checkbox("ordered dithering (4x4 Bayer)", &display.dither)) state.changed();
+    tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
     if (color_edit("background", &state.scene.background)) state.changed();
+    tooltip("the colour behind the objects, RGB in [0, 1]; translucent objects blend over it");
 }
 
 void objects_section(ExplorerState& state) {
