@@ -1,7 +1,6 @@
 // The two fixed windows and the order of the side panel's sections.
 #include "explore/panels.h"
 
-#include "explore/polar_plot.h"
 #include "explore/widgets.h"
 
 #include <imgui.h>
@@ -54,21 +53,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Begin("Plane of incidence", nullptr, kFixed);
 
     ImGui::BeginGroup();
-    const Material* material = selected_material(state);
-    if (material && !state.scene.lights.empty()) {
-        state.selected_light =
-            std::clamp(state.selected_light, 0, static_cast<int>(state.scene.lights.size()) - 1);
-        const Light& light = state.scene.lights[state.selected_light];
-        const double incidence = incidence_towards_camera(light, state.scene.camera);
-        ImGui::Text("object %d (%s), light %d at %.1f deg to N", state.selected_object,
-                    material->model_name().c_str(), state.selected_light, incidence);
-        // The half-disc plot is twice as wide as it is tall; leave room for the title
-        // bar, the line above and the scale line under it.
-        const float plot_height = height - 6.0f * ImGui::GetTextLineHeightWithSpacing();
-        polar_plot(*material, light, std::min(incidence, 90.0), std::min(2.0f * plot_height, width * 0.5f));
-    } else {
-        ImGui::TextUnformatted("(no light: nothing to plot)");
-    }
+    plot_section(state, width, height);
     ImGui::EndGroup();
 
     ImGui::SameLine(0.0f, 24.0f);
@@ -82,8 +67,9 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     // The last message (saved, screenshot, loaded: with the full path) where it is seen.
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
     ImGui::Separator();
-    hint("Left: the CPU reference's red, green and blue value for every view direction in "
-         "the plane of L (yellow) and N; dashed: the mirror direction R.");
+    hint("Left: the red, green and blue value (CPU reference) for every view direction in the plane of "
+         "the plotted light L (yellow) and N; dashed: the mirror direction R. Translucent objects: the "
+         "displayed blend over the background colour.");
     if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
         ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
         ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());

@@ -42,5 +42,7 @@ void objects_section(ExplorerState& state);
 void camera_section(ExplorerState& state);
 void compare_section(ExplorerState& state);
 void file_section(ExplorerState& state);
+// The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.
+void plot_section(ExplorerState& state, float width, float height);
 
 }  // namespace m3055::explore

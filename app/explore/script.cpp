@@ -187,6 +187,18 @@ void compare_model(Call& c) {
     c.state.changed();
 }
 
+void plot_light(Call& c) { c.state.plotted_light = c.light(); }  // the plot header's light combo
+void plot_scale(Call& c) {  // the plot header's scale combo, and its outer value (optional)
+    const std::string name = c.word();
+    if (name == "fixed") c.state.plot_scale = RadialScale::fixed;
+    else if (name == "model_max") c.state.plot_scale = RadialScale::model_max;
+    else if (name == "log") c.state.plot_scale = RadialScale::log;
+    else throw std::runtime_error("plot_scale: fixed, model_max or log");
+    double top = name == "log" ? 1000.0 : 1.0;
+    if (!c.rest().empty()) throw std::runtime_error("plot_scale: one word");
+    c.state.plot_top = top;
+}
+
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
@@ -248,7 +260,8 @@ const std::map<std::string, Handler>& commands() {
         {"save", save},             {"capture", capture},
         {"idle", idle},             {"quit", quit},
         {"undo", undo_command},     {"redo", redo_command},
-        {"copy_b", copy_b},         {"print_state", print_state},
+        {"copy_b", copy_b},         {"plot_light", plot_light},
+        {"plot_scale", plot_scale},         {"print_state", print_state},
         {"screenshot_dir", screenshot_dir},
     };
     return table;

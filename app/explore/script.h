@@ -21,6 +21,8 @@
 //   compare on|off | compare_model NAME | copy_b (the "B = copy of A" button)
 //   key NAME                a key press: escape, r, f1, f12, ctrl+s, ctrl+z, ctrl+shift+z,
 //                           ctrl+y, 0-9, ctrl+0-9 (as with no widget active)
+//   plot_light I            the polar plot header's light
+//   plot_scale fixed|model_max|log   its radial scale
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
 //   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it

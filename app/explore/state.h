@@ -3,6 +3,7 @@
 // through the same code as a click). No ImGui and no GL in here.
 #pragma once
 
+#include "analysis/plane_curve.h"
 #include "explore/history.h"
 #include "scene/presets.h"
 #include "scene/scene.h"
@@ -21,7 +22,13 @@ struct ExplorerState {
     std::string scene_file;  // the file the scene came from or was saved to ("" for presets): Ctrl+S
 
     int selected_object = 0;  // whose material the Material panel edits
-    int selected_light = 0;   // which light the polar plot uses
+    int selected_light = 0;   // the light last edited in the Lights panel
+    int plotted_light = 0;    // the polar plot's light: picked in the plot's own header only
+
+    // The polar plot's radial scale: chosen by the user and kept (model_max is
+    // recomputed only when the plotted material's model or the light changes).
+    RadialScale plot_scale = RadialScale::fixed;
+    double plot_top = 1.0;    // fixed: the outer circle; log: the outer circle's value
 
     // A/B compare: the selected object rendered a second time with material_b.
     bool compare = false;
