@@ -273,6 +273,7 @@ constexpr int kSizeSliderX = 157, kSizeSliderY = 353;  // Material: m (size)
 constexpr int kCompareHeaderX = 76, kCompareHeaderY = 759;  // A/B compare header
 constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 786;  // split: A | B (after the header opens)
 constexpr int kDisplayX = 1000, kDisplayY = 300;  // on the display
+constexpr int kRestX = 1485, kRestY = 930;  // the bottom strip's empty corner: no tooltip, no probe
 
 class ExplorerInput : public ::testing::Test {
 protected:
@@ -307,7 +308,7 @@ TEST_F(ExplorerInput, SliderDragThenCtrlZRestoresTheExactImage) {
     const int w = expected.width * at.scale, h = expected.height * at.scale;
 
     app_->drag(kSizeSliderX, kSizeSliderY, kSizeSliderX + 60, kSizeSliderY);
-    app_->move(kDisplayX, kDisplayY);
+    app_->move(kRestX, kRestY);
     const Rgb8Image dragged = crop(app_->screen(dir_.path()), at.x, at.y, w, h);
     ASSERT_GT(differing_pixels(dragged, crop(before, at.x, at.y, w, h)), 1000) << "the drag changed m";
     EXPECT_NE(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
@@ -330,7 +331,7 @@ TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
     ASSERT_GT(at.scale, 0);
     const int w = expected.width * at.scale, h = expected.height * at.scale;
     app_->drag(kDisplayX, kDisplayY, kDisplayX + 80, kDisplayY + 30);  // an edit: orbit
-    app_->move(kDisplayX, kDisplayY + 400);  // off the display, over no widget
+    app_->move(kRestX, kRestY);  // off the display, over no widget
     const Rgb8Image after_orbit = app_->screen(dir_.path());
     ASSERT_FALSE(shows_at(after_orbit, expected, at.x, at.y, at.scale)) << "the orbit moved the camera";
     const Rgb8Image edited = crop(after_orbit, at.x, at.y, w, h);
@@ -351,7 +352,7 @@ TEST_F(ExplorerInput, SplitOnKeepsB) {
     app_->click(kCompareHeaderX, kCompareHeaderY);
     app_->screen(dir_.path());
     app_->click(kSplitCheckboxX, kSplitCheckboxY);
-    app_->move(kDisplayX, kDisplayY);
+    app_->move(kRestX, kRestY);
     const Rgb8Image split = app_->screen(dir_.path());
     const Place a = find_magnified(split, expected);
     ASSERT_GT(a.scale, 0) << "A is still the scene";

@@ -324,5 +324,46 @@ TEST_F(Explorer, F12WritesTheNextFreeNumberedScreenshot) {
     EXPECT_EQ(load_scene_file(dir.file("shots/m3055-0003.json")).objects[0].material.number("m"), 3.0);
 }
 
+// Issue 12: the pixel probe's numbers are the headless render's: the linear
+// value of the --raw PFM, the PNG value and its display level; a click picks
+// the object under it (the Material panel then edits it).
+TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "figure fig10\nprobe 256 160\nprobe 100 160\nprobe 3 3\n"
+                                             "click 420 160\nsave scene.json\nprint_state\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto render = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("r.png"),
+                                         "--raw", dir.file("r.pfm")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const RgbFloatImage raw = read_pfm(dir.file("r.pfm"));
+    const Rgb8Image png = read_png(dir.file("r.png"));
+    const Scene scene = load_scene_file(dir.file("scene.json"));
+    std::istringstream lines(run.out);
+    int probes = 0;
+    for (std::string line; std::getline(lines, line);) {
+        int x = 0, y = 0, level[3], value[3];
+        double linear[3];
+        if (std::sscanf(line.c_str(), "probe pixel (%d, %d)\tlinear %lf %lf %lf\tlevel %d %d %d\tpng %d %d %d", &x, &y,
+                        &linear[0], &linear[1], &linear[2], &level[0], &level[1], &level[2], &value[0], &value[1],
+                        &value[2]) != 11)
+            continue;
+        ++probes;
+        for (int c = 0; c < 3; ++c) {
+            const float expected = raw.pixels[(std::size_t(raw.height - 1 - y) * raw.width + x) * 3 + c];
+            EXPECT_NEAR(linear[c], expected, 1e-5 * std::max(1.0f, std::abs(expected))) << line;
+            EXPECT_EQ(value[c], png.pixels[(std::size_t(y) * png.width + x) * 3 + c]) << line;
+            // docs/spec.md#2-display: level = floor(c (2^bits - 1) + 0.5), clamped (no dithering here).
+            const int top = (1 << scene.display.bits) - 1;
+            EXPECT_EQ(level[c], std::clamp(int(std::floor(expected * top + 0.5)), 0, top)) << line;
+        }
+        if (x == 256) EXPECT_NE(line.find("object 1 (metal)"), std::string::npos) << line;
+        if (x == 3) EXPECT_NE(line.find("background"), std::string::npos) << line;
+        if (x != 3) EXPECT_NE(line.find("N.L "), std::string::npos) << line;
+    }
+    EXPECT_EQ(probes, 3) << run.out;
+    EXPECT_NE(run.out.find("\tselected=2\n"), std::string::npos) << "the click on the right sphere: " << run.out;
+}
+
 }  // namespace
 }  // namespace m3055

@@ -8,6 +8,7 @@
 #include "explore/imgui_layer.h"
 #include "explore/keys.h"
 #include "explore/panels.h"
+#include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/state.h"
 #include "explore/window.h"
@@ -162,14 +163,17 @@ public:
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
         note_free_area(layout, fb_scale);
         apply_mouse();
-        if (state_.show_panels) {
-            draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
-            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
-        }
+        if (state_.show_panels) draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
         draw_dialogs(state_);
         // A finished edit (no widget held, no drag on the display) is one undo step.
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
+        answer_probes();
+        // After the render: the strip's histogram and timings are this frame's.
+        if (state_.show_panels) {
+            info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
+            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
+        }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
             take_screenshot(state_, *renderer_a_);
@@ -232,6 +236,46 @@ private:
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
             orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
         if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
+        // A click (no drag) picks the object under it.
+        if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !moved_while_down_) {
+            if (const auto pixel = Readouts::pixel_at(state_.scene, shown_a_, io.MousePos.x, io.MousePos.y))
+                readouts_.pick(state_, pixel->first, pixel->second);
+        }
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) moved_while_down_ = false;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+            moved_while_down_ = true;
+    }
+
+    // --script's `probe X Y` and `click X Y`, answered once A is rendered.
+    void answer_probes() {
+        if (!renderer_a_) return;
+        for (const auto& [x, y] : state_.probe_requests) {
+            const PixelProbe probe = readouts_.probe(state_, *renderer_a_, x, y);
+            std::string line = probe.text();
+            for (char& c : line) c = c == '\n' ? '\t' : c;
+            std::printf("probe %s\n", line.c_str());
+        }
+        for (const auto& [x, y] : state_.pick_requests) readouts_.pick(state_, x, y);
+        if (!state_.probe_requests.empty()) std::fflush(stdout);
+        state_.probe_requests.clear();
+        state_.pick_requests.clear();
+    }
+
+    // Over A (not over a panel, not dragging): the probe as a tooltip, and the selection's outline.
+    void hover_readouts() {
+        const ImGuiIO& io = ImGui::GetIO();
+        // Only once the pointer has moved in the window: a pointer parked
+        // there (a script's capture under Xvfb) is no one hovering.
+        pointer_moved_ |= io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+        if (!renderer_a_ || !pointer_moved_ || io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+        const auto pixel = Readouts::pixel_at(state_.scene, shown_a_, io.MousePos.x, io.MousePos.y);
+        if (!pixel) return;
+        readouts_.draw_outline(state_, shown_a_, true);
+        const PixelProbe probe = readouts_.probe(state_, *renderer_a_, pixel->first, pixel->second);
+        ImGui::BeginTooltip();
+        ImGui::TextUnformatted(probe.text().c_str());
+        ImGui::TextDisabled("light %d; click selects the object", state_.plotted_light);
+        ImGui::EndTooltip();
     }
 
     // The scene (and B in compare) is rendered only when something changed.
@@ -241,6 +285,7 @@ private:
         const auto start = std::chrono::steady_clock::now();
         try {
             renderer_a_->render(state_.scene);
+            readouts_.invalidate();
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
@@ -254,7 +299,9 @@ private:
         if (renderer_a_) {
             std::vector<unsigned> textures = {renderer_a_->display_texture()};
             if (state_.compare) textures.push_back(renderer_b_->display_texture());
-            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale);
+            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
+                                       &shown_a_);
+            hover_readouts();
         }
         if (!state_.show_panels && !state_.error.empty())
             ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), state_.error.c_str());
@@ -302,6 +349,10 @@ private:
     const GlApi& gl_;
     FrameInfo& info_;
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
+    Readouts readouts_;      // probe, histogram, pick and outline of A
+    Rect shown_a_;           // where A was drawn last (ImGui units)
+    bool moved_while_down_ = false;  // the left button was dragged: no pick on release
+    bool pointer_moved_ = false;     // the pointer has moved in the window at least once
     std::string pending_capture_;  // write the window here after the next frame is drawn
     bool window_captured_ = false; // --capture-window is taken once
 };

@@ -6,6 +6,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
 
 namespace m3055::explore {
 
@@ -46,6 +49,26 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
     ImGui::End();
 }
 
+// Per channel, how many pixels show each of the 2^bits levels, and how many levels are used.
+void level_histogram_view(const LevelHistogram& h, int bits) {
+    const int levels = 1 << bits;
+    ImGui::Text("levels used: R %d, G %d, B %d of %d", h.used[0], h.used[1], h.used[2], levels);
+    const ImVec4 colours[3] = {ImVec4(1, 0.35f, 0.35f, 1), ImVec4(0.35f, 0.9f, 0.35f, 1), ImVec4(0.4f, 0.55f, 1, 1)};
+    for (int c = 0; c < 3; ++c) {
+        // Square roots: the background's level would flatten every other bar.
+        std::vector<float> bars(h.counts[std::size_t(c)].size());
+        for (std::size_t i = 0; i < bars.size(); ++i) bars[i] = std::sqrt(float(h.counts[std::size_t(c)][i]));
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colours[c]);
+        ImGui::PushID(c);
+        ImGui::PlotHistogram("##levels", bars.data(), static_cast<int>(bars.size()), 0, nullptr, 0.0f, FLT_MAX,
+                             ImVec2(std::min(ImGui::GetContentRegionAvail().x, 320.0f), 16.0f));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("pixels per display level (0 ... %d), square-root scale", levels - 1);
+        ImGui::PopID();
+        ImGui::PopStyleColor();
+    }
+}
+
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
                        float width, float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -64,6 +87,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Text("frames drawn %ld, scene renders %ld", info.frames, info.renders);
     if (info.scale >= 1) ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
     else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "shrunk to fit the window (not whole pixels)");
+    if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
     // The last message (saved, screenshot, loaded: with the full path) where it is seen.
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
     ImGui::Separator();

@@ -2,6 +2,7 @@
 // edits ExplorerState through the shared actions in state.h.
 #pragma once
 
+#include "analysis/pixel_probe.h"
 #include "explore/state.h"
 
 #include <string>
@@ -20,6 +21,7 @@ struct FrameInfo {
     int free_width = 0;       // pixels available for the display (for the "modern" preset)
     int free_height = 0;
     int scale = 1;            // whole-pixel magnification of the display
+    const LevelHistogram* histogram = nullptr;  // of A's display, this frame
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.

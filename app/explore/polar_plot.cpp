@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <vector>
 
@@ -75,12 +76,12 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
         const ImVec2 extent = ImGui::CalcTextSize(text);
         draw->AddText(ImVec2(origin.x - extent.x * 0.5f, origin.y - radius * 0.5f), IM_COL32(255, 200, 80, 255), text);
     }
-    char label[96];
+    char label[128];
     if (scale == RadialScale::log) std::snprintf(label, sizeof label, "log: centre 0.001, outer %.3g", top);
-    else std::snprintf(label, sizeof label, "outer circle %.3g, bold = 1 (display white)", top);
-    draw->AddText(ImVec2(corner.x, origin.y + 4), IM_COL32(255, 255, 255, 140), label);
-    if (clipped)
-        draw->AddText(ImVec2(corner.x + size - 90, origin.y + 4), IM_COL32(255, 170, 60, 255), "beyond: clipped");
+    else std::snprintf(label, sizeof label, "outer circle %.3g, bold = 1 (white)", top);
+    if (clipped) std::strncat(label, "; beyond it: on the circle", sizeof label - std::strlen(label) - 1);
+    draw->AddText(ImVec2(corner.x, origin.y + 4), clipped ? IM_COL32(255, 170, 60, 255) : IM_COL32(255, 255, 255, 140),
+                  label);
 }
 
 }  // namespace m3055::explore

@@ -199,6 +199,20 @@ void plot_scale(Call& c) {  // the plot header's scale combo, and its outer valu
     c.state.plot_top = top;
 }
 
+std::pair<int, int> display_pixel(Call& c) {
+    const int x = c.integer(), y = c.integer();
+    const Display& d = c.state.scene.display;
+    if (x < 0 || y < 0 || x >= d.width || y >= d.height)
+        throw std::runtime_error(c.command + ": (" + std::to_string(x) + ", " + std::to_string(y) +
+                                 ") is outside the " + std::to_string(d.width) + " x " + std::to_string(d.height) +
+                                 " display");
+    return {x, y};
+}
+// Hovering display pixel (x, y): prints "probe ..." once rendered.
+void probe(Call& c) { c.state.probe_requests.push_back(display_pixel(c)); }
+// A click on display pixel (x, y): selects the object there.
+void click(Call& c) { c.state.pick_requests.push_back(display_pixel(c)); }
+
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
@@ -213,9 +227,9 @@ void redo_command(Call& c) {
 void print_state(Call& c) {
     commit_edits(c.state);
     const History& h = c.state.history;
-    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\n", title_name(c.state).c_str(),
+    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tselected=%d\n", title_name(c.state).c_str(),
                 h.can_undo() ? h.undo_label().c_str() : "", h.can_redo() ? h.redo_label().c_str() : "",
-                h.undo_steps());
+                h.undo_steps(), c.state.selected_object);
     std::fflush(stdout);
 }
 
@@ -261,7 +275,8 @@ const std::map<std::string, Handler>& commands() {
         {"idle", idle},             {"quit", quit},
         {"undo", undo_command},     {"redo", redo_command},
         {"copy_b", copy_b},         {"plot_light", plot_light},
-        {"plot_scale", plot_scale},         {"print_state", print_state},
+        {"plot_scale", plot_scale}, {"probe", probe},
+        {"click", click},         {"print_state", print_state},
         {"screenshot_dir", screenshot_dir},
     };
     return table;

@@ -23,8 +23,11 @@
 //                           ctrl+y, 0-9, ctrl+0-9 (as with no widget active)
 //   plot_light I            the polar plot header's light
 //   plot_scale fixed|model_max|log   its radial scale
+//   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
+//                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
+//   click X Y               a click on display pixel (X, Y): selects the object there
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
-//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N"
+//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
 //   screenshot_dir DIR      the folder F12 writes NAME-0001.png ... into
 //   save PATH               scene JSON

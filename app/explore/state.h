@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace m3055::explore {
@@ -57,6 +58,10 @@ struct ExplorerState {
 
     std::string status;  // last message (saved ..., loaded ...)
     std::string error;   // last error, shown in red until dismissed
+
+    // --script's `probe X Y` / `click X Y` (display pixels): the frame loop
+    // answers them once the scene is rendered.
+    std::vector<std::pair<int, int>> probe_requests, pick_requests;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;
