@@ -365,5 +365,20 @@ TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
     EXPECT_NE(run.out.find("\tselected=2\n"), std::string::npos) << "the click on the right sphere: " << run.out;
 }
 
+// Light names (the scene format's optional "name"): the three-point presets
+// name theirs, the Lights panel edits them, a save keeps them.
+TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "light_preset three_point_white\nlight_name 2 rim\tlight\n"
+                                             "light_name 1\nsave named.json\nload named.json\nsave again.json\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto doc = nlohmann::json::parse(test::read_text(dir.file("named.json")));
+    EXPECT_EQ(doc["lights"][0]["name"], "key");
+    EXPECT_FALSE(doc["lights"][1].contains("name")) << "an empty name is no name";
+    EXPECT_EQ(doc["lights"][2]["name"], "rimlight") << "the tab (a control character) is dropped";
+    EXPECT_EQ(test::read_text(dir.file("named.json")), test::read_text(dir.file("again.json")));
+}
+
 }  // namespace
 }  // namespace m3055

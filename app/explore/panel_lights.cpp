@@ -5,6 +5,7 @@
 #include "explore/widgets.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <string>
 
@@ -14,9 +15,19 @@ namespace {
 
 const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term)";
 
+// The scene format's light "name": what is typed is kept to what the format allows (state.h).
+bool name_field(Light& light) {
+    std::string name = light.name;
+    if (!ImGui::InputText("name", &name)) return false;
+    light.name = valid_light_name(name);
+    return true;
+}
+
 bool light_editor(ExplorerState& state, int index) {
     Light& light = state.scene.lights[index];
-    bool changed = false;
+    bool changed = name_field(light);
+    tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
+            "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
     changed |= ImGui::Checkbox("enabled", &light.enabled);
     ImGui::SameLine();
     int type = static_cast<int>(light.type);
@@ -93,7 +104,9 @@ void lights_section(ExplorerState& state) {
     auto& lights = state.scene.lights;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         ImGui::PushID(i);
-        const std::string title = "light " + std::to_string(i) + " (" + to_string(lights[i].type) +
+        const std::string title = "light " + std::to_string(i) +
+                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") + " (" +
+                                  to_string(lights[i].type) +
                                   (lights[i].enabled ? "" : ", off") + ")###light";
         ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
@@ -118,6 +131,7 @@ void lights_section(ExplorerState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
+    if (!lights.empty() && light_plot(state)) state.changed();
 }
 
 }  // namespace m3055::explore

@@ -213,6 +213,12 @@ void probe(Call& c) { c.state.probe_requests.push_back(display_pixel(c)); }
 // A click on display pixel (x, y): selects the object there.
 void click(Call& c) { c.state.pick_requests.push_back(display_pixel(c)); }
 
+void light_name(Call& c) {  // the Lights panel's name field
+    const int index = c.light();
+    c.state.scene.lights[std::size_t(index)].name = valid_light_name(c.rest());
+    c.state.changed();
+}
+
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
@@ -276,7 +282,7 @@ const std::map<std::string, Handler>& commands() {
         {"undo", undo_command},     {"redo", redo_command},
         {"copy_b", copy_b},         {"plot_light", plot_light},
         {"plot_scale", plot_scale}, {"probe", probe},
-        {"click", click},         {"print_state", print_state},
+        {"click", click},           {"light_name", light_name},         {"print_state", print_state},
         {"screenshot_dir", screenshot_dir},
     };
     return table;

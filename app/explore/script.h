@@ -11,6 +11,7 @@
 //   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
 //   light_angles I AZ EL    light I's azimuth/elevation sliders (degrees)
 //   light_drag I X Y        a drag on light I's sphere widget, disc coordinates (y up)
+//   light_name I TEXT       light I's name field (TEXT may be empty: no name)
 //   add_light | remove_light I | add_object [SHAPE] | remove_object I
 //   shape NAME              the selected object's shape (sphere, plane, cube, cylinder, torus)
 //   figure NAME             a figure preset (fig05 ... fig13, spec_example)

@@ -4,6 +4,7 @@
 #include "explore/shape_editor.h"
 #include "geometry/mesh.h"
 #include "image/image.h"
+#include "io/message_text.h"
 #include "models/model_table.h"
 #include "scene/load.h"
 
@@ -185,6 +186,15 @@ void apply_light_preset(ExplorerState& state, LightPreset preset) {
     state.pending_label = "light preset";
     state.selected_light = 0;
     state.changed();
+}
+
+std::string valid_light_name(const std::string& typed) {
+    std::string kept;
+    for (char c : typed)
+        if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7F) kept += c;
+    if (kept.size() > 64) kept.resize(64);
+    while (!kept.empty() && !text::is_valid_utf8(kept)) kept.pop_back();  // a cut multi-byte character
+    return kept;
 }
 
 bool add_light(ExplorerState& state) {

@@ -118,6 +118,11 @@ void set_model(Material& material, const std::string& model_name);
 // Replaces the lights with a preset.
 void apply_light_preset(ExplorerState& state, LightPreset preset);
 
+// A light's name as the scene format allows it (docs/spec.md#7-scene-files:
+// 1 to 64 bytes of UTF-8 without control characters, or none): control
+// characters dropped, cut to 64 bytes without splitting a character.
+std::string valid_light_name(const std::string& typed);
+
 // Lights: add (a copy of the single-key light, up to kMaxExplorerLights) / remove.
 inline constexpr int kMaxExplorerLights = 8;
 bool add_light(ExplorerState& state);
