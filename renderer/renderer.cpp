@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 namespace m3055 {
@@ -48,6 +49,8 @@ struct Renderer::Impl {
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
     unsigned instance_buffer = 0, sphere_vao = 0;
     ShaderMode shader_mode = ShaderMode::specialized;
+    bool defer_compiles = false;         // set_defer_compiles
+    std::set<ProgramKey> deferred;       // specialized programs to build (compile_deferred)
     ChunkedDraws::Deadline deadline;  // set_deadline
     std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
@@ -95,6 +98,35 @@ struct Renderer::Impl {
     ~Impl() {
         gl.DeleteVertexArrays(1, &sphere_vao);
         gl.DeleteBuffers(1, &instance_buffer);
+    }
+
+    // The program for `key`; with deferral, a specialized one not built yet is
+    // noted and the general program of the same pass stands in (same pixels).
+    unsigned program(const ProgramKey& key, bool translucent_pass) {
+        if (!defer_compiles || shader_mode != ShaderMode::specialized || programs.contains(key))
+            return programs.get(key);
+        deferred.insert(key);
+        std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
+        if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
+        return programs.get({key.vertex, key.fragment, general});
+    }
+
+    void build_general_programs() {
+        for (const char* stage : {"sphere", "mesh"}) {
+            const std::string vertex = std::string("passes/") + stage + ".vert", fragment = std::string("passes/") + stage + ".frag";
+            std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
+            programs.get({vertex, fragment, general});
+            general.push_back("TRANSLUCENT_PASS");
+            programs.get({vertex, fragment, general});
+        }
+    }
+
+    bool compile_deferred() {
+        if (deferred.empty()) return false;
+        const ProgramKey key = *deferred.begin();
+        deferred.erase(deferred.begin());
+        programs.get(key);
+        return true;
     }
 
     void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
@@ -163,12 +195,12 @@ struct Renderer::Impl {
                      const LightUniforms& lights) {
         if (!spheres.opaque.empty()) {
             const auto defines = specialization_defines(shader_mode, spheres.opaque_objects, scene.lights);
-            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), spheres.opaque, frame,
+            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), spheres.opaque, frame,
                          lights);
         }
         if (!meshes.opaque_objects().empty()) {
             const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
-            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", defines}), frame, lights);
+            use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false), frame, lights);
             draw_meshes(frame, std::size_t(lights.count), nullptr);
         }
     }
@@ -199,9 +231,9 @@ struct Renderer::Impl {
                    (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
                 run.push_back(sorted[next_sphere++].second);
             if (!run.empty())
-                draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), run, frame, lights);
+                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, frame, lights);
             if (m == mesh_order.size()) break;
-            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}), frame, lights);
+            use_program(program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true), frame, lights);
             draw_meshes(frame, std::size_t(lights.count), &mesh_order[m]);
         }
         gl.Disable(GL_BLEND);
@@ -249,6 +281,11 @@ void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
 void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
     impl_->deadline = deadline;
 }
+void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }
+bool Renderer::defers_compiles() const { return impl_->defer_compiles; }
+bool Renderer::compile_deferred() { return impl_->compile_deferred(); }
+void Renderer::build_general_programs() { impl_->build_general_programs(); }
+std::size_t Renderer::deferred_programs() const { return impl_->deferred.size(); }
 std::size_t Renderer::compiled_programs() const { return impl_->programs.size(); }
 unsigned Renderer::display_texture() const { return impl_->targets.display_texture(); }
 int Renderer::width() const { return impl_->targets.width(); }

@@ -43,6 +43,20 @@ public:
     // in chunks (with a flush between, which bounds llvmpipe's memory).
     void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
 
+    // The explorer's "no stall on a new specialization": with deferral on, a
+    // render whose specialized program is not compiled yet draws with the
+    // general program (which gives the same pixels, byte for byte) and notes
+    // the specialized one; compile_deferred() builds one noted program (when
+    // the explorer is idle), after which renders use it. Off by default: the
+    // command line's renders are unchanged.
+    void set_defer_compiles(bool on);
+    bool defers_compiles() const;
+    bool compile_deferred();  // false when nothing was waiting
+    // Builds the general programs of every pass up front (at start-up), so
+    // that with deferral no render compiles anything.
+    void build_general_programs();
+    std::size_t deferred_programs() const;
+
     // Number of programs compiled so far (the cache's size).
     std::size_t compiled_programs() const;
 

@@ -270,8 +270,9 @@ Rgb8Image headless(const TempDir& dir, const std::vector<std::string>& extra = {
 
 // Window coordinates of widgets (see the top of the file).
 constexpr int kSizeSliderX = 157, kSizeSliderY = 353;  // Material: m (size)
-constexpr int kCompareHeaderX = 76, kCompareHeaderY = 759;  // A/B compare header
-constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 786;  // split: A | B (after the header opens)
+// split: A | B, with the sections above it closed and A/B compare open (the
+// script's `section`, as clicks on the headers would).
+constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 210;
 constexpr int kDisplayX = 1000, kDisplayY = 300;  // on the display
 constexpr int kRestX = 1485, kRestY = 930;  // the bottom strip's empty corner: no tooltip, no probe
 
@@ -345,12 +346,11 @@ TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
 
 TEST_F(ExplorerInput, SplitOnKeepsB) {
     // B set to metal_blinn with the split off (the script runs the same code as the combo).
-    test::write_text(dir_.file("b.txt"), "compare_model metal_blinn\n");
+    test::write_text(dir_.file("b.txt"), "compare_model metal_blinn\nsection Display closed\nsection Material closed\n"
+                                         "section Lights closed\nsection File closed\nsection A/B compare open\n");
     ASSERT_TRUE(start(1920, 1080, {"--script", dir_.file("b.txt")}));
     const Rgb8Image expected = headless(dir_);
     ASSERT_GT(find_magnified(app_->screen(dir_.path()), expected).scale, 0);
-    app_->click(kCompareHeaderX, kCompareHeaderY);
-    app_->screen(dir_.path());
     app_->click(kSplitCheckboxX, kSplitCheckboxY);
     app_->move(kRestX, kRestY);
     const Rgb8Image split = app_->screen(dir_.path());

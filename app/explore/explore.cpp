@@ -57,7 +57,11 @@ void take_screenshot(ExplorerState& state, Renderer& renderer) {
     const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
     state.screenshot_path.clear();
     try {
+        // The screenshot waits for the specialized program (as `m3055 render` uses).
+        const bool deferring = renderer.defers_compiles();
+        renderer.set_defer_compiles(false);
         renderer.render(state.scene);
+        renderer.set_defer_compiles(deferring);
         write_png(png, renderer.read_display());
         const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
         write_file_atomic(json, text.data(), text.size());
@@ -107,6 +111,13 @@ public:
         try {
             renderer_a_ = std::make_unique<Renderer>(gl);
             renderer_b_ = std::make_unique<Renderer>(gl);
+            // No stall on a new specialization: draw with the general program
+            // (the same pixels) and build the specialized one when idle.
+            if (!options.compile_at_once) {
+                renderer_a_->set_defer_compiles(true);
+                renderer_b_->set_defer_compiles(true);
+                renderer_a_->build_general_programs();  // start-up; B's when the split first shows it
+            }
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -147,6 +158,7 @@ public:
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         if (frame_needed() || script_busy) window_.poll();
         else if (script_ && script_->idling()) window_.wait(std::max(0.0, script_->idle_until() - window_.time()));
+        else if (deferred_programs() > 0) compile_when_idle();
         else window_.wait(-1.0);
         step_script();
     }
@@ -199,6 +211,23 @@ public:
     }
 
 private:
+    std::size_t deferred_programs() const {
+        return renderer_a_ ? renderer_a_->deferred_programs() + renderer_b_->deferred_programs() : 0;
+    }
+
+    // A specialized program waiting (Renderer::set_defer_compiles): after
+    // kIdleBeforeCompile s with no input, build one, between frames.
+    void compile_when_idle() {
+        constexpr double kIdleBeforeCompile = 0.12;
+        window_.wait(kIdleBeforeCompile);
+        if (frame_needed()) return;  // input came: that frame first
+        try {
+            if (!renderer_a_->compile_deferred()) renderer_b_->compile_deferred();
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+    }
+
     void step_script() {
         if (!script_ || script_->finished()) return;
         const bool was_idle = script_->idling();

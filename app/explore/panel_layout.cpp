@@ -17,6 +17,15 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 }
 
+// A section's header: open at first when `open_at_start`; a script's
+// `section NAME open|closed` opens or closes it as a click would.
+bool header(const ExplorerState& state, const char* label, bool open_at_start) {
+    const auto request = state.section_requests.find(label);
+    if (request != state.section_requests.end()) ImGui::SetNextItemOpen(request->second, ImGuiCond_Always);
+    else if (open_at_start) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    return ImGui::CollapsingHeader(label);
+}
+
 void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -33,17 +42,14 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
         ImGui::Separator();
     }
 
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Display")) display_section(state, info);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Material")) material_section(state);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Lights")) lights_section(state);
-    if (ImGui::CollapsingHeader("Objects and figure presets")) objects_section(state);
-    if (ImGui::CollapsingHeader("Camera")) camera_section(state);
-    if (ImGui::CollapsingHeader("A/B compare")) compare_section(state);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("File")) file_section(state);
+    if (header(state, "Display", true)) display_section(state, info);
+    if (header(state, "Material", true)) material_section(state);
+    if (header(state, "Lights", true)) lights_section(state);
+    if (header(state, "Objects and figure presets", false)) objects_section(state);
+    if (header(state, "Camera", false)) camera_section(state);
+    if (header(state, "A/B compare", false)) compare_section(state);
+    if (header(state, "File", true)) file_section(state);
+    state.section_requests.clear();
 
     ImGui::PopItemWidth();
     ImGui::End();

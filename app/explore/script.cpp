@@ -219,6 +219,14 @@ void light_name(Call& c) {  // the Lights panel's name field
     c.state.changed();
 }
 
+void section(Call& c) {  // a click on a side panel header: "section Lights closed"
+    const std::string rest = c.rest();
+    const auto space = rest.find_last_of(' ');
+    const std::string name = space == std::string::npos ? "" : rest.substr(0, space), how = rest.substr(space + 1);
+    if (name.empty() || (how != "open" && how != "closed")) throw std::runtime_error("section: NAME open|closed");
+    c.state.section_requests[name] = how == "open";
+}
+
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
@@ -282,7 +290,8 @@ const std::map<std::string, Handler>& commands() {
         {"undo", undo_command},     {"redo", redo_command},
         {"copy_b", copy_b},         {"plot_light", plot_light},
         {"plot_scale", plot_scale}, {"probe", probe},
-        {"click", click},           {"light_name", light_name},         {"print_state", print_state},
+        {"click", click},           {"light_name", light_name},
+        {"section", section},         {"print_state", print_state},
         {"screenshot_dir", screenshot_dir},
     };
     return table;

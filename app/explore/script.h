@@ -27,6 +27,7 @@
 //   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
 //                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
 //   click X Y               a click on display pixel (X, Y): selects the object there
+//   section NAME open|closed   open or close a side panel section (its header's click)
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
 //   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,6 +63,8 @@ struct ExplorerState {
     // --script's `probe X Y` / `click X Y` (display pixels): the frame loop
     // answers them once the scene is rendered.
     std::vector<std::pair<int, int>> probe_requests, pick_requests;
+    // --script's `section NAME open|closed`: the side panel's headers, next frame.
+    std::map<std::string, bool> section_requests;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;
