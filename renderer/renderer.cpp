@@ -10,6 +10,8 @@
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
+#include "scene/material.h"
+#include "scene/presets.h"
 
 #include <glm/geometric.hpp>
 
@@ -42,6 +44,36 @@ double far_to_near_key(const CameraFrame& frame, const Object& object) {
 
 }  // namespace
 
+namespace {
+// Every pass of the general programs: opaque and translucent, spheres and
+// meshes, directional, point and spot lights.
+Scene general_warm_up_scene() {
+    Scene scene = default_scene();
+    scene.display.width = 32;
+    scene.display.height = 20;
+    Object translucent = scene.objects[0];
+    translucent.material = Material::of("translucent");
+    translucent.center = {0.5, 0.0, 1.0};
+    scene.objects.push_back(translucent);
+    Object cube = scene.objects[0];
+    cube.shape = Shape::cube;
+    cube.size = 0.6;
+    cube.center = {-1.2, 0.0, 0.0};
+    scene.objects.push_back(cube);
+    cube.material = Material::of("translucent");
+    cube.center = {1.2, 0.0, 0.0};
+    scene.objects.push_back(cube);
+    Light point = scene.lights[0];
+    point.type = LightType::point;
+    point.position = {2.0, 2.0, 3.0};
+    scene.lights.push_back(point);
+    point.type = LightType::spot;
+    point.spot_direction = {-2.0, -2.0, -3.0};
+    scene.lights.push_back(point);
+    return scene;
+}
+}  // namespace
+
 struct Renderer::Impl {
     const GlApi& gl;
     ProgramCache programs;
@@ -50,7 +82,7 @@ struct Renderer::Impl {
     unsigned instance_buffer = 0, sphere_vao = 0;
     ShaderMode shader_mode = ShaderMode::specialized;
     bool defer_compiles = false;         // set_defer_compiles
-    std::set<ProgramKey> deferred;       // specialized programs to build (compile_deferred)
+    std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
     std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
@@ -109,24 +141,6 @@ struct Renderer::Impl {
         std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
         if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
         return programs.get({key.vertex, key.fragment, general});
-    }
-
-    void build_general_programs() {
-        for (const char* stage : {"sphere", "mesh"}) {
-            const std::string vertex = std::string("passes/") + stage + ".vert", fragment = std::string("passes/") + stage + ".frag";
-            std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
-            programs.get({vertex, fragment, general});
-            general.push_back("TRANSLUCENT_PASS");
-            programs.get({vertex, fragment, general});
-        }
-    }
-
-    bool compile_deferred() {
-        if (deferred.empty()) return false;
-        const ProgramKey key = *deferred.begin();
-        deferred.erase(deferred.begin());
-        programs.get(key);
-        return true;
     }
 
     void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
@@ -283,8 +297,30 @@ void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point>
 }
 void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }
 bool Renderer::defers_compiles() const { return impl_->defer_compiles; }
-bool Renderer::compile_deferred() { return impl_->compile_deferred(); }
-void Renderer::build_general_programs() { impl_->build_general_programs(); }
+void Renderer::render_specialized(const Scene& scene) {
+    const bool defer = impl_->defer_compiles;
+    impl_->defer_compiles = false;
+    try {
+        impl_->render(scene);
+    } catch (...) {
+        impl_->defer_compiles = defer;
+        throw;
+    }
+    impl_->defer_compiles = defer;
+    impl_->deferred.clear();
+}
+
+void Renderer::warm_up_general_programs() {
+    const ShaderMode mode = impl_->shader_mode;
+    impl_->shader_mode = ShaderMode::general;
+    try {
+        impl_->render(general_warm_up_scene());
+    } catch (...) {
+        impl_->shader_mode = mode;
+        throw;
+    }
+    impl_->shader_mode = mode;
+}
 std::size_t Renderer::deferred_programs() const { return impl_->deferred.size(); }
 std::size_t Renderer::compiled_programs() const { return impl_->programs.size(); }
 unsigned Renderer::display_texture() const { return impl_->targets.display_texture(); }

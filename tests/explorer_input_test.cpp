@@ -23,6 +23,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -197,6 +198,19 @@ public:
         return last;
     }
 
+    // Screens until `ok` holds for one (or `seconds` pass): for states the
+    // explorer must reach (its first frame, an undo), not for "nothing changed".
+    Rgb8Image wait_for(const std::string& dir, const std::function<bool(const Rgb8Image&)>& ok,
+                       double seconds = 60.0) const {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        Rgb8Image now;
+        do {
+            now = screen(dir);
+            if (ok(now)) break;
+        } while (std::chrono::steady_clock::now() < end);
+        return now;
+    }
+
 private:
     std::string display_;
     pid_t pid_ = -1;
@@ -303,8 +317,9 @@ protected:
 TEST_F(ExplorerInput, SliderDragThenCtrlZRestoresTheExactImage) {
     ASSERT_TRUE(start(1920, 1080));
     const Rgb8Image expected = headless(dir_);
-    const Rgb8Image before = app_->screen(dir_.path());
-    const Place at = find_magnified(before, expected);
+    Place at;
+    const Rgb8Image before =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
     ASSERT_GT(at.scale, 0) << "the display shows the headless render, magnified";
     const int w = expected.width * at.scale, h = expected.height * at.scale;
 
@@ -315,20 +330,27 @@ TEST_F(ExplorerInput, SliderDragThenCtrlZRestoresTheExactImage) {
     EXPECT_NE(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
 
     app_->xdo("key ctrl+z");
-    const Rgb8Image undone = app_->screen(dir_.path());
+    const Rgb8Image undone =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return shows_at(s, expected, at.x, at.y, at.scale); }, 20);
     EXPECT_TRUE(shows_at(undone, expected, at.x, at.y, at.scale)) << "Ctrl+Z: the exact image again";
     EXPECT_EQ(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
 
     app_->xdo("key ctrl+shift+z");  // redo: the whole drag again, as one step
-    EXPECT_EQ(differing_pixels(crop(app_->screen(dir_.path()), at.x, at.y, w, h), dragged), 0);
+    const Rgb8Image redone = app_->wait_for(
+        dir_.path(), [&](const Rgb8Image& s) { return differing_pixels(crop(s, at.x, at.y, w, h), dragged) == 0; }, 20);
+    EXPECT_EQ(differing_pixels(crop(redone, at.x, at.y, w, h), dragged), 0);
     app_->xdo("key ctrl+z");
-    EXPECT_TRUE(shows_at(app_->screen(dir_.path()), expected, at.x, at.y, at.scale)) << "one drag is one step";
+    EXPECT_TRUE(shows_at(app_->wait_for(dir_.path(),
+                                        [&](const Rgb8Image& s) { return shows_at(s, expected, at.x, at.y, at.scale); }, 20),
+                         expected, at.x, at.y, at.scale))
+        << "one drag is one step";
 }
 
 TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
     ASSERT_TRUE(start(1920, 1080));
     const Rgb8Image expected = headless(dir_);
-    const Place at = find_magnified(app_->screen(dir_.path()), expected);
+    Place at;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
     ASSERT_GT(at.scale, 0);
     const int w = expected.width * at.scale, h = expected.height * at.scale;
     app_->drag(kDisplayX, kDisplayY, kDisplayX + 80, kDisplayY + 30);  // an edit: orbit
@@ -350,11 +372,15 @@ TEST_F(ExplorerInput, SplitOnKeepsB) {
                                          "section Lights closed\nsection File closed\nsection A/B compare open\n");
     ASSERT_TRUE(start(1920, 1080, {"--script", dir_.file("b.txt")}));
     const Rgb8Image expected = headless(dir_);
-    ASSERT_GT(find_magnified(app_->screen(dir_.path()), expected).scale, 0);
+    Place start;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (start = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GT(start.scale, 0);
     app_->click(kSplitCheckboxX, kSplitCheckboxY);
     app_->move(kRestX, kRestY);
-    const Rgb8Image split = app_->screen(dir_.path());
-    const Place a = find_magnified(split, expected);
+    Place a;
+    const Rgb8Image split = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
+        return (a = find_magnified(s, expected)).scale > 0 && a.scale < start.scale;  // two panes: smaller
+    });
     ASSERT_GT(a.scale, 0) << "A is still the scene";
     const int w = expected.width * a.scale, h = expected.height * a.scale;
     const int bx = a.x + w + 8 * 1;  // kCompareGap (app/explore/display_view.h) at framebuffer scale 1
@@ -366,6 +392,8 @@ TEST_F(ExplorerInput, SplitOnKeepsB) {
 
 TEST_F(ExplorerInput, EscWithUnsavedEditsAsksAndDoesNotQuit) {
     ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image expected = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, expected).scale > 0; });
     app_->drag(kDisplayX, kDisplayY, kDisplayX + 80, kDisplayY);  // an edit: orbit
     app_->screen(dir_.path());
     ASSERT_NE(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
@@ -382,9 +410,10 @@ TEST_F(ExplorerInput, EscWithUnsavedEditsAsksAndDoesNotQuit) {
 TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
     ASSERT_TRUE(start(1280, 720));
     const Rgb8Image expected = headless(dir_);
-    const Rgb8Image screen = app_->screen(dir_.path());
+    Place at;
+    const Rgb8Image screen =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
     ASSERT_EQ(screen.width, 1280);
-    const Place at = find_magnified(screen, expected);
     EXPECT_GT(at.scale, 0) << "the whole 512 x 320 display, whole pixels, inside the 1280 x 720 screen";
 }
 

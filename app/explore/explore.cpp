@@ -116,7 +116,8 @@ public:
             if (!options.compile_at_once) {
                 renderer_a_->set_defer_compiles(true);
                 renderer_b_->set_defer_compiles(true);
-                renderer_a_->build_general_programs();  // start-up; B's when the split first shows it
+                renderer_a_->warm_up_general_programs();  // start-up, so no render compiles
+                renderer_b_->warm_up_general_programs();
             }
         } catch (const std::exception& e) {
             state_.error = e.what();
@@ -216,13 +217,16 @@ private:
     }
 
     // A specialized program waiting (Renderer::set_defer_compiles): after
-    // kIdleBeforeCompile s with no input, build one, between frames.
+    // kIdleBeforeCompile s with no input, draw the scene once more with it
+    // (the same pixels), between frames; later frames use it.
     void compile_when_idle() {
         constexpr double kIdleBeforeCompile = 0.12;
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
         try {
-            if (!renderer_a_->compile_deferred()) renderer_b_->compile_deferred();
+            if (renderer_a_->deferred_programs() > 0) renderer_a_->render_specialized(state_.scene);
+            else if (renderer_b_->deferred_programs() > 0) renderer_b_->render_specialized(compare_scene(state_));
+            gl_.Finish();
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
