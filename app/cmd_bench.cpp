@@ -20,6 +20,8 @@ void add_bench_command(CLI::App& app) {
     command->add_option("--scenes", options->bench.scenes,
                         "Folder with the paper's scenes (default: ./scenes, then scenes/ beside the build folder)");
     command->add_flag("--quick", options->bench.quick, "Few repetitions and a small batch: a smoke run, rough numbers");
+    command->add_flag("--latency", options->bench.latency_only,
+                      "Only the explorer latency section (issue 12): writes latency.md");
     command->add_flag("--replot", options->bench.replot,
                       "Measure nothing: redraw bench.gp and bench.png from the bench.csv in --out")
         ->excludes("--quick");

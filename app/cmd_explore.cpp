@@ -31,6 +31,9 @@ void add_explore_command(CLI::App& app) {
                         "Write a PNG of the whole window once the script is done");
     explore->add_option("--stats", options->stats_path,
                         "Write frame counts (total, and while idle) as JSON at exit");
+    explore->add_flag("--compile-at-once", options->compile_at_once,
+                      "Compile a new shader specialization before drawing (stalls; the default draws with the "
+                      "general program meanwhile, the same pixels)");
     explore->add_option("--window-size", [options](const CLI::results_t& r) {
                             options->window_width = std::stoi(r.at(0));
                             options->window_height = std::stoi(r.at(1));

@@ -10,11 +10,14 @@
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
+#include "scene/material.h"
+#include "scene/presets.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 namespace m3055 {
@@ -41,6 +44,36 @@ double far_to_near_key(const CameraFrame& frame, const Object& object) {
 
 }  // namespace
 
+namespace {
+// Every pass of the general programs: opaque and translucent, spheres and
+// meshes, directional, point and spot lights.
+Scene general_warm_up_scene() {
+    Scene scene = default_scene();
+    scene.display.width = 32;
+    scene.display.height = 20;
+    Object translucent = scene.objects[0];
+    translucent.material = Material::of("translucent");
+    translucent.center = {0.5, 0.0, 1.0};
+    scene.objects.push_back(translucent);
+    Object cube = scene.objects[0];
+    cube.shape = Shape::cube;
+    cube.size = 0.6;
+    cube.center = {-1.2, 0.0, 0.0};
+    scene.objects.push_back(cube);
+    cube.material = Material::of("translucent");
+    cube.center = {1.2, 0.0, 0.0};
+    scene.objects.push_back(cube);
+    Light point = scene.lights[0];
+    point.type = LightType::point;
+    point.position = {2.0, 2.0, 3.0};
+    scene.lights.push_back(point);
+    point.type = LightType::spot;
+    point.spot_direction = {-2.0, -2.0, -3.0};
+    scene.lights.push_back(point);
+    return scene;
+}
+}  // namespace
+
 struct Renderer::Impl {
     const GlApi& gl;
     ProgramCache programs;
@@ -48,6 +81,8 @@ struct Renderer::Impl {
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
     unsigned instance_buffer = 0, sphere_vao = 0;
     ShaderMode shader_mode = ShaderMode::specialized;
+    bool defer_compiles = false;         // set_defer_compiles
+    std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
     std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
@@ -95,6 +130,17 @@ struct Renderer::Impl {
     ~Impl() {
         gl.DeleteVertexArrays(1, &sphere_vao);
         gl.DeleteBuffers(1, &instance_buffer);
+    }
+
+    // The program for `key`; with deferral, a specialized one not built yet is
+    // noted and the general program of the same pass stands in (same pixels).
+    unsigned program(const ProgramKey& key, bool translucent_pass) {
+        if (!defer_compiles || shader_mode != ShaderMode::specialized || programs.contains(key))
+            return programs.get(key);
+        deferred.insert(key);
+        std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
+        if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
+        return programs.get({key.vertex, key.fragment, general});
     }
 
     void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
@@ -163,12 +209,12 @@ struct Renderer::Impl {
                      const LightUniforms& lights) {
         if (!spheres.opaque.empty()) {
             const auto defines = specialization_defines(shader_mode, spheres.opaque_objects, scene.lights);
-            draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), spheres.opaque, frame,
+            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), spheres.opaque, frame,
                          lights);
         }
         if (!meshes.opaque_objects().empty()) {
             const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
-            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", defines}), frame, lights);
+            use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false), frame, lights);
             draw_meshes(frame, std::size_t(lights.count), nullptr);
         }
     }
@@ -199,9 +245,9 @@ struct Renderer::Impl {
                    (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
                 run.push_back(sorted[next_sphere++].second);
             if (!run.empty())
-                draw_spheres(programs.get({"passes/sphere.vert", "passes/sphere.frag", defines}), run, frame, lights);
+                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, frame, lights);
             if (m == mesh_order.size()) break;
-            use_program(programs.get({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}), frame, lights);
+            use_program(program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true), frame, lights);
             draw_meshes(frame, std::size_t(lights.count), &mesh_order[m]);
         }
         gl.Disable(GL_BLEND);
@@ -249,6 +295,33 @@ void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
 void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
     impl_->deadline = deadline;
 }
+void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }
+bool Renderer::defers_compiles() const { return impl_->defer_compiles; }
+void Renderer::render_specialized(const Scene& scene) {
+    const bool defer = impl_->defer_compiles;
+    impl_->defer_compiles = false;
+    try {
+        impl_->render(scene);
+    } catch (...) {
+        impl_->defer_compiles = defer;
+        throw;
+    }
+    impl_->defer_compiles = defer;
+    impl_->deferred.clear();
+}
+
+void Renderer::warm_up_general_programs() {
+    const ShaderMode mode = impl_->shader_mode;
+    impl_->shader_mode = ShaderMode::general;
+    try {
+        impl_->render(general_warm_up_scene());
+    } catch (...) {
+        impl_->shader_mode = mode;
+        throw;
+    }
+    impl_->shader_mode = mode;
+}
+std::size_t Renderer::deferred_programs() const { return impl_->deferred.size(); }
 std::size_t Renderer::compiled_programs() const { return impl_->programs.size(); }
 unsigned Renderer::display_texture() const { return impl_->targets.display_texture(); }
 int Renderer::width() const { return impl_->targets.width(); }

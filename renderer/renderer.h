@@ -43,6 +43,23 @@ public:
     // in chunks (with a flush between, which bounds llvmpipe's memory).
     void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
 
+    // The explorer's "no stall on a new specialization": with deferral on, a
+    // render whose specialized program is not built yet draws with the
+    // general program (which gives the same pixels, byte for byte) and notes
+    // it; when the explorer is idle, render_specialized() draws the same scene
+    // again with its specialized programs (built then, and run once, as
+    // llvmpipe compiles a program's code at its first draw), so later renders
+    // use them. Off by default: the command line's renders are unchanged.
+    void set_defer_compiles(bool on);
+    bool defers_compiles() const;
+    std::size_t deferred_programs() const;  // noted since the last render_specialized
+    void render_specialized(const Scene& scene);
+    // At start-up: builds and runs the general programs of every pass (a small
+    // scene with opaque and translucent spheres and meshes, every light kind),
+    // so that with deferral no later render compiles anything. Leaves the
+    // display targets at that scene's size (the next render resizes them).
+    void warm_up_general_programs();
+
     // Number of programs compiled so far (the cache's size).
     std::size_t compiled_programs() const;
 

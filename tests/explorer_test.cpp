@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdlib>
 #include <regex>
 #include <set>
@@ -247,6 +248,136 @@ TEST_F(Explorer, BadStartingSceneIsAOneLineErrorNotACrash) {
     const ExplorerRun run = run_explorer(dir.path(), {"--scene", dir.file("bad.json")});
     EXPECT_NE(run.exit_code, 0);
     EXPECT_NE(run.err.find("bad.json"), std::string::npos) << run.err;
+}
+
+// Issue 12: undo/redo keeps at least 200 steps, each named after what it
+// changed; loads and presets are steps too.
+TEST_F(Explorer, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
+    TempDir dir;
+    std::string script = "figure fig05\nprint_state\n";
+    for (int i = 1; i <= 250; ++i) script += "set objects[0].material.m " + std::to_string(i) + "\n";
+    script += "print_state\n";
+    for (int i = 0; i < 210; ++i) script += "undo\n";
+    script += "save after_undo.json\nredo\nsave after_redo.json\nlight_preset three_point_white\nprint_state\nundo\n"
+              "save preset_undone.json\nfigure fig06\nundo\nprint_state\n";
+    test::write_text(dir.file("script.txt"), script);
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("undo=figure preset fig05\t"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("undo=objects[0].material.m\tredo=\tsteps=251"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("undo=light preset\t"), std::string::npos) << run.out;
+    auto m_of = [&](const std::string& file) {
+        return load_scene_file(dir.file(file)).objects[0].material.number("m");
+    };
+    EXPECT_EQ(m_of("after_undo.json"), 40.0) << "250 steps, 210 undone";
+    EXPECT_EQ(m_of("after_redo.json"), 41.0);
+    EXPECT_EQ(load_scene_file(dir.file("preset_undone.json")).lights.size(),
+              load_scene_file(dir.file("after_redo.json")).lights.size());
+    // The last undo took back the Fig. 6 preset: the scene is fig05 with m = 41 again.
+    EXPECT_NE(run.out.rfind("redo=figure preset fig06"), std::string::npos) << run.out;
+}
+
+// A number typed with unsaved edits does not replace the scene; Ctrl+digit
+// does, undoably. The title names the scene and marks unsaved edits.
+TEST_F(Explorer, DigitKeysDoNotReplaceAnEditedScene) {
+    TempDir dir;
+    test::write_text(dir.file("scene.json"), test::read_text(test::source_path("scenes/spec_example.json")));
+    std::string script = "print_state\nset objects[0].material.m 33\nprint_state\nkey 0\nkey 6\nprint_state\n"
+                         "key ctrl+2\nprint_state\nkey ctrl+z\nkey ctrl+s\nprint_state\n";
+    test::write_text(dir.file("script.txt"), script);
+    const ExplorerRun run =
+        run_explorer(dir.path(), {"--scene", dir.file("scene.json"), "--script", dir.file("script.txt"),
+                                  "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::string name = dir.file("scene.json");
+    std::istringstream lines(run.out);
+    std::vector<std::string> states;
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("state ", 0) == 0) states.push_back(line);
+    ASSERT_EQ(states.size(), 5u) << run.out;
+    EXPECT_EQ(states[0].find("state title=" + name + "\t"), 0u) << states[0];
+    EXPECT_EQ(states[1].find("state title=" + name + " * (unsaved edits)\t"), 0u) << states[1];
+    EXPECT_EQ(states[2], states[1]) << "0 and 6 typed with unsaved edits changed nothing";
+    EXPECT_EQ(states[3].find("state title=scenes/fig06.json\tundo=figure preset fig06"), 0u) << states[3];
+    // Ctrl+Z took the preset back, Ctrl+S wrote the scene to its own file.
+    EXPECT_EQ(states[4].find("state title=scene.json\t"), 0u) << states[4];
+    EXPECT_EQ(load_scene_file(name).objects[0].material.number("m"), 33.0);
+}
+
+// F12 writes the next free NAME-0001.png (+ JSON) in the chosen folder and
+// never overwrites; the PNG is what `m3055 render` writes for the JSON.
+TEST_F(Explorer, F12WritesTheNextFreeNumberedScreenshot) {
+    TempDir dir;
+    std::filesystem::create_directories(dir.file("shots"));
+    test::write_text(dir.file("shots/m3055-0001.png"), "not mine");
+    test::write_text(dir.file("script.txt"), "screenshot_dir shots\nkey f12\nset objects[0].material.m 3\nkey f12\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(test::read_text(dir.file("shots/m3055-0001.png")), "not mine");
+    for (const std::string n : {"0002", "0003"}) {
+        const std::string png = dir.file("shots/m3055-" + n + ".png"), json = dir.file("shots/m3055-" + n + ".json");
+        ASSERT_TRUE(test::file_exists(png) && test::file_exists(json)) << n;
+        const auto render = test::run_m3055({"render", "--scene", json, "--out", dir.file("r.png")});
+        ASSERT_EQ(render.exit_code, 0) << render.err;
+        EXPECT_EQ(test::read_text(png), test::read_text(dir.file("r.png"))) << n;
+    }
+    EXPECT_EQ(load_scene_file(dir.file("shots/m3055-0003.json")).objects[0].material.number("m"), 3.0);
+}
+
+// Issue 12: the pixel probe's numbers are the headless render's: the linear
+// value of the --raw PFM, the PNG value and its display level; a click picks
+// the object under it (the Material panel then edits it).
+TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "figure fig10\nprobe 256 160\nprobe 100 160\nprobe 3 3\n"
+                                             "click 420 160\nsave scene.json\nprint_state\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto render = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("r.png"),
+                                         "--raw", dir.file("r.pfm")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const RgbFloatImage raw = read_pfm(dir.file("r.pfm"));
+    const Rgb8Image png = read_png(dir.file("r.png"));
+    const Scene scene = load_scene_file(dir.file("scene.json"));
+    std::istringstream lines(run.out);
+    int probes = 0;
+    for (std::string line; std::getline(lines, line);) {
+        int x = 0, y = 0, level[3], value[3];
+        double linear[3];
+        if (std::sscanf(line.c_str(), "probe pixel (%d, %d)\tlinear %lf %lf %lf\tlevel %d %d %d\tpng %d %d %d", &x, &y,
+                        &linear[0], &linear[1], &linear[2], &level[0], &level[1], &level[2], &value[0], &value[1],
+                        &value[2]) != 11)
+            continue;
+        ++probes;
+        for (int c = 0; c < 3; ++c) {
+            const float expected = raw.pixels[(std::size_t(raw.height - 1 - y) * raw.width + x) * 3 + c];
+            EXPECT_NEAR(linear[c], expected, 1e-5 * std::max(1.0f, std::abs(expected))) << line;
+            EXPECT_EQ(value[c], png.pixels[(std::size_t(y) * png.width + x) * 3 + c]) << line;
+            // docs/spec.md#2-display: level = floor(c (2^bits - 1) + 0.5), clamped (no dithering here).
+            const int top = (1 << scene.display.bits) - 1;
+            EXPECT_EQ(level[c], std::clamp(int(std::floor(expected * top + 0.5)), 0, top)) << line;
+        }
+        if (x == 256) EXPECT_NE(line.find("object 1 (metal)"), std::string::npos) << line;
+        if (x == 3) EXPECT_NE(line.find("background"), std::string::npos) << line;
+        if (x != 3) EXPECT_NE(line.find("N.L "), std::string::npos) << line;
+    }
+    EXPECT_EQ(probes, 3) << run.out;
+    EXPECT_NE(run.out.find("\tselected=2\n"), std::string::npos) << "the click on the right sphere: " << run.out;
+}
+
+// Light names (the scene format's optional "name"): the three-point presets
+// name theirs, the Lights panel edits them, a save keeps them.
+TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "light_preset three_point_white\nlight_name 2 rim\tlight\n"
+                                             "light_name 1\nsave named.json\nload named.json\nsave again.json\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto doc = nlohmann::json::parse(test::read_text(dir.file("named.json")));
+    EXPECT_EQ(doc["lights"][0]["name"], "key");
+    EXPECT_FALSE(doc["lights"][1].contains("name")) << "an empty name is no name";
+    EXPECT_EQ(doc["lights"][2]["name"], "rimlight") << "the tab (a control character) is dropped";
+    EXPECT_EQ(test::read_text(dir.file("named.json")), test::read_text(dir.file("again.json")));
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "bench.h"
+#include "latency.h"
 #include "models/model_table.h"
 
 #include "mesh_renderer.h"
@@ -389,11 +390,7 @@ void plot(const std::string& out, const std::vector<PlotPoint>& points) {
 
 }  // namespace
 
-void run_bench(const BenchOptions& options) {
-    if (options.replot) {
-        plot(options.out, read_plot_points((fs::path(options.out) / "bench.csv").string()));
-        return;
-    }
+void run_figures_bench(const BenchOptions& options) {
     Bench bench(options, make_plan(options.quick));
     const BenchResults results = bench.run();
     fs::create_directories(options.out);
@@ -402,6 +399,19 @@ void run_bench(const BenchOptions& options) {
     write_file_atomic((fs::path(options.out) / "bench.csv").string(), csv.data(), csv.size());
     std::cout << md;
     plot(options.out, plot_points(results));
+}
+
+void run_bench(const BenchOptions& options) {
+    if (options.replot) {
+        plot(options.out, read_plot_points((fs::path(options.out) / "bench.csv").string()));
+        return;
+    }
+    if (!options.latency_only) run_figures_bench(options);
+    // The explorer latency section (issue 12): its own context, after the rest.
+    const std::string latency = explorer_latency(options.backend).markdown();
+    fs::create_directories(options.out);
+    write_file_atomic((fs::path(options.out) / "latency.md").string(), latency.data(), latency.size());
+    std::cout << "\n" << latency;
 }
 
 }  // namespace m3055::bench

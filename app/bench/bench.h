@@ -13,6 +13,7 @@ struct BenchOptions {
     bool quick = false;         // few repetitions, small batch, no 1920 x 1080: a smoke run
     Backend backend = Backend::automatic;
     bool replot = false;        // measure nothing: redraw out/bench.png from out/bench.csv
+    bool latency_only = false;  // only the explorer latency section (latency.md)
 };
 
 // ./scenes, then scenes/ beside the executable's folder (build/../scenes).

@@ -34,7 +34,7 @@ Layout layout_for(float width, float height, bool panels) {
 }
 
 int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect& area,
-                 float fb_scale) {
+                 float fb_scale, Rect* shown_a) {
     const int n = static_cast<int>(textures.size());
     const float gap = n > 1 ? kCompareGap : 0.0f;
     const float area_w = (area.w - gap * (n - 1)) * fb_scale / n, area_h = area.h * fb_scale;
@@ -47,6 +47,7 @@ int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect
     // Snap the corner to a framebuffer pixel so every dot covers whole pixels.
     float x = std::floor((area.x + (area.w - total) * 0.5f) * fb_scale) / fb_scale;
     const float y = std::floor((area.y + (area.h - ih) * 0.5f) * fb_scale) / fb_scale;
+    if (shown_a) *shown_a = {x, y, iw, ih};
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     const char* labels[2] = {"A: the scene (saved, screenshot)", "B: selected object in material B"};
     for (int i = 0; i < n; ++i) {

@@ -25,7 +25,9 @@ Layout layout_for(float width, float height, bool panels);
 // Draws the display texture(s) (A, and B in compare) centred in `area`,
 // magnified by the largest whole number of pixels that fits (shrunk, no longer
 // whole pixels, when even 1:1 does not fit). Returns that scale (0: shrunk).
-int draw_display(const std::vector<unsigned>& textures, int width, int height, const Rect& area, float fb_scale);
+// `shown_a`, when given, receives where A is drawn (ImGui units).
+int draw_display(const std::vector<unsigned>& textures, int width, int height, const Rect& area, float fb_scale,
+                 Rect* shown_a = nullptr);
 
 // The whole window as the user sees it (the back buffer, after ImGui has drawn).
 Rgb8Image read_window(const GlApi& gl, int width, int height);

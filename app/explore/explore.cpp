@@ -8,6 +8,7 @@
 #include "explore/imgui_layer.h"
 #include "explore/keys.h"
 #include "explore/panels.h"
+#include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/state.h"
 #include "explore/window.h"
@@ -23,6 +24,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <system_error>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -48,12 +51,23 @@ std::string json_beside(const std::string& png_path) {
 
 // The screenshot: exactly what `m3055 render` writes for the saved scene (the
 // same Renderer, the same read_display and write_png), and the scene beside it.
+// A script's `screenshot PATH` names the file; F12 takes the next free
+// NAME-0001.png in the chosen folder, so nothing is overwritten.
 void take_screenshot(ExplorerState& state, Renderer& renderer) {
-    const std::string& png = state.screenshot_path;
+    const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
+    state.screenshot_path.clear();
     try {
+        // The screenshot waits for the specialized program (as `m3055 render` uses).
+        const bool deferring = renderer.defers_compiles();
+        renderer.set_defer_compiles(false);
         renderer.render(state.scene);
+        renderer.set_defer_compiles(deferring);
         write_png(png, renderer.read_display());
-        if (save_scene(state, json_beside(png))) state.status = "screenshot " + png + " + " + json_beside(png);
+        const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
+        write_file_atomic(json, text.data(), text.size());
+        std::error_code ec;
+        const std::string full = std::filesystem::absolute(png, ec).string();
+        state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);
     } catch (const std::exception& e) {
         state.error = e.what();
     }
@@ -80,6 +94,7 @@ bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
     }
     try {
         set_scene(state, load_scene_file(options.scene_path), options.scene_path);
+        state.scene_file = options.scene_path;
         return true;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
@@ -96,6 +111,14 @@ public:
         try {
             renderer_a_ = std::make_unique<Renderer>(gl);
             renderer_b_ = std::make_unique<Renderer>(gl);
+            // No stall on a new specialization: draw with the general program
+            // (the same pixels) and build the specialized one when idle.
+            if (!options.compile_at_once) {
+                renderer_a_->set_defer_compiles(true);
+                renderer_b_->set_defer_compiles(true);
+                renderer_a_->warm_up_general_programs();  // start-up, so no render compiles
+                renderer_b_->warm_up_general_programs();
+            }
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -112,8 +135,14 @@ public:
     }
 
     // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
-    bool done() const {
-        if (window_.should_close() || state_.quit) return true;
+    bool done() {
+        if (state_.quit) return true;
+        if (window_.should_close()) {
+            if (!unsaved(state_)) return true;
+            window_.cancel_close();  // ask first (the unsaved-edits dialog)
+            state_.quit_requested = true;
+            window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+        }
         return script_ && script_->finished() && options_.exit_after_script && pending_capture_.empty() &&
                (options_.capture_window.empty() || window_captured_) && !frame_needed();
     }
@@ -130,13 +159,15 @@ public:
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         if (frame_needed() || script_busy) window_.poll();
         else if (script_ && script_->idling()) window_.wait(std::max(0.0, script_->idle_until() - window_.time()));
+        else if (deferred_programs() > 0) compile_when_idle();
         else window_.wait(-1.0);
         step_script();
     }
 
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
-        for (const std::string& path : window_.events().dropped) load_scene(state_, path);
+        for (const std::string& path : window_.events().dropped)
+            if (!load_scene(state_, path)) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
@@ -145,17 +176,23 @@ public:
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
         note_free_area(layout, fb_scale);
         apply_mouse();
+        if (state_.show_panels) draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+        draw_dialogs(state_);
+        // A finished edit (no widget held, no drag on the display) is one undo step.
+        if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
+        render_if_changed();
+        answer_probes();
+        // After the render: the strip's histogram and timings are this frame's.
         if (state_.show_panels) {
-            draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+            info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
         }
-        render_if_changed();
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
             take_screenshot(state_, *renderer_a_);
         }
         draw_displays(layout, fb_scale);
-        window_.set_title("M3055 material explorer - " + state_.scene_name);
+        window_.set_title("M3055 material explorer - " + title_name(state_));
         present();
         info_.frame_ms = milliseconds_since(frame_start);
         schedule_window_capture();
@@ -175,6 +212,26 @@ public:
     }
 
 private:
+    std::size_t deferred_programs() const {
+        return renderer_a_ ? renderer_a_->deferred_programs() + renderer_b_->deferred_programs() : 0;
+    }
+
+    // A specialized program waiting (Renderer::set_defer_compiles): after
+    // kIdleBeforeCompile s with no input, draw the scene once more with it
+    // (the same pixels), between frames; later frames use it.
+    void compile_when_idle() {
+        constexpr double kIdleBeforeCompile = 0.12;
+        window_.wait(kIdleBeforeCompile);
+        if (frame_needed()) return;  // input came: that frame first
+        try {
+            if (renderer_a_->deferred_programs() > 0) renderer_a_->render_specialized(state_.scene);
+            else if (renderer_b_->deferred_programs() > 0) renderer_b_->render_specialized(compare_scene(state_));
+            gl_.Finish();
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+    }
+
     void step_script() {
         if (!script_ || script_->finished()) return;
         const bool was_idle = script_->idling();
@@ -187,10 +244,14 @@ private:
         }
     }
 
-    // Shortcuts, unless the user is typing into a text field.
+    // Shortcuts, unless a widget or a dialog takes the keyboard (keys.h).
     void apply_keys() {
-        for (const WindowEvents::Key& k : window_.events().keys)
-            if (!ImGui::GetIO().WantTextInput) handle_shortcut(state_, k.key, k.mods);
+        const ImGuiIO& io = ImGui::GetIO();
+        KeyFocus focus;
+        focus.text_input = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
+        focus.wants_keyboard = io.WantCaptureKeyboard;
+        focus.item_active = ImGui::IsAnyItemActive();
+        for (const WindowEvents::Key& k : window_.events().keys) handle_shortcut(state_, k.key, k.mods, focus);
         window_.events().keys.clear();
     }
 
@@ -208,6 +269,46 @@ private:
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
             orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
         if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
+        // A click (no drag) picks the object under it.
+        if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !moved_while_down_) {
+            if (const auto pixel = Readouts::pixel_at(state_.scene, shown_a_, io.MousePos.x, io.MousePos.y))
+                readouts_.pick(state_, pixel->first, pixel->second);
+        }
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) moved_while_down_ = false;
+        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+            moved_while_down_ = true;
+    }
+
+    // --script's `probe X Y` and `click X Y`, answered once A is rendered.
+    void answer_probes() {
+        if (!renderer_a_) return;
+        for (const auto& [x, y] : state_.probe_requests) {
+            const PixelProbe probe = readouts_.probe(state_, *renderer_a_, x, y);
+            std::string line = probe.text();
+            for (char& c : line) c = c == '\n' ? '\t' : c;
+            std::printf("probe %s\n", line.c_str());
+        }
+        for (const auto& [x, y] : state_.pick_requests) readouts_.pick(state_, x, y);
+        if (!state_.probe_requests.empty()) std::fflush(stdout);
+        state_.probe_requests.clear();
+        state_.pick_requests.clear();
+    }
+
+    // Over A (not over a panel, not dragging): the probe as a tooltip, and the selection's outline.
+    void hover_readouts() {
+        const ImGuiIO& io = ImGui::GetIO();
+        // Only once the pointer has moved in the window: a pointer parked
+        // there (a script's capture under Xvfb) is no one hovering.
+        pointer_moved_ |= io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+        if (!renderer_a_ || !pointer_moved_ || io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+        const auto pixel = Readouts::pixel_at(state_.scene, shown_a_, io.MousePos.x, io.MousePos.y);
+        if (!pixel) return;
+        readouts_.draw_outline(state_, shown_a_, true);
+        const PixelProbe probe = readouts_.probe(state_, *renderer_a_, pixel->first, pixel->second);
+        ImGui::BeginTooltip();
+        ImGui::TextUnformatted(probe.text().c_str());
+        ImGui::TextDisabled("light %d; click selects the object", state_.plotted_light);
+        ImGui::EndTooltip();
     }
 
     // The scene (and B in compare) is rendered only when something changed.
@@ -217,6 +318,7 @@ private:
         const auto start = std::chrono::steady_clock::now();
         try {
             renderer_a_->render(state_.scene);
+            readouts_.invalidate();
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
@@ -230,7 +332,9 @@ private:
         if (renderer_a_) {
             std::vector<unsigned> textures = {renderer_a_->display_texture()};
             if (state_.compare) textures.push_back(renderer_b_->display_texture());
-            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale);
+            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
+                                       &shown_a_);
+            hover_readouts();
         }
         if (!state_.show_panels && !state_.error.empty())
             ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), state_.error.c_str());
@@ -278,6 +382,10 @@ private:
     const GlApi& gl_;
     FrameInfo& info_;
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
+    Readouts readouts_;      // probe, histogram, pick and outline of A
+    Rect shown_a_;           // where A was drawn last (ImGui units)
+    bool moved_while_down_ = false;  // the left button was dragged: no pick on release
+    bool pointer_moved_ = false;     // the pointer has moved in the window at least once
     std::string pending_capture_;  // write the window here after the next frame is drawn
     bool window_captured_ = false; // --capture-window is taken once
 };
@@ -288,6 +396,7 @@ int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
     if (!load_start_scene(state, options)) return 1;
+    start_history(state);
     std::optional<Script> script;
     if (!options.script_path.empty()) {
         try {

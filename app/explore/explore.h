@@ -13,6 +13,7 @@ struct ExploreOptions {
     std::string capture_window;  // --capture-window: PNG of the whole window when the script
                                  // ends (or after the first frames without a script)
     std::string stats_path;      // --stats: JSON with frame counts, written at exit
+    bool compile_at_once = false;  // --compile-at-once: no deferral (the stall before issue 12, to compare)
     int window_width = 1500;
     int window_height = 940;
 };

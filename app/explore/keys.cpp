@@ -10,16 +10,38 @@ namespace {
 // Number keys pick the figure presets in the paper's order; 0 is the spec example.
 const char* const kFigureKeys[10] = {"spec_example", "fig05", "fig06", "fig07", "fig08",
                                      "fig09",        "fig10", "fig11", "fig12", "fig13"};
+
+// 0-9 on the main row or the keypad -> 0..9; -1 for any other key.
+int digit_of(int key) {
+    if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return key - GLFW_KEY_0;
+    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) return key - GLFW_KEY_KP_0;
+    return -1;
+}
+
+bool control_shortcut(ExplorerState& state, int key, int mods) {
+    const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+    if (key == GLFW_KEY_Z) return shift ? redo(state) : undo(state);
+    if (key == GLFW_KEY_Y) return redo(state);
+    if (key == GLFW_KEY_S) return save_or_ask(state), true;
+    if (const int digit = digit_of(key); digit >= 0) return load_figure(state, kFigureKeys[digit]);
+    return false;
+}
 }  // namespace
 
-bool handle_shortcut(ExplorerState& state, int key, int mods) {
-    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
-    if (ctrl && key == GLFW_KEY_S) return save_scene(state, state.save_path), true;
-    if (ctrl) return false;
-    if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) return load_figure(state, kFigureKeys[key - GLFW_KEY_0]);
-    if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) return load_figure(state, kFigureKeys[key - GLFW_KEY_KP_0]);
+bool handle_shortcut(ExplorerState& state, int key, int mods, const KeyFocus& focus) {
+    if (focus.text_input) return false;  // the field's own editing (and its own Ctrl+Z)
+    if ((mods & GLFW_MOD_CONTROL) != 0) return control_shortcut(state, key, mods);
+    if (focus.wants_keyboard || focus.item_active) return false;
+    if (const int digit = digit_of(key); digit >= 0) {
+        if (unsaved(state)) {
+            state.status = "key " + std::to_string(digit) + " ignored: the scene has unsaved edits (Ctrl+" +
+                           std::to_string(digit) + " replaces it, undoably)";
+            return false;
+        }
+        return load_figure(state, kFigureKeys[digit]);
+    }
     switch (key) {
-        case GLFW_KEY_ESCAPE: state.quit = true; return true;
+        case GLFW_KEY_ESCAPE: state.quit_requested = true; return true;
         case GLFW_KEY_R: reset_camera(state); return true;
         case GLFW_KEY_F1: state.show_panels = !state.show_panels; return true;
         case GLFW_KEY_F12: state.screenshot_requested = true; return true;
@@ -32,8 +54,12 @@ bool parse_key_name(const std::string& name, int* key, int* mods) {
     for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     *mods = 0;
     if (lower.rfind("ctrl+", 0) == 0) {
-        *mods = GLFW_MOD_CONTROL;
+        *mods |= GLFW_MOD_CONTROL;
         lower = lower.substr(5);
+    }
+    if (lower.rfind("shift+", 0) == 0) {
+        *mods |= GLFW_MOD_SHIFT;
+        lower = lower.substr(6);
     }
     if (lower == "escape" || lower == "esc") return *key = GLFW_KEY_ESCAPE, true;
     if (lower == "f1") return *key = GLFW_KEY_F1, true;

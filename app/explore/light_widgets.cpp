@@ -61,7 +61,10 @@ bool light_sphere_widget(const char* id, dvec3* direction, float radius) {
 bool light_angle_sliders(dvec3* direction, double* azimuth_memory) {
     Angles angles = angles_from_direction(*direction, *azimuth_memory);
     bool changed = slider_double("azimuth", &angles.azimuth_deg, -180.0, 180.0, "%.1f deg");
+    tooltip("direction towards the light, turned about the scene's up axis, in [-180, 180] deg "
+            "(scene/light_direction.h)");
     changed |= slider_double("elevation", &angles.elevation_deg, -90.0, 90.0, "%.1f deg");
+    tooltip("direction towards the light, above (+) or below (-) the horizon, in [-90, 90] deg");
     *azimuth_memory = angles.azimuth_deg;
     if (changed) *direction = direction_from_angles(angles);
     return changed;

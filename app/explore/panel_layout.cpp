@@ -1,12 +1,14 @@
 // The two fixed windows and the order of the side panel's sections.
 #include "explore/panels.h"
 
-#include "explore/polar_plot.h"
 #include "explore/widgets.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
 
 namespace m3055::explore {
 
@@ -15,11 +17,21 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
                                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 }
 
+// A section's header: open at first when `open_at_start`; a script's
+// `section NAME open|closed` opens or closes it as a click would.
+bool header(const ExplorerState& state, const char* label, bool open_at_start) {
+    const auto request = state.section_requests.find(label);
+    if (request != state.section_requests.end()) ImGui::SetNextItemOpen(request->second, ImGuiCond_Always);
+    else if (open_at_start) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    return ImGui::CollapsingHeader(label);
+}
+
 void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
-    ImGui::Begin("M3055 material explorer", nullptr, kFixed);
+    ImGui::Begin("M3055 material explorer", nullptr, kFixed | ImGuiWindowFlags_MenuBar);
+    draw_menu_bar(state);
     ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
 
     if (!state.error.empty()) {
@@ -30,20 +42,37 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
         ImGui::Separator();
     }
 
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Display")) display_section(state, info);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Material")) material_section(state);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("Lights")) lights_section(state);
-    if (ImGui::CollapsingHeader("Objects and figure presets")) objects_section(state);
-    if (ImGui::CollapsingHeader("Camera")) camera_section(state);
-    if (ImGui::CollapsingHeader("A/B compare")) compare_section(state);
-    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader("File")) file_section(state);
+    if (header(state, "Display", true)) display_section(state, info);
+    if (header(state, "Material", true)) material_section(state);
+    if (header(state, "Lights", true)) lights_section(state);
+    if (header(state, "Objects and figure presets", false)) objects_section(state);
+    if (header(state, "Camera", false)) camera_section(state);
+    if (header(state, "A/B compare", false)) compare_section(state);
+    if (header(state, "File", true)) file_section(state);
+    state.section_requests.clear();
 
     ImGui::PopItemWidth();
     ImGui::End();
+}
+
+// Per channel, how many pixels show each of the 2^bits levels, and how many levels are used.
+void level_histogram_view(const LevelHistogram& h, int bits) {
+    const int levels = 1 << bits;
+    ImGui::Text("levels used: R %d, G %d, B %d of %d", h.used[0], h.used[1], h.used[2], levels);
+    const ImVec4 colours[3] = {ImVec4(1, 0.35f, 0.35f, 1), ImVec4(0.35f, 0.9f, 0.35f, 1), ImVec4(0.4f, 0.55f, 1, 1)};
+    for (int c = 0; c < 3; ++c) {
+        // Square roots: the background's level would flatten every other bar.
+        std::vector<float> bars(h.counts[std::size_t(c)].size());
+        for (std::size_t i = 0; i < bars.size(); ++i) bars[i] = std::sqrt(float(h.counts[std::size_t(c)][i]));
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colours[c]);
+        ImGui::PushID(c);
+        ImGui::PlotHistogram("##levels", bars.data(), static_cast<int>(bars.size()), 0, nullptr, 0.0f, FLT_MAX,
+                             ImVec2(std::min(ImGui::GetContentRegionAvail().x, 320.0f), 16.0f));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("pixels per display level (0 ... %d), square-root scale", levels - 1);
+        ImGui::PopID();
+        ImGui::PopStyleColor();
+    }
 }
 
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
@@ -53,21 +82,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Begin("Plane of incidence", nullptr, kFixed);
 
     ImGui::BeginGroup();
-    const Material* material = selected_material(state);
-    if (material && !state.scene.lights.empty()) {
-        state.selected_light =
-            std::clamp(state.selected_light, 0, static_cast<int>(state.scene.lights.size()) - 1);
-        const Light& light = state.scene.lights[state.selected_light];
-        const double incidence = incidence_towards_camera(light, state.scene.camera);
-        ImGui::Text("object %d (%s), light %d at %.1f deg to N", state.selected_object,
-                    material->model_name().c_str(), state.selected_light, incidence);
-        // The half-disc plot is twice as wide as it is tall; leave room for the title
-        // bar, the line above and the scale line under it.
-        const float plot_height = height - 6.0f * ImGui::GetTextLineHeightWithSpacing();
-        polar_plot(*material, light, std::min(incidence, 90.0), std::min(2.0f * plot_height, width * 0.5f));
-    } else {
-        ImGui::TextUnformatted("(no light: nothing to plot)");
-    }
+    plot_section(state, width, height);
     ImGui::EndGroup();
 
     ImGui::SameLine(0.0f, 24.0f);
@@ -78,14 +93,19 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::Text("frames drawn %ld, scene renders %ld", info.frames, info.renders);
     if (info.scale >= 1) ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
     else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "shrunk to fit the window (not whole pixels)");
-    ImGui::Separator();
-    ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
-    ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
-    ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
-    ImGui::Separator();
-    hint("Left: the CPU reference's red, green and blue value for every view direction in "
-         "the plane of L (yellow) and N; dashed: the mirror direction R.");
+    if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
+    // The last message (saved, screenshot, loaded: with the full path) where it is seen.
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+    ImGui::Separator();
+    hint("Left: the red, green and blue value (CPU reference) for every view direction in the plane of "
+         "the plotted light L (yellow) and N; dashed: the mirror direction R. Translucent objects: the "
+         "displayed blend over the background colour.");
+    if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
+        ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
+        ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
+        ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
+        ImGui::TreePop();
+    }
     ImGui::EndGroup();
     ImGui::End();
 }

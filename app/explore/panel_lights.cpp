@@ -5,6 +5,7 @@
 #include "explore/widgets.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <string>
 
@@ -12,14 +13,28 @@ namespace m3055::explore {
 
 namespace {
 
+const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term)";
+
+// The scene format's light "name": what is typed is kept to what the format allows (state.h).
+bool name_field(Light& light) {
+    std::string name = light.name;
+    if (!ImGui::InputText("name", &name)) return false;
+    light.name = valid_light_name(name);
+    return true;
+}
+
 bool light_editor(ExplorerState& state, int index) {
     Light& light = state.scene.lights[index];
-    bool changed = false;
+    bool changed = name_field(light);
+    tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
+            "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
     changed |= ImGui::Checkbox("enabled", &light.enabled);
     ImGui::SameLine();
     int type = static_cast<int>(light.type);
     ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("type", &type, "directional\0point\0spot\0")) {
+    const bool type_changed = ImGui::Combo("type", &type, "directional\0point\0spot\0");
+    tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation)");
+    if (type_changed) {
         light.type = static_cast<LightType>(type);
         changed = true;
     }
@@ -31,6 +46,7 @@ bool light_editor(ExplorerState& state, int index) {
         ImGui::PushItemWidth(150);
         changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
         changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        tooltip(kIntensityHelp);
         ImGui::PopItemWidth();
         ImGui::EndGroup();
     } else {
@@ -39,17 +55,24 @@ bool light_editor(ExplorerState& state, int index) {
             light.position = {p[0], p[1], p[2]};
             changed = true;
         }
+        tooltip("where the light is, in scene units (docs/spec.md section 7)");
         changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        tooltip(kIntensityHelp);
         changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0);
+        tooltip("constant term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (the lecture's equation, spec section 4)");
         changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0);
+        tooltip("linear term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
         changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0);
+        tooltip("quadratic term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
         if (light.type == LightType::spot) {
             ImGui::TextUnformatted("spot direction:");
             changed |= light_sphere_widget("##spot", &light.spot_direction, 30.0f);
             changed |= slider_double("spot exponent", &light.spot_exponent, 0.0, 1000.0, "%.1f", true);
+            tooltip("the spot's falloff (cos of the angle to its axis)^exponent, in [0, 1000] (spec section 4; logarithmic)");
         }
     }
     changed |= color_edit("colour c", &light.color);
+    tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
 
     // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
     const Material* material = selected_material(state);
@@ -81,7 +104,9 @@ void lights_section(ExplorerState& state) {
     auto& lights = state.scene.lights;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         ImGui::PushID(i);
-        const std::string title = "light " + std::to_string(i) + " (" + to_string(lights[i].type) +
+        const std::string title = "light " + std::to_string(i) +
+                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") + " (" +
+                                  to_string(lights[i].type) +
                                   (lights[i].enabled ? "" : ", off") + ")###light";
         ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
@@ -106,6 +131,7 @@ void lights_section(ExplorerState& state) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
+    if (!lights.empty() && light_plot(state)) state.changed();
 }
 
 }  // namespace m3055::explore

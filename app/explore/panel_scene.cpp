@@ -26,11 +26,15 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
         display.height = std::clamp(size[1], 1, kMaxDisplaySize);
         state.changed();
     }
+    tooltip("the display's size in dots, each in [1, 8192] (Enter applies; spec section 2)");
     if (ImGui::SliderInt("bits", &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) state.changed();
+    tooltip("bits per channel, in [1, 8]: the M3055 has 5 (32 levels; spec section 2)");
     ImGui::SameLine();
     ImGui::TextDisabled("%d levels", 1 << display.bits);
     if (ImGui::Checkbox("ordered dithering (4x4 Bayer)", &display.dither)) state.changed();
+    tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
     if (color_edit("background", &state.scene.background)) state.changed();
+    tooltip("the colour behind the objects, RGB in [0, 1]; translucent objects blend over it");
 }
 
 void objects_section(ExplorerState& state) {
@@ -103,23 +107,32 @@ void compare_section(ExplorerState& state) {
     if (ImGui::Checkbox("split: A | B side by side", &on)) set_compare(state, on);
     hint("A is the scene as edited above; B is the same scene with the selected object "
          "wearing material B (e.g. metal eq. 12 against metal_blinn eq. 15).");
-    if (ImGui::Button("B = copy of A")) {
-        if (const Material* a = selected_material(state)) state.material_b = *a;
-        state.changed();
-    }
+    if (ImGui::Button("B = copy of A")) copy_a_to_b(state);
+    tooltip("The only thing that copies A into B: switching the split on or off keeps B as it is.");
     ImGui::PushID("material_b");
     if (material_editor(state.material_b)) state.changed();
     ImGui::PopID();
 }
 
 void file_section(ExplorerState& state) {
-    ImGui::InputText("scene JSON", &state.save_path);
-    if (ImGui::Button("Save scene (Ctrl+S)")) save_scene(state, state.save_path);
-    ImGui::InputText("screenshot", &state.screenshot_path);
+    ImGui::Text("scene file: %s", state.scene_file.empty() ? "(none: Ctrl+S asks)" : state.scene_file.c_str());
+    if (ImGui::Button("Save (Ctrl+S)")) save_or_ask(state);
+    ImGui::SameLine();
+    if (ImGui::Button("Save as...")) state.save_as_requested = true;
+    ImGui::InputText("screenshot folder", &state.screenshot_dir);
+    tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");
     if (ImGui::Button("Screenshot PNG + JSON (F12)")) state.screenshot_requested = true;
-    ImGui::InputText("load", &state.load_path);
+    ImGui::SameLine();
+    ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
+    if (ImGui::InputText("load", &state.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) load_scene(state, state.load_path);
+    tooltip("A scene JSON file; Enter or the Load button opens it (undoable with Ctrl+Z).");
     ImGui::SameLine();
     if (ImGui::Button("Load")) load_scene(state, state.load_path);
+    if (!state.load_error.empty()) {  // here, beside the control the user just used
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
+        ImGui::TextWrapped("Could not load: %s", state.load_error.c_str());
+        ImGui::PopStyleColor();
+    }
     hint("Or drop a .json scene file onto the window.");
 }
 

@@ -2,6 +2,7 @@
 // edits ExplorerState through the shared actions in state.h.
 #pragma once
 
+#include "analysis/pixel_probe.h"
 #include "explore/state.h"
 
 #include <string>
@@ -20,6 +21,7 @@ struct FrameInfo {
     int free_width = 0;       // pixels available for the display (for the "modern" preset)
     int free_height = 0;
     int scale = 1;            // whole-pixel magnification of the display
+    const LevelHistogram* histogram = nullptr;  // of A's display, this frame
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.
@@ -29,6 +31,11 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
                        float width, float height);
 
+// The side panel's menu bar (File, Edit: undo/redo by name) and the modal
+// dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
+void draw_menu_bar(ExplorerState& state);
+void draw_dialogs(ExplorerState& state);
+
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);
 void material_section(ExplorerState& state);
@@ -37,5 +44,9 @@ void objects_section(ExplorerState& state);
 void camera_section(ExplorerState& state);
 void compare_section(ExplorerState& state);
 void file_section(ExplorerState& state);
+// The Lights panel's top-down light plot and key-to-fill ratio; true when a drag turned a light.
+bool light_plot(ExplorerState& state);
+// The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.
+void plot_section(ExplorerState& state, float width, float height);
 
 }  // namespace m3055::explore

@@ -1,19 +1,15 @@
-// A polar plot of a material's reflected value in the plane of incidence,
-// drawn with ImGui's draw list: the lobe shape beside the sphere.
+// A polar plot of a material's value in the plane of incidence, drawn with
+// ImGui's draw list from renderer/analysis/plane_curve.h (the numbers, tested
+// there): the lobe shape beside the display.
 #pragma once
 
-#include "scene/scene.h"
+#include "analysis/plane_curve.h"
 
 namespace m3055::explore {
 
-// Plots, for view directions V from -90 to +90 degrees about the normal N, the
-// colour the CPU reference (m3055::ref::shade_opaque) gives for `material` lit
-// by `light` alone as a directional light at `incidence_deg` from N (on the
-// left). One curve per channel. `size` is the plot's width in pixels.
-void polar_plot(const Material& material, const Light& light, double incidence_deg, float size);
-
-// The light's angle of incidence at the sphere point facing the camera
-// (N = V = towards the camera): acos(N . L), in degrees.
-double incidence_towards_camera(const Light& light, const Camera& camera);
+// Draws `curve` (one line per channel) with L on the left, N up, R dashed;
+// radius by `scale` with `top` at the outer circle; values beyond it are drawn
+// on the circle and the plot says so. `size` is the plot's width in pixels.
+void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float size);
 
 }  // namespace m3055::explore

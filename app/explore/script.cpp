@@ -187,6 +187,66 @@ void compare_model(Call& c) {
     c.state.changed();
 }
 
+void plot_light(Call& c) { c.state.plotted_light = c.light(); }  // the plot header's light combo
+void plot_scale(Call& c) {  // the plot header's scale combo, and its outer value (optional)
+    const std::string name = c.word();
+    if (name == "fixed") c.state.plot_scale = RadialScale::fixed;
+    else if (name == "model_max") c.state.plot_scale = RadialScale::model_max;
+    else if (name == "log") c.state.plot_scale = RadialScale::log;
+    else throw std::runtime_error("plot_scale: fixed, model_max or log");
+    double top = name == "log" ? 1000.0 : 1.0;
+    if (!c.rest().empty()) throw std::runtime_error("plot_scale: one word");
+    c.state.plot_top = top;
+}
+
+std::pair<int, int> display_pixel(Call& c) {
+    const int x = c.integer(), y = c.integer();
+    const Display& d = c.state.scene.display;
+    if (x < 0 || y < 0 || x >= d.width || y >= d.height)
+        throw std::runtime_error(c.command + ": (" + std::to_string(x) + ", " + std::to_string(y) +
+                                 ") is outside the " + std::to_string(d.width) + " x " + std::to_string(d.height) +
+                                 " display");
+    return {x, y};
+}
+// Hovering display pixel (x, y): prints "probe ..." once rendered.
+void probe(Call& c) { c.state.probe_requests.push_back(display_pixel(c)); }
+// A click on display pixel (x, y): selects the object there.
+void click(Call& c) { c.state.pick_requests.push_back(display_pixel(c)); }
+
+void light_name(Call& c) {  // the Lights panel's name field
+    const int index = c.light();
+    c.state.scene.lights[std::size_t(index)].name = valid_light_name(c.rest());
+    c.state.changed();
+}
+
+void section(Call& c) {  // a click on a side panel header: "section Lights closed"
+    const std::string rest = c.rest();
+    const auto space = rest.find_last_of(' ');
+    const std::string name = space == std::string::npos ? "" : rest.substr(0, space), how = rest.substr(space + 1);
+    if (name.empty() || (how != "open" && how != "closed")) throw std::runtime_error("section: NAME open|closed");
+    c.state.section_requests[name] = how == "open";
+}
+
+void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
+
+// ---- Undo/redo (Edit menu) -----------------------------------------------------------------
+
+void undo_command(Call& c) {
+    if (!undo(c.state)) throw std::runtime_error("undo: nothing to undo");
+}
+void redo_command(Call& c) {
+    if (!redo(c.state)) throw std::runtime_error("redo: nothing to redo");
+}
+// One line: the title's name, and what Undo and Redo would do.
+void print_state(Call& c) {
+    commit_edits(c.state);
+    const History& h = c.state.history;
+    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tselected=%d\n", title_name(c.state).c_str(),
+                h.can_undo() ? h.undo_label().c_str() : "", h.can_redo() ? h.redo_label().c_str() : "",
+                h.undo_steps(), c.state.selected_object);
+    std::fflush(stdout);
+}
+
 // ---- Keys, files and the script itself -----------------------------------------------------
 
 void key(Call& c) {
@@ -205,6 +265,7 @@ void save(Call& c) {
     if (!save_scene(c.state, c.word())) throw std::runtime_error(c.state.error);
 }
 
+void screenshot_dir(Call& c) { c.state.screenshot_dir = c.rest(); }
 void capture(Call& c) { c.script.capture_path = c.word(); }
 void idle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames); }
 void quit(Call& c) { c.state.quit = true; }
@@ -226,6 +287,12 @@ const std::map<std::string, Handler>& commands() {
         {"key", key},               {"screenshot", screenshot},
         {"save", save},             {"capture", capture},
         {"idle", idle},             {"quit", quit},
+        {"undo", undo_command},     {"redo", redo_command},
+        {"copy_b", copy_b},         {"plot_light", plot_light},
+        {"plot_scale", plot_scale}, {"probe", probe},
+        {"click", click},           {"light_name", light_name},
+        {"section", section},         {"print_state", print_state},
+        {"screenshot_dir", screenshot_dir},
     };
     return table;
 }

@@ -11,6 +11,7 @@
 //   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
 //   light_angles I AZ EL    light I's azimuth/elevation sliders (degrees)
 //   light_drag I X Y        a drag on light I's sphere widget, disc coordinates (y up)
+//   light_name I TEXT       light I's name field (TEXT may be empty: no name)
 //   add_light | remove_light I | add_object [SHAPE] | remove_object I
 //   shape NAME              the selected object's shape (sphere, plane, cube, cylinder, torus)
 //   figure NAME             a figure preset (fig05 ... fig13, spec_example)
@@ -18,13 +19,23 @@
 //   display m3055|modern    the Display panel's two preset buttons
 //   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
 //   projection perspective|orthographic
-//   compare on|off | compare_model NAME
-//   key NAME                a key press: escape, r, f1, f12, ctrl+s, 0-9
+//   compare on|off | compare_model NAME | copy_b (the "B = copy of A" button)
+//   key NAME                a key press: escape, r, f1, f12, ctrl+s, ctrl+z, ctrl+shift+z,
+//                           ctrl+y, 0-9, ctrl+0-9 (as with no widget active)
+//   plot_light I            the polar plot header's light
+//   plot_scale fixed|model_max|log   its radial scale
+//   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
+//                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
+//   click X Y               a click on display pixel (X, Y): selects the object there
+//   section NAME open|closed   open or close a side panel section (its header's click)
+//   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
+//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
+//   screenshot_dir DIR      the folder F12 writes NAME-0001.png ... into
 //   save PATH               scene JSON
 //   capture PATH            a PNG of the whole window after the next frame
 //   idle SECONDS            no input for that long; counts the frames drawn meanwhile
-//   quit
+//   quit                    quit at once (Esc asks first when there are unsaved edits)
 #pragma once
 
 #include "explore/state.h"

@@ -4,6 +4,7 @@
 #include "explore/shape_editor.h"
 #include "geometry/mesh.h"
 #include "image/image.h"
+#include "io/message_text.h"
 #include "models/model_table.h"
 #include "scene/load.h"
 
@@ -12,10 +13,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 namespace m3055::explore {
 
+Snapshot snapshot(const ExplorerState& state) {
+    return {state.scene, scene_to_json(state.scene), state.material_b, state.camera_home, state.scene_name,
+            state.scene_file};
+}
+
+void restore(ExplorerState& state, const Snapshot& s) {
+    state.scene = s.scene;
+    state.material_b = s.material_b;
+    state.camera_home = s.camera_home;
+    state.scene_name = s.scene_name;
+    state.scene_file = s.scene_file;
+    selected_material(state);  // clamps the selection
+    state.selected_light =
+        std::clamp(state.selected_light, 0, std::max(0, static_cast<int>(state.scene.lights.size()) - 1));
+    state.changed();
+}
+
+void start_history(ExplorerState& state) {
+    state.history.reset(snapshot(state));
+    state.pending_label.clear();
+    state.clean_doc = state.history.head().doc;
+    state.clean_file = state.scene_file;
+}
+
+bool commit_edits(ExplorerState& state) {
+    const bool added = state.history.commit(snapshot(state), state.pending_label);
+    state.pending_label.clear();
+    return added;
+}
+
+bool undo(ExplorerState& state) {
+    commit_edits(state);  // an edit still in progress is a step of its own
+    if (!state.history.can_undo()) return false;
+    state.status = "undid " + state.history.undo_label();
+    restore(state, state.history.undo());
+    return true;
+}
+
+bool redo(ExplorerState& state) {
+    commit_edits(state);
+    if (!state.history.can_redo()) return false;
+    state.status = "redid " + state.history.redo_label();
+    restore(state, state.history.redo());
+    return true;
+}
+
+bool unsaved(const ExplorerState& state) {
+    return state.scene_file != state.clean_file || scene_to_json(state.scene) != state.clean_doc;
+}
+
+std::string title_name(const ExplorerState& state) {
+    return state.scene_name + (unsaved(state) ? " * (unsaved edits)" : "");
+}
+
 void set_scene(ExplorerState& state, const Scene& scene, const std::string& name) {
+    state.pending_label = "load " + name;
     state.scene = scene;
     state.camera_home = scene.camera;
     state.scene_name = name;
@@ -28,11 +87,14 @@ void set_scene(ExplorerState& state, const Scene& scene, const std::string& name
 bool load_scene(ExplorerState& state, const std::string& path) {
     try {
         set_scene(state, load_scene_file(path), path);
+        state.scene_file = state.clean_file = path;
+        state.clean_doc = scene_to_json(state.scene);
         state.status = "loaded " + path;
         state.error.clear();
+        state.load_error.clear();
         return true;
     } catch (const std::exception& e) {  // SceneError names file and JSON path
-        state.error = e.what();
+        state.error = state.load_error = e.what();
         return false;
     }
 }
@@ -43,6 +105,12 @@ bool load_figure(ExplorerState& state, const std::string& name) {
         try {
             const std::string source = "scenes/" + name + ".json";
             set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
+            // Built in: nothing to lose yet (digit keys may flip through the
+            // figures); Ctrl+S asks where to save.
+            state.scene_file.clear();
+            state.clean_file.clear();
+            state.clean_doc = scene_to_json(state.scene);
+            state.pending_label = "figure preset " + name;
             state.status = "figure preset " + name;
             state.error.clear();
             return true;
@@ -59,11 +127,36 @@ bool save_scene(ExplorerState& state, const std::string& path) {
     try {
         const std::string text = scene_to_json(state.scene).dump(2) + "\n";
         write_file_atomic(path, text.data(), text.size());
-        state.status = "saved " + path;
+        state.scene_file = state.clean_file = path;
+        state.clean_doc = scene_to_json(state.scene);
+        state.scene_name = std::filesystem::path(path).filename().string();
+        commit_edits(state);  // the edits before the save are a step; the save itself is none
+        state.history.set_head_file(state.scene_name, path);
+        std::error_code ec;
+        const auto full = std::filesystem::absolute(path, ec);
+        state.status = "saved " + (ec ? path : full.string());
         return true;
     } catch (const std::exception& e) {
         state.error = e.what();
         return false;
+    }
+}
+
+void save_or_ask(ExplorerState& state) {
+    if (state.scene_file.empty()) state.save_as_requested = true;
+    else save_scene(state, state.scene_file);
+}
+
+std::string next_screenshot_path(const ExplorerState& state) {
+    namespace fs = std::filesystem;
+    const std::string stem = state.scene_file.empty() ? "m3055" : fs::path(state.scene_file).stem().string();
+    const fs::path dir = state.screenshot_dir.empty() ? fs::path(".") : fs::path(state.screenshot_dir);
+    for (int n = 1;; ++n) {
+        char number[16];
+        std::snprintf(number, sizeof number, "-%04d", n);
+        const fs::path png = dir / (stem + number + ".png"), json = dir / (stem + number + ".json");
+        std::error_code ec;
+        if (!fs::exists(png, ec) && !fs::exists(json, ec)) return png.string();
     }
 }
 
@@ -90,13 +183,24 @@ void set_model(Material& material, const std::string& model_name) {
 
 void apply_light_preset(ExplorerState& state, LightPreset preset) {
     state.scene.lights = light_preset(preset);
+    state.pending_label = "light preset";
     state.selected_light = 0;
     state.changed();
+}
+
+std::string valid_light_name(const std::string& typed) {
+    std::string kept;
+    for (char c : typed)
+        if (static_cast<unsigned char>(c) >= 0x20 && c != 0x7F) kept += c;
+    if (kept.size() > 64) kept.resize(64);
+    while (!kept.empty() && !text::is_valid_utf8(kept)) kept.pop_back();  // a cut multi-byte character
+    return kept;
 }
 
 bool add_light(ExplorerState& state) {
     if (static_cast<int>(state.scene.lights.size()) >= kMaxExplorerLights) return false;
     state.scene.lights.push_back(light_preset(LightPreset::single_key)[0]);
+    state.pending_label = "add light";
     state.selected_light = static_cast<int>(state.scene.lights.size()) - 1;
     state.changed();
     return true;
@@ -106,6 +210,7 @@ bool remove_light(ExplorerState& state, int index) {
     auto& lights = state.scene.lights;
     if (index < 0 || index >= static_cast<int>(lights.size())) return false;
     lights.erase(lights.begin() + index);
+    state.pending_label = "remove light " + std::to_string(index);
     state.selected_light = std::clamp(state.selected_light, 0, std::max(0, static_cast<int>(lights.size()) - 1));
     state.changed();
     return true;
@@ -133,6 +238,7 @@ void add_object(ExplorerState& state, Shape shape) {
     }
     set_shape(sphere, shape);
     state.scene.objects.push_back(sphere);
+    state.pending_label = std::string("add ") + to_string(shape);
     state.selected_object = static_cast<int>(state.scene.objects.size()) - 1;
     state.changed();
 }
@@ -141,6 +247,7 @@ bool remove_object(ExplorerState& state, int index) {
     auto& objects = state.scene.objects;
     if (objects.size() <= 1 || index < 0 || index >= static_cast<int>(objects.size())) return false;
     objects.erase(objects.begin() + index);
+    state.pending_label = "remove object " + std::to_string(index);
     selected_material(state);  // clamps the selection
     state.changed();
     return true;
@@ -212,10 +319,13 @@ void reset_camera(ExplorerState& state) {
 }
 
 void set_compare(ExplorerState& state, bool on) {
-    if (on && !state.compare) {
-        if (const Material* a = selected_material(state)) state.material_b = *a;
-    }
     state.compare = on;
+    state.changed();
+}
+
+void copy_a_to_b(ExplorerState& state) {
+    if (const Material* a = selected_material(state)) state.material_b = *a;
+    state.pending_label = "B = copy of A";
     state.changed();
 }
 

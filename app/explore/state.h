@@ -3,10 +3,16 @@
 // through the same code as a click). No ImGui and no GL in here.
 #pragma once
 
+#include "analysis/plane_curve.h"
+#include "explore/history.h"
 #include "scene/presets.h"
 #include "scene/scene.h"
 
+#include <nlohmann/json.hpp>
+
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace m3055::explore {
@@ -15,9 +21,16 @@ struct ExplorerState {
     Scene scene;             // what is rendered and saved
     Camera camera_home;      // R / "Reset" goes back to this (the loaded scene's camera)
     std::string scene_name = "default";  // shown in the title bar
+    std::string scene_file;  // the file the scene came from or was saved to ("" for presets): Ctrl+S
 
     int selected_object = 0;  // whose material the Material panel edits
-    int selected_light = 0;   // which light the polar plot uses
+    int selected_light = 0;   // the light last edited in the Lights panel
+    int plotted_light = 0;    // the polar plot's light: picked in the plot's own header only
+
+    // The polar plot's radial scale: chosen by the user and kept (model_max is
+    // recomputed only when the plotted material's model or the light changes).
+    RadialScale plot_scale = RadialScale::fixed;
+    double plot_top = 1.0;    // fixed: the outer circle; log: the outer circle's value
 
     // A/B compare: the selected object rendered a second time with material_b.
     bool compare = false;
@@ -25,19 +38,53 @@ struct ExplorerState {
 
     bool show_panels = true;  // F1
     bool screenshot_requested = false;  // button / F12: the frame loop owns the renderer
-    bool quit = false;        // Esc
+    bool quit = false;        // the frame loop ends
+    bool quit_requested = false;  // Esc / window close: asks first when there are unsaved edits
+    bool save_as_requested = false;  // Ctrl+S without a file of its own: the Save As dialog
+    bool quit_after_save = false;    // the unsaved-edits dialog's Save went to Save As
 
-    std::string save_path = "m3055-scene.json";        // Ctrl+S
-    std::string screenshot_path = "m3055-screenshot.png";
-    std::string load_path;                             // the File panel's text field
+    std::string save_path = "m3055-scene.json";        // Save As's proposal
+    std::string screenshot_path;  // set (script `screenshot PATH`): F12 writes exactly there once
+    std::string screenshot_dir = ".";  // F12: the next free NAME-0001.png in this folder
+    std::string load_path;             // the File panel's text field
+    std::string load_error;            // the last failed load, shown beside the Load control
+    bool show_load_error = false;      // and in a dialog (a drop, a key: wherever the user looks)
+
+    // Undo/redo: the steps, and the name of the action whose edit the next
+    // commit records ("" = named after the scene field that changed).
+    History history;
+    std::string pending_label;
+    nlohmann::json clean_doc;  // the scene as last loaded or saved (the title's unsaved mark)
+    std::string clean_file;
 
     std::string status;  // last message (saved ..., loaded ...)
     std::string error;   // last error, shown in red until dismissed
+
+    // --script's `probe X Y` / `click X Y` (display pixels): the frame loop
+    // answers them once the scene is rendered.
+    std::vector<std::pair<int, int>> probe_requests, pick_requests;
+    // --script's `section NAME open|closed`: the side panel's headers, next frame.
+    std::map<std::string, bool> section_requests;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;
     void changed() { scene_changed = true; }
 };
+
+// ---- Undo/redo (history.h) ----
+Snapshot snapshot(const ExplorerState& state);
+void restore(ExplorerState& state, const Snapshot& snapshot);
+// Forgets the history: `state` is the start (and counts as saved).
+void start_history(ExplorerState& state);
+// Records the edits since the last commit as one step (the frame loop calls it
+// when no widget or drag is in progress). Returns whether there was one.
+bool commit_edits(ExplorerState& state);
+bool undo(ExplorerState& state);
+bool redo(ExplorerState& state);
+// Edits not saved to (or loaded from) the scene's file.
+bool unsaved(const ExplorerState& state);
+// "NAME *" for the title bar.
+std::string title_name(const ExplorerState& state);
 
 // Starts from `scene` (camera_home = its camera, selections reset, compare B =
 // a copy of the first object's material).
@@ -51,8 +98,13 @@ bool load_scene(ExplorerState& state, const std::string& path);
 // stem: "fig05" ... "fig13", "spec_example". Unknown name -> error, false.
 bool load_figure(ExplorerState& state, const std::string& name);
 
-// Writes the scene JSON (atomically). Errors go to state.error.
+// Writes the scene JSON (atomically); it becomes the scene's own file. Errors go to state.error.
 bool save_scene(ExplorerState& state, const std::string& path);
+// Ctrl+S: to the scene's own file, or (none yet) asks for one (save_as_requested).
+void save_or_ask(ExplorerState& state);
+// F12: the next free DIR/NAME-0001.png (NAME: the scene file's stem, or "m3055"),
+// neither it nor its .json existing yet.
+std::string next_screenshot_path(const ExplorerState& state);
 
 // The selected object's material (the default scene always has one object).
 Material* selected_material(ExplorerState& state);
@@ -68,6 +120,11 @@ void set_model(Material& material, const std::string& model_name);
 
 // Replaces the lights with a preset.
 void apply_light_preset(ExplorerState& state, LightPreset preset);
+
+// A light's name as the scene format allows it (docs/spec.md#7-scene-files:
+// 1 to 64 bytes of UTF-8 without control characters, or none): control
+// characters dropped, cut to 64 bytes without splitting a character.
+std::string valid_light_name(const std::string& typed);
 
 // Lights: add (a copy of the single-key light, up to kMaxExplorerLights) / remove.
 inline constexpr int kMaxExplorerLights = 8;
@@ -90,9 +147,10 @@ void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels);
 void zoom_camera(ExplorerState& state, double wheel_steps);
 void reset_camera(ExplorerState& state);
 
-// Turns the A/B split on or off; switching it on starts B as a copy of the
-// selected object's material (then change B's model or sliders).
+// Turns the A/B split on or off; B stays what it was (only "B = copy of A",
+// copy_a_to_b, copies).
 void set_compare(ExplorerState& state, bool on);
+void copy_a_to_b(ExplorerState& state);
 
 // The second scene of the A/B compare: the same scene, the selected object
 // wearing material_b.

@@ -6,6 +6,7 @@
 #include "models/model_spec.h"
 #include "scene/scene.h"
 
+#include <string>
 #include <vector>
 
 namespace m3055::explore {
@@ -22,6 +23,9 @@ bool color_edit(const char* label, dvec3* color);
 // `form` (the model table's lobe form: its key, weight and value ranges).
 // `min_lobes` = 1 for a material (docs/spec.md#7-scene-files: 1 to 4), 0 for a light's own lobes.
 bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form, int min_lobes);
+
+// A tooltip for the last widget, shown while the mouse is over it.
+void tooltip(const std::string& text);
 
 // Grey explanatory text that wraps.
 void hint(const char* text);

@@ -2,6 +2,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace m3055::explore {
@@ -27,12 +28,20 @@ Window::Window(int width, int height, const char* title) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    // Within the monitor's work area (without task bars), so nothing is off screen.
+    int area_x = 0, area_y = 0, area_w = width, area_h = height;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(monitor, &area_x, &area_y, &area_w, &area_h);
+    if (area_w > 0 && area_h > 0) {
+        width = std::min(width, area_w);
+        height = std::min(height, area_h);
+    }
     window_ = glfwCreateWindow(width, height, title, nullptr, nullptr);
     if (!window_) {
         error_ = "m3055 explore: cannot create a window with an OpenGL 3.3 core context";
         return;
     }
     title_ = title;
+    if (area_w > 0 && area_h > 0) glfwSetWindowPos(window_, area_x + (area_w - width) / 2, area_y + (area_h - height) / 2);
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);  // vsync: a drag redraws at most once per refresh
     glfwSetWindowUserPointer(window_, &events_);
@@ -65,6 +74,8 @@ void Window::install_callbacks() {
 }
 
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
+
+void Window::cancel_close() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
 void Window::set_title(const std::string& title) {
     if (title == title_) return;

@@ -37,6 +37,7 @@ public:
     WindowEvents& events() { return events_; }
 
     bool should_close() const;
+    void cancel_close();  // the close button was pressed, but the user is asked first
     void set_title(const std::string& title);  // only touches GLFW when it changes
     void poll();                                // handle pending events, don't wait
     void wait(double seconds);                  // sleep until an event or `seconds` (< 0: forever)

@@ -78,6 +78,11 @@ ProgramCache::~ProgramCache() {
     for (auto& entry : programs_) gl_.DeleteProgram(entry.second);
 }
 
+bool ProgramCache::contains(ProgramKey key) const {
+    key.table_revision = model_table().revision();
+    return programs_.count(key) > 0;
+}
+
 unsigned ProgramCache::get(ProgramKey key) {
     key.table_revision = model_table().revision();
     auto found = programs_.find(key);

@@ -40,6 +40,8 @@ public:
     ProgramCache& operator=(const ProgramCache&) = delete;
 
     unsigned get(ProgramKey key);
+    // Whether get(key) would find the program built already (no compile).
+    bool contains(ProgramKey key) const;
     std::size_t size() const { return programs_.size(); }
 
 private:

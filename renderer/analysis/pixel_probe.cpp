@@ -1,0 +1,104 @@
+#include "analysis/pixel_probe.h"
+
+#include "geometry/mesh.h"
+#include "reference/reference.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace m3055 {
+
+ScenePicker::ScenePicker(const Scene& scene) : scene_(scene), meshes_(scene.objects.size()) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].shape != Shape::sphere)
+            meshes_[i] = std::make_unique<ref::MeshIntersector>(geometry::make_mesh(scene.objects[i]));
+}
+
+PixelHit ScenePicker::pick(int x, int y) const {
+    const ref::Ray ray = ref::camera_ray(scene_.camera, scene_.display.width, scene_.display.height, x, y);
+    PixelHit best;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < static_cast<int>(scene_.objects.size()); ++i) {
+        const Object& object = scene_.objects[std::size_t(i)];
+        double t = 0.0;
+        dvec3 N(0.0);
+        if (meshes_[std::size_t(i)]) {
+            const auto hits = meshes_[std::size_t(i)]->intersect_all(ray);
+            if (hits.empty()) continue;
+            t = hits.front().t;
+            N = hits.front().N;
+        } else if (!ref::intersect_sphere(ray, object.center, object.radius, &t)) {
+            continue;
+        }
+        if (!(t < nearest)) continue;  // ties: the lower index, as the reference renderer
+        nearest = t;
+        best.object = i;
+        best.P = ray.origin + t * ray.dir;
+        best.N = meshes_[std::size_t(i)] ? N : glm::normalize((best.P - object.center) / object.radius);
+        best.V = -ray.dir;
+    }
+    return best;
+}
+
+std::vector<int> ScenePicker::object_ids() const {
+    const int w = scene_.display.width, h = scene_.display.height;
+    std::vector<int> ids(std::size_t(w) * h, -1);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) ids[std::size_t(y) * w + x] = pick(x, y).object;
+    return ids;
+}
+
+int level_of_png(int png, int bits) {
+    const int top = (1 << bits) - 1;
+    return static_cast<int>(std::lround(png * double(top) / 255.0));
+}
+
+PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbFloatImage& raw,
+                       const Rgb8Image& display, int x, int y, int light) {
+    PixelProbe p;
+    p.x = x;
+    p.y = y;
+    const std::size_t raw_at = (std::size_t(raw.height - 1 - y) * raw.width + x) * 3;
+    const std::size_t png_at = (std::size_t(y) * display.width + x) * 3;
+    for (int c = 0; c < 3; ++c) {
+        p.linear[c] = raw.pixels[raw_at + c];
+        p.png[std::size_t(c)] = display.pixels[png_at + c];
+        p.level[std::size_t(c)] = level_of_png(p.png[std::size_t(c)], scene.display.bits);
+    }
+    const PixelHit hit = picker.pick(x, y);
+    p.object = hit.object;
+    if (hit.object < 0) return p;
+    p.model = scene.objects[std::size_t(hit.object)].material.model_name();
+    if (light < 0 || light >= static_cast<int>(scene.lights.size())) return p;
+    const dvec3 L = ref::sample_light(scene.lights[std::size_t(light)], hit.P).L;
+    p.lit = true;
+    p.NoL = glm::dot(hit.N, L);
+    p.RoV = glm::dot(2.0 * p.NoL * hit.N - L, hit.V);
+    return p;
+}
+
+std::string PixelProbe::text() const {
+    char buffer[512];
+    int n = std::snprintf(buffer, sizeof buffer,
+                          "pixel (%d, %d)\nlinear %.6g %.6g %.6g\nlevel %d %d %d\npng %d %d %d\n", x, y, linear.r,
+                          linear.g, linear.b, level[0], level[1], level[2], png[0], png[1], png[2]);
+    if (object < 0) n += std::snprintf(buffer + n, sizeof buffer - n, "background");
+    else n += std::snprintf(buffer + n, sizeof buffer - n, "object %d (%s)", object, model.c_str());
+    if (lit) std::snprintf(buffer + n, sizeof buffer - n, "\nN.L %.4f  R.V %.4f", NoL, RoV);
+    return buffer;
+}
+
+LevelHistogram level_histogram(const Rgb8Image& display, int bits) {
+    LevelHistogram h;
+    for (auto& c : h.counts) c.assign(std::size_t(1) << bits, 0);
+    for (std::size_t i = 0; i + 2 < display.pixels.size(); i += 3)
+        for (int c = 0; c < 3; ++c) ++h.counts[std::size_t(c)][std::size_t(level_of_png(display.pixels[i + c], bits))];
+    for (int c = 0; c < 3; ++c)
+        for (long count : h.counts[std::size_t(c)]) h.used[std::size_t(c)] += count > 0;
+    return h;
+}
+
+}  // namespace m3055

@@ -1,0 +1,427 @@
+// The explorer with real input: an X server of its own (Xvfb), real mouse and
+// keyboard events (xdotool, through XTEST as a user's), and what the screen
+// shows (ImageMagick's import). Issue 12's checks: a slider drag then Ctrl+Z
+// gives back the exact image, "0.6" typed with no field active changes
+// nothing, ticking the A/B split keeps B, Esc with unsaved edits does not
+// quit, and at 1280 x 720 the whole display is on screen.
+//
+// Widget positions: the side panel's layout is fixed (app/explore/display_view.cpp
+// layout_for, panel_layout.cpp); the positions below are in window
+// coordinates for the default 1500 x 940 window and the spec example. Every
+// test first checks that its action changed what it should, so a moved
+// widget fails the test instead of passing it vacuously.
+#include "image/image.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#ifndef M3055_BINARY
+#define M3055_BINARY "m3055"
+#endif
+
+namespace m3055 {
+namespace {
+
+using test::TempDir;
+
+bool on_path(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "/usr/bin:/bin");
+    for (std::string dir; std::getline(dirs, dir, ':');)
+        if (access((dir + "/" + program).c_str(), X_OK) == 0) return true;
+    return false;
+}
+
+void sleep_ms(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+
+// Ends a child: SIGTERM, then SIGKILL if it has not gone after 5 s.
+void stop_child(pid_t pid) {
+    if (pid <= 0) return;
+    kill(pid, SIGTERM);
+    for (int i = 0; i < 50; ++i) {
+        if (waitpid(pid, nullptr, WNOHANG) == pid) return;
+        sleep_ms(100);
+    }
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+}
+
+// An X server of its own: Xvfb picks a free display number (-displayfd).
+class XServer {
+public:
+    XServer(int width, int height) {
+        int fds[2];
+        if (pipe(fds) != 0) return;
+        pid_ = fork();
+        if (pid_ == 0) {
+            close(fds[0]);
+            const int null = open("/dev/null", O_WRONLY);
+            dup2(null, 1);
+            dup2(null, 2);
+            const std::string fd = std::to_string(fds[1]), screen = std::to_string(width) + "x" +
+                                                                     std::to_string(height) + "x24";
+            execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", screen.c_str(), "-nolisten", "tcp",
+                   static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        std::string number;
+        pollfd p{fds[0], POLLIN, 0};
+        char c = 0;
+        while (poll(&p, 1, 60000) > 0 && read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+        close(fds[0]);
+        if (!number.empty()) display_ = ":" + number;
+    }
+    ~XServer() { stop_child(pid_); }
+    const std::string& display() const { return display_; }  // "" when it did not start
+
+private:
+    pid_t pid_ = -1;
+    std::string display_;
+};
+
+// `m3055 explore ARGS` on `display`, in `cwd`.
+class RunningExplorer {
+public:
+    RunningExplorer(const std::string& display, const std::string& cwd, const std::vector<std::string>& args)
+        : display_(display) {
+        pid_ = fork();
+        if (pid_ == 0) {
+            if (chdir(cwd.c_str()) != 0) _exit(127);
+            setenv("DISPLAY", display.c_str(), 1);
+            const int log = open("explore.log", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            dup2(log, 1);
+            dup2(log, 2);
+            std::vector<std::string> all = {M3055_BINARY, "explore"};
+            all.insert(all.end(), args.begin(), args.end());
+            std::vector<char*> argv;
+            for (std::string& a : all) argv.push_back(a.data());
+            argv.push_back(nullptr);
+            execv(M3055_BINARY, argv.data());
+            _exit(127);
+        }
+    }
+    ~RunningExplorer() { stop_child(pid_); }
+
+    bool running() { return pid_ > 0 && waitpid(pid_, &status_, WNOHANG) == 0; }
+    // Waits up to `seconds` for the process to end; its exit code, or -1 when it did not.
+    int wait_exit(double seconds) {
+        for (int i = 0; i < seconds * 10; ++i) {
+            if (waitpid(pid_, &status_, WNOHANG) == pid_) {
+                pid_ = -1;
+                return WIFEXITED(status_) ? WEXITSTATUS(status_) : 128;
+            }
+            sleep_ms(100);
+        }
+        return -1;
+    }
+
+    // xdotool ARGS on this display; its exit status.
+    int xdo(const std::string& args) const {
+        return std::system(("DISPLAY=" + display_ + " timeout 60 xdotool " + args + " >/dev/null 2>&1").c_str());
+    }
+    std::string window_name() const {
+        const std::string cmd = "DISPLAY=" + display_ + " timeout 60 xdotool search --name 'M3055 material' getwindowname";
+        std::string out;
+        if (FILE* p = popen(cmd.c_str(), "r")) {
+            char buffer[512];
+            while (std::fgets(buffer, sizeof buffer, p)) out += buffer;
+            pclose(p);
+        }
+        return out;
+    }
+    // Waits for the window to be mapped, then notes where it is.
+    bool wait_for_window() {
+        if (xdo("search --sync --onlyvisible --name 'M3055 material'") != 0) return false;
+        const std::string cmd = "DISPLAY=" + display_ +
+                                " timeout 60 xdotool search --onlyvisible --name 'M3055 material' getwindowgeometry --shell";
+        std::string out;
+        if (FILE* p = popen(cmd.c_str(), "r")) {
+            char buffer[256];
+            while (std::fgets(buffer, sizeof buffer, p)) out += buffer;
+            pclose(p);
+        }
+        std::sscanf(out.c_str() + out.find("X="), "X=%d", &x_);
+        std::sscanf(out.c_str() + out.find("Y="), "Y=%d", &y_);
+        xdo("search --onlyvisible --name 'M3055 material' windowfocus");  // no window manager: give it the keys
+        return true;
+    }
+    // Mouse to window coordinates (x, y).
+    void move(int x, int y) const { xdo("mousemove " + std::to_string(x_ + x) + " " + std::to_string(y_ + y)); }
+    void click(int x, int y) const {
+        move(x, y);
+        sleep_ms(150);
+        xdo("click 1");
+    }
+    // A drag with the left button, in a few steps (ImGui sees the button held).
+    void drag(int x0, int y0, int x1, int y1) const {
+        move(x0, y0);
+        sleep_ms(200);
+        xdo("mousedown 1");
+        for (int i = 1; i <= 5; ++i) {
+            sleep_ms(80);
+            move(x0 + (x1 - x0) * i / 5, y0 + (y1 - y0) * i / 5);
+        }
+        sleep_ms(200);
+        xdo("mouseup 1");
+    }
+
+    // The whole screen, once two grabs in a row are equal (the explorer has settled).
+    Rgb8Image screen(const std::string& dir) const {
+        Rgb8Image last;
+        for (int i = 0; i < 40; ++i) {
+            sleep_ms(250);
+            const std::string file = dir + "/screen.png";
+            std::system(("DISPLAY=" + display_ + " timeout 60 import -window root " + file + " 2>/dev/null").c_str());
+            Rgb8Image now;
+            try {
+                now = read_png(file);
+            } catch (const std::exception&) {
+                continue;
+            }
+            if (now.pixels == last.pixels && !now.pixels.empty()) return now;
+            last = now;
+        }
+        return last;
+    }
+
+    // Screens until `ok` holds for one (or `seconds` pass): for states the
+    // explorer must reach (its first frame, an undo), not for "nothing changed".
+    Rgb8Image wait_for(const std::string& dir, const std::function<bool(const Rgb8Image&)>& ok,
+                       double seconds = 60.0) const {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        Rgb8Image now;
+        do {
+            now = screen(dir);
+            if (ok(now)) break;
+        } while (std::chrono::steady_clock::now() < end);
+        return now;
+    }
+
+private:
+    std::string display_;
+    pid_t pid_ = -1;
+    int status_ = 0;
+    int x_ = 0, y_ = 0;
+};
+
+struct Place {
+    int x = -1, y = -1, scale = 0;
+};
+
+// `image` magnified `scale` times, nearest-neighbour, at (x, y) in `screen`?
+bool shows_at(const Rgb8Image& screen, const Rgb8Image& image, int x, int y, int scale) {
+    if (x < 0 || y < 0 || x + image.width * scale > screen.width || y + image.height * scale > screen.height)
+        return false;
+    for (int sy = 0; sy < image.height * scale; ++sy) {
+        for (int sx = 0; sx < image.width * scale; ++sx) {
+            const std::uint8_t* a = &screen.pixels[(std::size_t(y + sy) * screen.width + x + sx) * 3];
+            const std::uint8_t* b = &image.pixels[(std::size_t(sy / scale) * image.width + sx / scale) * 3];
+            if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2]) return false;
+        }
+    }
+    return true;
+}
+
+// Where `image` appears in `screen`, magnified by a whole number (largest first).
+Place find_magnified(const Rgb8Image& screen, const Rgb8Image& image) {
+    // Anchor: the image's centre pixel must be where the candidate puts it.
+    const int cx = image.width / 2, cy = image.height / 2;
+    const std::uint8_t* anchor = &image.pixels[(std::size_t(cy) * image.width + cx) * 3];
+    for (int scale = 4; scale >= 1; --scale) {
+        for (int y = 0; y + image.height * scale <= screen.height; ++y) {
+            for (int x = 0; x + image.width * scale <= screen.width; ++x) {
+                const std::uint8_t* p = &screen.pixels[(std::size_t(y + cy * scale) * screen.width + x + cx * scale) * 3];
+                if (p[0] != anchor[0] || p[1] != anchor[1] || p[2] != anchor[2]) continue;
+                if (shows_at(screen, image, x, y, scale)) return {x, y, scale};
+            }
+        }
+    }
+    return {};
+}
+
+// The w x h region at (x, y) of a screen grab.
+Rgb8Image crop(const Rgb8Image& screen, int x, int y, int w, int h) {
+    Rgb8Image out;
+    out.width = w;
+    out.height = h;
+    for (int row = 0; row < h; ++row) {
+        const auto* start = &screen.pixels[(std::size_t(y + row) * screen.width + x) * 3];
+        out.pixels.insert(out.pixels.end(), start, start + std::size_t(w) * 3);
+    }
+    return out;
+}
+
+long differing_pixels(const Rgb8Image& a, const Rgb8Image& b) {
+    long n = 0;
+    for (std::size_t i = 0; i + 2 < a.pixels.size() && i + 2 < b.pixels.size(); i += 3)
+        n += a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2];
+    return n;
+}
+
+// The spec example, rendered headless: what the display must show.
+Rgb8Image headless(const TempDir& dir, const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = {"render", "--scene", test::source_path("scenes/spec_example.json"), "--out",
+                                     dir.file("headless.png")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const test::RunResult run = test::run_m3055(args);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return read_png(dir.file("headless.png"));
+}
+
+// Window coordinates of widgets (see the top of the file).
+constexpr int kSizeSliderX = 157, kSizeSliderY = 353;  // Material: m (size)
+// split: A | B, with the sections above it closed and A/B compare open (the
+// script's `section`, as clicks on the headers would).
+constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 210;
+constexpr int kDisplayX = 1000, kDisplayY = 300;  // on the display
+constexpr int kRestX = 1485, kRestY = 930;  // the bottom strip's empty corner: no tooltip, no probe
+
+class ExplorerInput : public ::testing::Test {
+protected:
+    void SetUp() override {
+        for (const char* tool : {"Xvfb", "xdotool", "import"})
+            if (!on_path(tool)) GTEST_SKIP() << tool << " is not installed (scripts/setup installs it)";
+    }
+    // The spec example in a window on a screen of its own; false when anything failed.
+    bool start(int screen_w, int screen_h, const std::vector<std::string>& extra = {}) {
+        x_ = std::make_unique<XServer>(screen_w, screen_h);
+        if (x_->display().empty()) return false;
+        std::vector<std::string> args = {"--scene", test::source_path("scenes/spec_example.json")};
+        args.insert(args.end(), extra.begin(), extra.end());
+        app_ = std::make_unique<RunningExplorer>(x_->display(), dir_.path(), args);
+        return app_->wait_for_window();
+    }
+    void TearDown() override {
+        app_.reset();
+        x_.reset();
+    }
+    TempDir dir_;
+    std::unique_ptr<XServer> x_;
+    std::unique_ptr<RunningExplorer> app_;
+};
+
+TEST_F(ExplorerInput, SliderDragThenCtrlZRestoresTheExactImage) {
+    ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image expected = headless(dir_);
+    Place at;
+    const Rgb8Image before =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GT(at.scale, 0) << "the display shows the headless render, magnified";
+    const int w = expected.width * at.scale, h = expected.height * at.scale;
+
+    app_->drag(kSizeSliderX, kSizeSliderY, kSizeSliderX + 60, kSizeSliderY);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image dragged = crop(app_->screen(dir_.path()), at.x, at.y, w, h);
+    ASSERT_GT(differing_pixels(dragged, crop(before, at.x, at.y, w, h)), 1000) << "the drag changed m";
+    EXPECT_NE(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
+
+    app_->xdo("key ctrl+z");
+    const Rgb8Image undone =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return shows_at(s, expected, at.x, at.y, at.scale); }, 20);
+    EXPECT_TRUE(shows_at(undone, expected, at.x, at.y, at.scale)) << "Ctrl+Z: the exact image again";
+    EXPECT_EQ(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
+
+    app_->xdo("key ctrl+shift+z");  // redo: the whole drag again, as one step
+    const Rgb8Image redone = app_->wait_for(
+        dir_.path(), [&](const Rgb8Image& s) { return differing_pixels(crop(s, at.x, at.y, w, h), dragged) == 0; }, 20);
+    EXPECT_EQ(differing_pixels(crop(redone, at.x, at.y, w, h), dragged), 0);
+    app_->xdo("key ctrl+z");
+    EXPECT_TRUE(shows_at(app_->wait_for(dir_.path(),
+                                        [&](const Rgb8Image& s) { return shows_at(s, expected, at.x, at.y, at.scale); }, 20),
+                         expected, at.x, at.y, at.scale))
+        << "one drag is one step";
+}
+
+TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
+    ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image expected = headless(dir_);
+    Place at;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GT(at.scale, 0);
+    const int w = expected.width * at.scale, h = expected.height * at.scale;
+    app_->drag(kDisplayX, kDisplayY, kDisplayX + 80, kDisplayY + 30);  // an edit: orbit
+    app_->move(kRestX, kRestY);  // off the display, over no widget
+    const Rgb8Image after_orbit = app_->screen(dir_.path());
+    ASSERT_FALSE(shows_at(after_orbit, expected, at.x, at.y, at.scale)) << "the orbit moved the camera";
+    const Rgb8Image edited = crop(after_orbit, at.x, at.y, w, h);
+    const std::string title = app_->window_name();
+
+    app_->xdo("type --delay 120 0.6");
+    EXPECT_EQ(differing_pixels(crop(app_->screen(dir_.path()), at.x, at.y, w, h), edited), 0);
+    EXPECT_EQ(app_->window_name(), title) << "no figure preset replaced the scene";
+    EXPECT_TRUE(app_->running());
+}
+
+TEST_F(ExplorerInput, SplitOnKeepsB) {
+    // B set to metal_blinn with the split off (the script runs the same code as the combo).
+    test::write_text(dir_.file("b.txt"), "compare_model metal_blinn\nsection Display closed\nsection Material closed\n"
+                                         "section Lights closed\nsection File closed\nsection A/B compare open\n");
+    ASSERT_TRUE(start(1920, 1080, {"--script", dir_.file("b.txt")}));
+    const Rgb8Image expected = headless(dir_);
+    Place start;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (start = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GT(start.scale, 0);
+    app_->click(kSplitCheckboxX, kSplitCheckboxY);
+    app_->move(kRestX, kRestY);
+    Place a;
+    const Rgb8Image split = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
+        return (a = find_magnified(s, expected)).scale > 0 && a.scale < start.scale;  // two panes: smaller
+    });
+    ASSERT_GT(a.scale, 0) << "A is still the scene";
+    const int w = expected.width * a.scale, h = expected.height * a.scale;
+    const int bx = a.x + w + 8 * 1;  // kCompareGap (app/explore/display_view.h) at framebuffer scale 1
+    ASSERT_LE(bx + w, split.width) << "the split shows two panes";
+    EXPECT_GT(differing_pixels(crop(split, bx, a.y, w, h), crop(split, a.x, a.y, w, h)), 1000)
+        << "B (metal_blinn) differs from A: the split did not copy A into B";
+    EXPECT_TRUE(app_->running());
+}
+
+TEST_F(ExplorerInput, EscWithUnsavedEditsAsksAndDoesNotQuit) {
+    ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image expected = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, expected).scale > 0; });
+    app_->drag(kDisplayX, kDisplayY, kDisplayX + 80, kDisplayY);  // an edit: orbit
+    app_->screen(dir_.path());
+    ASSERT_NE(app_->window_name().find("unsaved"), std::string::npos) << app_->window_name();
+    app_->xdo("key Escape");
+    EXPECT_EQ(app_->wait_exit(3.0), -1) << "Esc quit with unsaved edits";
+    app_->xdo("key Escape");  // cancels the dialog
+    EXPECT_EQ(app_->wait_exit(2.0), -1) << "cancel keeps the explorer";
+    app_->xdo("key ctrl+z");  // back to the file's scene: nothing unsaved, Esc quits
+    // Under load a frame can take seconds: wait for the title to drop its mark.
+    bool saved_state = false;
+    for (int i = 0; i < 120 && !saved_state; ++i) {
+        sleep_ms(250);
+        saved_state = app_->window_name().find("unsaved") == std::string::npos;
+    }
+    ASSERT_TRUE(saved_state) << "Ctrl+Z after Cancel: " << app_->window_name();
+    app_->xdo("key Escape");
+    EXPECT_EQ(app_->wait_exit(30.0), 0) << "Esc without unsaved edits quits";
+}
+
+TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
+    ASSERT_TRUE(start(1280, 720));
+    const Rgb8Image expected = headless(dir_);
+    Place at;
+    const Rgb8Image screen =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
+    ASSERT_EQ(screen.width, 1280);
+    EXPECT_GT(at.scale, 0) << "the whole 512 x 320 display, whole pixels, inside the 1280 x 720 screen";
+}
+
+}  // namespace
+}  // namespace m3055
