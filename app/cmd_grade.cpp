@@ -7,6 +7,7 @@
 // assignment, unusable reference or output folder); 2: usage.
 #include "capture.h"
 #include "commands.h"
+#include "scene/json_brdf.h"
 #include "interrupt.h"
 #include "progress.h"
 
@@ -24,6 +25,7 @@ namespace {
 struct GradeOptions {
     std::string assignment, submissions, out, shard = "1/1", gradescope, backend = "auto";
     std::vector<std::string> merge;
+    bool allow_brdf = false;
 };
 
 void print_grade(const grading::Grade& grade) {
@@ -79,7 +81,11 @@ void add_grade_command(CLI::App& app) {
     command->add_option("--gradescope", options->gradescope, "Also write a Gradescope-style results.json here");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->add_flag("--allow-brdf", options->allow_brdf,
+                      "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
     command->callback([options]() {
+        // A .brdf file is code: students' scenes run it only when the teacher asks.
+        scene_json::set_brdf_files_allowed(options->allow_brdf);
         // SIGINT, SIGTERM, SIGHUP: temporaries removed, images already graded kept,
         // no tables (they are written last), one line.
         const InterruptGuard interrupt([](int signal) {

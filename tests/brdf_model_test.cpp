@@ -229,7 +229,7 @@ TEST(BrdfCli, RenderAcceptsTheFileAndBatchOnlyWithAllowBrdf) {
     test::write_text(dir.file("m.json"), R"([{"scene": "s.json", "out": "b.png"}])");
     const test::RunResult refused = test::run_m3055({"batch", dir.file("m.json")});
     EXPECT_EQ(refused.exit_code, 1);
-    EXPECT_NE(refused.err.find("objects[0].material.file: a .brdf file is code: m3055 batch runs it only with "
+    EXPECT_NE(refused.err.find("objects[0].material.file: a .brdf file is code: m3055 batch and grade run it only with "
                                "--allow-brdf"),
               std::string::npos)
         << refused.err;

@@ -40,6 +40,26 @@ bool have_program(const std::string& name) {
     return std::system(("command -v " + name + " >/dev/null 2>&1").c_str()) == 0;
 }
 
+// NAME/scene.json whose first object's material is the project's own Lambert .brdf.
+void write_brdf_submission(const std::string& folder) {
+    fs::create_directories(folder);
+    fs::copy_file(source_path("tests/data/brdf/lambert.brdf"), folder + "/lambert.brdf");
+    json scene = read_json(kSubmissions + "/alice.json");
+    scene["objects"][0]["material"] = {{"model", "brdf"}, {"file", "lambert.brdf"}};
+    write_text(folder + "/scene.json", scene.dump());
+}
+
+TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
+    TempDir dir;
+    write_brdf_submission(dir.file("subs/zoe"));
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out"), "--allow-brdf"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    ASSERT_TRUE(s.count("zoe"));
+    EXPECT_TRUE(s.at("zoe")["broken"].get<std::string>().empty()) << s.at("zoe")["broken"];
+    EXPECT_TRUE(file_exists(dir.file("out/zoe.png")));
+}
+
 TEST(Grade, WorkedAssignmentScores) {
     TempDir out;
     const RunResult run = run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path(), "--gradescope",
@@ -79,6 +99,7 @@ TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
     fs::resize_file(subs + "/large.json", std::uintmax_t(17) << 20);  // over the 16 MiB limit
     ASSERT_EQ(mkfifo((subs + "/fifo.json").c_str(), 0600), 0);
     write_stalling_scene(subs + "/slow.json");  // 100 000 spheres under many lights
+    write_brdf_submission(subs + "/brdfcode");      // code, and grade was not given --allow-brdf
     json assignment = read_json(kAssignment);
     assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
     assignment["time_budget"] = 2;
@@ -93,6 +114,7 @@ TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
         {"fifo", "a FIFO"},
         {"nofile", "nofile/scene.json: missing"},
         {"slow", "over its time budget"},
+        {"brdfcode", "a .brdf file is code: m3055 batch and grade run it only with --allow-brdf"},
     };
     for (const auto& [name, reason] : reasons) {
         ASSERT_TRUE(s.count(name)) << name;

@@ -64,7 +64,7 @@ Material read_brdf_material(const Node& node) {
     node.check_keys({"model", "file", "params", "axis"});
     const Node file_node = node.required("file");
     if (!file_node.value().is_string()) file_node.fail("must be the path of a .brdf file");
-    if (!g_allowed) file_node.fail("a .brdf file is code: m3055 batch runs it only with --allow-brdf");
+    if (!g_allowed) file_node.fail("a .brdf file is code: m3055 batch and grade run it only with --allow-brdf");
     const BrdfModel* model = nullptr;
     try {
         model = &load_brdf_model(resolve(file_node.value().get<std::string>()));
