@@ -1,6 +1,6 @@
-#include "bench/latency.h"
+#include "latency.h"
 
-#include "bench/timing.h"
+#include "timing.h"
 #include "models/model_table.h"
 #include "renderer.h"
 #include "scene/material.h"
