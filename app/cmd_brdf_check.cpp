@@ -96,7 +96,7 @@ bool print(const BrdfTarget& target, const Report& r, bool require_conserving) {
         << " values; max f " << number(r.grid.max_value) << first_bad(target, r) << " |\n"
         << "| exactly grazing view (N.V = 0, a silhouette's limit; not counted above) | "
         << (r.grid.grazing_nonfinite ? "warning" : "finite") << " | " << r.grid.grazing_nonfinite << " NaN/Inf |\n"
-        << "| reciprocity: max \\|f(L,V) - f(V,L)\\| / max(f) | "
+        << "| reciprocity: max \\|f(L,V) - f(V,L)\\| / max(\\|f(L,V)\\|, \\|f(V,L)\\|) | "
         << (r.grid.max_reciprocity <= 1e-3 ? "reciprocal" : "NOT reciprocal") << " | "
         << number(r.grid.max_reciprocity) << " |\n"
         << "| max directional albedo (defaults; " << kMuCells * kAlbedoPhiCells << " incident samples, views 0-89 deg) | "
