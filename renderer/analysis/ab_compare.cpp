@@ -1,0 +1,58 @@
+#include "analysis/ab_compare.h"
+
+#include "analysis/pixel_probe.h"
+#include "grading/level_compare.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace m3055 {
+
+namespace {
+void check_same_size(const Rgb8Image& a, const Rgb8Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw grading::CompareError("sizes differ: A is " + std::to_string(a.width) + " x " +
+                                    std::to_string(a.height) + ", B is " + std::to_string(b.width) + " x " +
+                                    std::to_string(b.height));
+}
+}  // namespace
+
+LevelDifference level_difference(const Rgb8Image& a, const Rgb8Image& b, int bits) {
+    const grading::Comparison c =
+        grading::compare_levels(grading::levels_from_png(a, bits), grading::levels_from_png(b, bits));
+    return {c.pixels, c.pixels - c.same_pixels};
+}
+
+int auto_difference_scale(const Rgb8Image& a, const Rgb8Image& b) {
+    check_same_size(a, b);
+    int largest = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) largest = std::max(largest, std::abs(a.pixels[i] - b.pixels[i]));
+    return largest == 0 ? 1 : std::clamp(255 / largest, 1, kMaxDifferenceScale);
+}
+
+Rgb8Image scaled_difference(const Rgb8Image& a, const Rgb8Image& b, int scale) {
+    check_same_size(a, b);
+    scale = std::clamp(scale, 1, kMaxDifferenceScale);
+    Rgb8Image out{a.width, a.height, std::vector<std::uint8_t>(a.pixels.size())};
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        out.pixels[i] = std::uint8_t(std::min(255, std::abs(a.pixels[i] - b.pixels[i]) * scale));
+    return out;
+}
+
+RowProfile row_profile(const Rgb8Image& display, int bits, int row) {
+    if (row < 0 || row >= display.height)
+        throw std::out_of_range("row " + std::to_string(row) + " is outside the " + std::to_string(display.height) +
+                                "-row display");
+    RowProfile profile;
+    profile.row = row;
+    profile.bits = bits;
+    for (auto& channel : profile.levels) channel.resize(std::size_t(display.width));
+    const std::uint8_t* p = display.pixels.data() + std::size_t(row) * display.width * 3;
+    for (int x = 0; x < display.width; ++x)
+        for (std::size_t c = 0; c < 3; ++c) profile.levels[c][std::size_t(x)] = level_of_png(p[3 * x + c], bits);
+    return profile;
+}
+
+}  // namespace m3055
