@@ -100,6 +100,7 @@ void lights_section(ExplorerState& state) {
         if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
             apply_light_preset(state, preset);
         }
+        tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
     }
     auto& lights = state.scene.lights;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
@@ -113,6 +114,7 @@ void lights_section(ExplorerState& state) {
         if (ImGui::IsItemClicked()) state.selected_light = i;
         ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
         const bool removed = ImGui::SmallButton("remove");
+        tooltip("Removes this light (undoable).");
         if (open) {
             if (!removed && light_editor(state, i)) {
                 state.selected_light = i;
@@ -128,6 +130,7 @@ void lights_section(ExplorerState& state) {
     }
     ImGui::BeginDisabled(static_cast<int>(lights.size()) >= kMaxExplorerLights);
     if (ImGui::Button("+ add light")) add_light(state);
+    tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
