@@ -59,7 +59,7 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
 // Per channel, how many pixels show each of the 2^bits levels, and how many levels are used.
 void level_histogram_view(const LevelHistogram& h, int bits) {
     const int levels = 1 << bits;
-    ImGui::Text("levels used: R %d, G %d, B %d of %d", h.used[0], h.used[1], h.used[2], levels);
+    ImGui::TextWrapped("levels used: R %d, G %d, B %d of %d", h.used[0], h.used[1], h.used[2], levels);
     const ImVec4 colours[3] = {ImVec4(1, 0.35f, 0.35f, 1), ImVec4(0.35f, 0.9f, 0.35f, 1), ImVec4(0.4f, 0.55f, 1, 1)};
     for (int c = 0; c < 3; ++c) {
         // Square roots: the background's level would flatten every other bar.
@@ -80,10 +80,13 @@ void level_histogram_view(const LevelHistogram& h, int bits) {
 // level histogram, the last message; scrolls on its own when the strip is low.
 void stats_column(const ExplorerState& state, const FrameInfo& info) {
     const Display& d = state.scene.display;
-    ImGui::Text("render %.1f ms, frame %.1f ms", info.render_ms, info.frame_ms);
-    ImGui::Text("%d x %d, %d bits; %ld frames, %ld renders", d.width, d.height, d.bits, info.frames, info.renders);
-    if (info.scale >= 1) ImGui::Text("shown at %d x (whole pixels, nearest)", info.scale);
-    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "shrunk to fit (not whole pixels)");
+    // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
+    ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
+    ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
+    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, shown %d x", d.width, d.height, d.bits, info.scale);
+    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, shrunk", d.width, d.height, d.bits);
+    tooltip("The display's size and bits, and its magnification: whole pixels, nearest-neighbour; shrunk (not "
+            "whole pixels) when even 1:1 does not fit.");
     if (!info.compare_count.empty()) {
         ImGui::TextWrapped("A/B: %s", info.compare_count.c_str());
         tooltip("Pixels of B whose display level differs from A's in any channel (the count `m3055 compare` "
@@ -108,7 +111,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Plane of incidence", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const ImVec2 room = ImGui::GetContentRegionAvail();
-    const float gap = 16.0f, stats_w = std::clamp(room.x * 0.3f, 230.0f, 330.0f);
+    const float gap = 16.0f, stats_w = std::clamp(room.x * 0.28f, 220.0f, 330.0f);
     const float plots_w = std::max(200.0f, room.x - stats_w - 2.0f * gap);
 
     ImGui::BeginGroup();  // at least the width of its header's three controls

@@ -48,7 +48,7 @@ void profile_plot(const RowProfile* profile, float width, float height) {
         return;
     }
     const int top = (1 << profile->bits) - 1;
-    ImGui::Text("scanline: row %d of A (last hovered), levels 0-%d", profile->row, top);
+    ImGui::Text("scanline, row %d", profile->row);
     const ImVec2 lo = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##profile", ImVec2(width, height));
     const ImVec2 hi(lo.x + width, lo.y + height);
@@ -62,7 +62,8 @@ void profile_plot(const RowProfile* profile, float width, float height) {
     const int columns = static_cast<int>(profile->levels[0].size());
     if (ImGui::IsItemHovered() && columns > 0) {
         const int x = std::clamp(int((ImGui::GetIO().MousePos.x - lo.x) / width * float(columns)), 0, columns - 1);
-        ImGui::SetTooltip("column %d, row %d\nlevels R %d  G %d  B %d (of 0-%d)", x, profile->row,
+        ImGui::SetTooltip("Display levels along row %d of A (the last row the mouse was on), left to right.\n"
+                          "column %d: R %d  G %d  B %d (of 0-%d)", profile->row, x,
                           profile->levels[0][std::size_t(x)], profile->levels[1][std::size_t(x)],
                           profile->levels[2][std::size_t(x)], top);
     }
