@@ -1,9 +1,10 @@
-// The A/B split's read-outs (renderer/analysis/ab_compare.h) on two headless
-// renders whose scenes differ in one parameter: the level-difference count,
-// the scaled difference image and the row profile against direct counts on
-// the PNGs. The explorer's own panes against headless renders are in
+// The A/B split's read-outs (renderer/grading/ab_compare.h) and the scanline
+// profile (analysis/pixel_probe.h's row_profile) on two headless renders whose
+// scenes differ in one parameter: the level-difference count, the scaled
+// difference image and the row profile against direct counts on the PNGs. The explorer's own panes against headless renders are in
 // explorer_test.cpp (CompareReadoutsEqualTheHeadlessRenders).
-#include "analysis/ab_compare.h"
+#include "analysis/pixel_probe.h"
+#include "grading/ab_compare.h"
 #include "grading/level_compare.h"
 #include "image/image.h"
 #include "test_support.h"
@@ -16,6 +17,7 @@
 namespace m3055 {
 namespace {
 
+using namespace grading;
 using test::TempDir;
 
 // fig10 (A), and fig10 with the middle sphere's second lobe sharper (B).

@@ -13,14 +13,14 @@ CompareView::~CompareView() {
 void CompareView::update(const ExplorerState& state, const Rgb8Image& a, Renderer& b) {
     if (!fresh_) {
         b_display_ = b.read_display();
-        difference_ = level_difference(a, b_display_, state.scene.display.bits);
+        difference_ = grading::level_difference(a, b_display_, state.scene.display.bits);
         scale_asked_ = -1;  // the pane too
         fresh_ = true;
     }
     if (!state.compare_diff || scale_asked_ == state.diff_scale) return;
     scale_asked_ = state.diff_scale;
-    scale_used_ = state.diff_scale > 0 ? state.diff_scale : auto_difference_scale(a, b_display_);
-    image_ = scaled_difference(a, b_display_, scale_used_);
+    scale_used_ = state.diff_scale > 0 ? state.diff_scale : grading::auto_difference_scale(a, b_display_);
+    image_ = grading::scaled_difference(a, b_display_, scale_used_);
     upload();
 }
 

@@ -1,11 +1,11 @@
 // The A/B split's read-outs in the window (issue 12): B's display readback,
 // the count of pixels on another display level, and the third pane |A - B|
-// as a GL texture. The numbers come from renderer/analysis/ab_compare.h
+// as a GL texture. The numbers come from renderer/grading/ab_compare.h
 // (tested there and against headless renders); this keeps them between
 // renders and recomputes them only after one (or when the scale changes).
 #pragma once
 
-#include "analysis/ab_compare.h"
+#include "grading/ab_compare.h"
 #include "explore/state.h"
 #include "gl/gl_api.h"
 #include "renderer.h"
@@ -29,7 +29,7 @@ public:
     // split is on); the difference pane only when state.compare_diff.
     void update(const ExplorerState& state, const Rgb8Image& a, Renderer& b);
 
-    const LevelDifference& difference() const { return difference_; }
+    const grading::LevelDifference& difference() const { return difference_; }
     unsigned texture() const { return texture_; }
     int scale_used() const { return scale_used_; }
     const Rgb8Image& difference_image() const { return image_; }
@@ -44,7 +44,7 @@ private:
     const GlApi& gl_;
     bool fresh_ = false;
     Rgb8Image b_display_, image_;
-    LevelDifference difference_;
+    grading::LevelDifference difference_;
     int scale_used_ = 1;
     int scale_asked_ = -1;  // the state's diff_scale when image_ was made
     unsigned texture_ = 0;

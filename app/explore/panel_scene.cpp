@@ -1,10 +1,10 @@
 // Display, objects (with the figure presets), camera, compare and file sections.
 #include "explore/panels.h"
 
-#include "analysis/ab_compare.h"
 #include "explore/figure_scenes.h"
 #include "explore/shape_editor.h"
 #include "explore/widgets.h"
+#include "grading/ab_compare.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -133,7 +133,7 @@ void compare_section(ExplorerState& state) {
     if (!automatic) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(120.0f);
-        ImGui::SliderInt("scale", &state.diff_scale, 1, kMaxDifferenceScale, "x %d",
+        ImGui::SliderInt("scale", &state.diff_scale, 1, grading::kMaxDifferenceScale, "x %d",
                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
         tooltip("Whole factor, 1 to 255: at 5 bits one level is 8 PNG values, so x 4 shows it at 32.");
     }

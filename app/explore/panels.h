@@ -2,7 +2,6 @@
 // edits ExplorerState through the shared actions in state.h.
 #pragma once
 
-#include "analysis/ab_compare.h"
 #include "analysis/pixel_probe.h"
 #include "explore/state.h"
 

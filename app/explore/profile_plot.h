@@ -1,10 +1,10 @@
 // The scanline profile (issue 12): A's display levels along one row, per
 // channel, as a step plot, so the M3055's 32 steps are seen as steps. The
-// numbers are renderer/analysis/ab_compare.h's row_profile of the display
+// numbers are renderer/analysis/pixel_probe.h's row_profile of the display
 // readback the pixel probe uses.
 #pragma once
 
-#include "analysis/ab_compare.h"
+#include "analysis/pixel_probe.h"
 
 namespace m3055::explore {
 

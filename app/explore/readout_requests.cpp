@@ -32,7 +32,7 @@ void answer(const std::string& request, ExplorerState& state, Readouts& readouts
     if (!state.compare) throw std::runtime_error(request + ": the A/B split is off");
     compare.update(state, readouts.display_image(a), b);
     if (request == "compare") {
-        const LevelDifference& d = compare.difference();
+        const grading::LevelDifference& d = compare.difference();
         std::printf("compare differing=%llu pixels=%llu scale=%d\n", static_cast<unsigned long long>(d.differing),
                     static_cast<unsigned long long>(d.pixels), compare.scale_used());
     } else {  // "save_difference PATH"

@@ -5,7 +5,6 @@
 // lazily after a render (a slider drag pays for none of them).
 #pragma once
 
-#include "analysis/ab_compare.h"
 #include "analysis/pixel_probe.h"
 #include "explore/display_view.h"
 #include "explore/state.h"

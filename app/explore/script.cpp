@@ -1,8 +1,8 @@
 #include "explore/script.h"
 
-#include "analysis/ab_compare.h"
 #include "explore/keys.h"
 #include "explore/shape_editor.h"
+#include "grading/ab_compare.h"
 #include "scene/light_direction.h"
 #include "scene/load.h"
 #include "models/model_spec.h"
@@ -250,7 +250,7 @@ void diff_scale(Call& c) {  // the A/B panel's scale: auto or 1 ... 255
         return;
     }
     const int scale = std::atoi(value.c_str());
-    if (scale < 1 || scale > kMaxDifferenceScale || std::to_string(scale) != value)
+    if (scale < 1 || scale > grading::kMaxDifferenceScale || std::to_string(scale) != value)
         throw std::runtime_error("diff_scale: auto or a whole number in [1, 255]");
     c.state.diff_scale = scale;
 }

@@ -36,7 +36,7 @@ struct ExplorerState {
     bool compare = false;
     Material material_b;
     bool compare_diff = false;  // a third pane: |A - B| per channel, scaled
-    int diff_scale = 0;         // its whole scale, 1 ... 255; 0: automatic (analysis/ab_compare.h)
+    int diff_scale = 0;         // its whole scale, 1 ... 255; 0: automatic (grading/ab_compare.h)
 
     // The scanline profile's row: the last display row hovered on A (-1: none yet).
     int profile_row = -1;
