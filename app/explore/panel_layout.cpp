@@ -40,6 +40,7 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
         ImGui::TextWrapped("Error: %s", state.error.c_str());
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("dismiss")) state.error.clear();
+        tooltip("Hides this message (it changes nothing in the scene).");
         ImGui::Separator();
     }
 

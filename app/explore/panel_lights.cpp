@@ -29,6 +29,7 @@ bool light_editor(ExplorerState& state, int index) {
     tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
             "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
     changed |= ImGui::Checkbox("enabled", &light.enabled);
+    tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
     ImGui::SameLine();
     int type = static_cast<int>(light.type);
     ImGui::SetNextItemWidth(120);
@@ -84,6 +85,8 @@ bool light_editor(ExplorerState& state, int index) {
             light.lobe_kind = kind;
             changed = true;
         }
+        tooltip("On: this light uses its own lobes instead of the material's (as in the paper's Fig. 11); "
+                "off: the material's.");
         const LobeForm& form = material->model().param("lobes").form_for(*material);
         if (own) changed |= lobe_editor("light_lobes", &light.lobes, form, 1);
     }
