@@ -391,7 +391,7 @@ TEST_F(Explorer, CompareReadoutsEqualTheHeadlessRenders) {
                      "figure fig10\nselect_object 1\ncopy_b\nset objects[1].material.lobes[1].m 0.25\n"
                      "compare on\ncompare_diff on\ndiff_scale 4\nprint_compare\nsave_difference diff4.png\n"
                      "diff_scale auto\nprint_compare\nsave_difference diff_auto.png\nprint_profile 170\n"
-                     "save scene.json\n");
+                     "save scene.json\ncapture window.png\n");
     const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     // A: the saved scene; B: the same with the lobe copied into B before the edit.
@@ -429,6 +429,18 @@ TEST_F(Explorer, CompareReadoutsEqualTheHeadlessRenders) {
             wrong += diff.pixels[i] != std::min(255, std::abs(int(a.pixels[i]) - int(b.pixels[i])) * scale);
         EXPECT_EQ(wrong, 0) << file;
     }
+    // The window (1500 x 940): A and B side by side and the difference pane
+    // under A, all three 1:1 (the largest whole magnification that fits).
+    const Rgb8Image window = read_png(dir.file("window.png"));
+    const auto at_a = find_exact(window, a, 300), at_b = find_exact(window, b, 300);
+    const auto at_diff = find_exact(window, read_png(dir.file("diff_auto.png")), 300);
+    ASSERT_GE(at_a.first, 0);
+    ASSERT_GE(at_b.first, 0);
+    ASSERT_GE(at_diff.first, 0);
+    EXPECT_EQ(at_b.second, at_a.second);
+    EXPECT_GT(at_b.first, at_a.first + a.width);
+    EXPECT_EQ(at_diff.first, at_a.first);
+    EXPECT_GT(at_diff.second, at_a.second + a.height);
     // The profile of row 170: the levels whose PNG values the headless render has there.
     const std::regex profile_line("profile row 170 bits 5\tR([ 0-9]+)\tG([ 0-9]+)\tB([ 0-9]+)\n");
     std::smatch match;
