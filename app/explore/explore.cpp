@@ -187,11 +187,11 @@ public:
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
         answer_probes();
+        update_compare();  // the difference pane shows with the panels hidden too
         // After the render: the strip's histogram and timings are this frame's.
         if (state_.show_panels) {
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
-            update_compare();
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
         }
         if (state_.screenshot_requested && renderer_a_) {
