@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <cstdlib>
@@ -378,6 +379,81 @@ TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {
     EXPECT_FALSE(doc["lights"][1].contains("name")) << "an empty name is no name";
     EXPECT_EQ(doc["lights"][2]["name"], "rimlight") << "the tab (a control character) is dropped";
     EXPECT_EQ(test::read_text(dir.file("named.json")), test::read_text(dir.file("again.json")));
+}
+
+// Issue 12's A/B read-outs: B differs from A in one parameter (the middle
+// sphere's second lobe). The count of pixels on another level, the difference
+// pane's image and the scanline profile equal direct computations on two
+// headless renders of the same scenes.
+TEST_F(Explorer, CompareReadoutsEqualTheHeadlessRenders) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"),
+                     "figure fig10\nselect_object 1\ncopy_b\nset objects[1].material.lobes[1].m 0.25\n"
+                     "compare on\ncompare_diff on\ndiff_scale 4\nprint_compare\nsave_difference diff4.png\n"
+                     "diff_scale auto\nprint_compare\nsave_difference diff_auto.png\nprint_profile 170\n"
+                     "save scene.json\ncapture window.png\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    // A: the saved scene; B: the same with the lobe copied into B before the edit.
+    const auto ra = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("a.png")});
+    const auto rb = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--set",
+                                     "objects[1].material.lobes[1].m=0.4", "--out", dir.file("b.png")});
+    ASSERT_EQ(ra.exit_code, 0) << ra.err;
+    ASSERT_EQ(rb.exit_code, 0) << rb.err;
+    const Rgb8Image a = read_png(dir.file("a.png")), b = read_png(dir.file("b.png"));
+    long differing = 0;
+    int largest = 0;
+    for (std::size_t p = 0; p < a.pixels.size(); p += 3) {
+        bool any = false;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const int d = std::abs(int(a.pixels[p + c]) - int(b.pixels[p + c]));
+            any |= d != 0;  // one PNG value per level: another byte is another level
+            largest = std::max(largest, d);
+        }
+        differing += any;
+    }
+    ASSERT_GT(differing, 0) << "B must differ for the test to mean anything";
+    const int automatic = 255 / largest;
+    const std::string pixels = " pixels=" + std::to_string(a.pixels.size() / 3);
+    EXPECT_NE(run.out.find("compare differing=" + std::to_string(differing) + pixels + " scale=4\n"), std::string::npos)
+        << run.out;
+    EXPECT_NE(run.out.find("compare differing=" + std::to_string(differing) + pixels + " scale=" +
+                           std::to_string(automatic) + "\n"),
+              std::string::npos)
+        << run.out;
+    for (const auto& [file, scale] : {std::make_pair("diff4.png", 4), std::make_pair("diff_auto.png", automatic)}) {
+        const Rgb8Image diff = read_png(dir.file(file));
+        ASSERT_EQ(diff.pixels.size(), a.pixels.size()) << file;
+        long wrong = 0;
+        for (std::size_t i = 0; i < a.pixels.size(); ++i)
+            wrong += diff.pixels[i] != std::min(255, std::abs(int(a.pixels[i]) - int(b.pixels[i])) * scale);
+        EXPECT_EQ(wrong, 0) << file;
+    }
+    // The window (1500 x 940): A and B side by side and the difference pane
+    // under A, all three 1:1 (the largest whole magnification that fits).
+    const Rgb8Image window = read_png(dir.file("window.png"));
+    const auto at_a = find_exact(window, a, 300), at_b = find_exact(window, b, 300);
+    const auto at_diff = find_exact(window, read_png(dir.file("diff_auto.png")), 300);
+    ASSERT_GE(at_a.first, 0);
+    ASSERT_GE(at_b.first, 0);
+    ASSERT_GE(at_diff.first, 0);
+    EXPECT_EQ(at_b.second, at_a.second);
+    EXPECT_GT(at_b.first, at_a.first + a.width);
+    EXPECT_EQ(at_diff.first, at_a.first);
+    EXPECT_GT(at_diff.second, at_a.second + a.height);
+    // The profile of row 170: the levels whose PNG values the headless render has there.
+    const std::regex profile_line("profile row 170 bits 5\tR([ 0-9]+)\tG([ 0-9]+)\tB([ 0-9]+)\n");
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(run.out, match, profile_line)) << run.out;
+    for (int c = 0; c < 3; ++c) {
+        std::istringstream levels(match[c + 1].str());
+        int x = 0;
+        for (int level; levels >> level; ++x) {
+            ASSERT_LT(x, a.width);
+            EXPECT_EQ(std::lround(level * 255.0 / 31.0), a.pixels[(std::size_t(170) * a.width + x) * 3 + c]) << x;
+        }
+        EXPECT_EQ(x, a.width) << "one level per column";
+    }
 }
 
 }  // namespace

@@ -33,34 +33,66 @@ Layout layout_for(float width, float height, bool panels) {
     return l;
 }
 
-int draw_display(const std::vector<unsigned>& textures, int w, int h, const Rect& area,
-                 float fb_scale, Rect* shown_a) {
-    const int n = static_cast<int>(textures.size());
-    const float gap = n > 1 ? kCompareGap : 0.0f;
-    const float area_w = (area.w - gap * (n - 1)) * fb_scale / n, area_h = area.h * fb_scale;
-    const int scale = whole_pixel_scale(w, h, area_w, area_h);
+namespace {
+
+// Panes in `columns` columns (rows as needed) and the magnification they fit at.
+struct Grid {
+    int columns = 1, rows = 1;
+    int scale = 0;      // whole pixels; 0: shrunk
+    float shown = 0.0f;  // framebuffer pixels per dot
+};
+
+// A second row needs room for the first row's labels above it (one row keeps
+// its labels in the margin above, as before the third pane).
+Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale, float label_h) {
+    Grid g;
+    g.columns = columns;
+    g.rows = (n + columns - 1) / columns;
+    const float room_h = area.h - (g.rows > 1 ? label_h + kCompareGap * float(g.rows - 1) : 0.0f);
+    const float area_w = (area.w - kCompareGap * float(columns - 1)) * fb_scale / float(columns);
+    const float area_h = room_h * fb_scale / float(g.rows);
+    g.scale = whole_pixel_scale(w, h, area_w, area_h);
     // Too big even at 1:1: shrink to fit (no longer whole pixels; the panel says so).
-    const float shown = scale >= 1 ? static_cast<float>(scale)
-                                   : std::min(area_w / w, area_h / h);
-    const float iw = w * shown / fb_scale, ih = h * shown / fb_scale;  // ImGui units
-    const float total = iw * n + gap * (n - 1);
+    g.shown = g.scale >= 1 ? float(g.scale) : std::min(area_w / float(w), area_h / float(h));
+    return g;
+}
+
+}  // namespace
+
+int draw_display(const std::vector<Pane>& panes, int w, int h, const Rect& area, float fb_scale, Rect* shown_a) {
+    const int n = static_cast<int>(panes.size());
+    const float label_h = ImGui::GetTextLineHeight() + 4.0f;
+    Grid g = fit_grid(n, n, w, h, area, fb_scale, label_h);
+    if (n == 3) {  // A and B side by side, |A - B| under A, when that magnifies more
+        const Grid two_rows = fit_grid(n, 2, w, h, area, fb_scale, label_h);
+        if (two_rows.shown > g.shown) g = two_rows;
+    }
+    const float iw = float(w) * g.shown / fb_scale, ih = float(h) * g.shown / fb_scale;  // ImGui units
+    const float total_w = iw * float(g.columns) + kCompareGap * float(g.columns - 1);
+    const float total_h = ih * float(g.rows) + kCompareGap * float(g.rows - 1) + (g.rows > 1 ? label_h : 0.0f);
     // Snap the corner to a framebuffer pixel so every dot covers whole pixels.
-    float x = std::floor((area.x + (area.w - total) * 0.5f) * fb_scale) / fb_scale;
-    const float y = std::floor((area.y + (area.h - ih) * 0.5f) * fb_scale) / fb_scale;
-    if (shown_a) *shown_a = {x, y, iw, ih};
+    const float x0 = std::floor((area.x + (area.w - total_w) * 0.5f) * fb_scale) / fb_scale;
+    const float y0 =
+        std::floor((area.y + (area.h - total_h) * 0.5f + (g.rows > 1 ? label_h : 0.0f)) * fb_scale) / fb_scale;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const char* labels[2] = {"A: the scene (saved, screenshot)", "B: selected object in material B"};
     for (int i = 0; i < n; ++i) {
+        const int column = i % g.columns, row = i / g.columns;
+        const float x = x0 + float(column) * (iw + kCompareGap), y = y0 + float(row) * (ih + kCompareGap);
+        if (i == 0 && shown_a) *shown_a = {x, y, iw, ih};
         // GL textures store row 0 at the bottom: flip v.
-        draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(textures[i])),
-                       ImVec2(x, y), ImVec2(x + iw, y + ih), ImVec2(0, 1), ImVec2(1, 0));
+        draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(panes[i].texture)), ImVec2(x, y),
+                       ImVec2(x + iw, y + ih), ImVec2(0, 1), ImVec2(1, 0));
         // A thin frame shows the display's extent even where the scene is black.
         draw->AddRect(ImVec2(x - 1, y - 1), ImVec2(x + iw + 1, y + ih + 1), IM_COL32(90, 90, 100, 255));
-        // Labels above the pictures, never on them: the display stays exactly the screenshot.
-        if (n > 1) draw->AddText(ImVec2(x, y - ImGui::GetTextLineHeight() - 4), IM_COL32(255, 255, 255, 220), labels[i]);
-        x += iw + gap;
+        // Labels beside the pictures, never on them: the display stays exactly the screenshot.
+        if (n < 2) continue;
+        const char* text = panes[i].label.c_str();
+        if (row == 0) draw->AddText(ImVec2(x, y - ImGui::CalcTextSize(text).y - 4), IM_COL32(255, 255, 255, 220), text);
+        else  // in the free cell to its right, wrapped to that cell
+            draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + iw + kCompareGap, y),
+                          IM_COL32(255, 255, 255, 220), text, nullptr, iw);
     }
-    return std::max(scale, 0);
+    return std::max(g.scale, 0);
 }
 
 Rgb8Image read_window(const GlApi& gl, int width, int height) {

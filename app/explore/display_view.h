@@ -5,6 +5,7 @@
 #include "gl/gl_api.h"
 #include "image/image.h"
 
+#include <string>
 #include <vector>
 
 namespace m3055::explore {
@@ -22,11 +23,20 @@ inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
 
 Layout layout_for(float width, float height, bool panels);
 
-// Draws the display texture(s) (A, and B in compare) centred in `area`,
-// magnified by the largest whole number of pixels that fits (shrunk, no longer
-// whole pixels, when even 1:1 does not fit). Returns that scale (0: shrunk).
-// `shown_a`, when given, receives where A is drawn (ImGui units).
-int draw_display(const std::vector<unsigned>& textures, int width, int height, const Rect& area, float fb_scale,
+// One picture of the display area: a texture of the display's size (row 0
+// at the bottom) and its label (above it; under it in the second row).
+struct Pane {
+    unsigned texture = 0;
+    std::string label;
+};
+
+// Draws the panes (A; A and B in compare; A, B and |A - B| with the
+// difference pane) centred in `area`, all at the largest whole magnification
+// that fits (shrunk, no longer whole pixels, when even 1:1 does not fit):
+// side by side, or a third pane under the first two when that fits a larger
+// magnification. Returns that scale (0: shrunk). `shown_a`, when given,
+// receives where A is drawn (ImGui units).
+int draw_display(const std::vector<Pane>& panes, int width, int height, const Rect& area, float fb_scale,
                  Rect* shown_a = nullptr);
 
 // The whole window as the user sees it (the back buffer, after ImGui has drawn).

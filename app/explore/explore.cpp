@@ -4,10 +4,12 @@
 // draws one frame (render on demand: left alone it draws nothing).
 #include "explore/explore.h"
 
+#include "explore/compare_view.h"
 #include "explore/display_view.h"
 #include "explore/imgui_layer.h"
 #include "explore/keys.h"
 #include "explore/panels.h"
+#include "explore/readout_requests.h"
 #include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/state.h"
@@ -111,6 +113,7 @@ public:
         try {
             renderer_a_ = std::make_unique<Renderer>(gl);
             renderer_b_ = std::make_unique<Renderer>(gl);
+            compare_ = std::make_unique<CompareView>(gl);
             // No stall on a new specialization: draw with the general program
             // (the same pixels) and build the specialized one when idle.
             if (!options.compile_at_once) {
@@ -130,7 +133,8 @@ public:
 
     ~Explorer() {
         gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-        renderer_b_.reset();  // GL objects go while the context is still current
+        compare_.reset();  // GL objects go while the context is still current
+        renderer_b_.reset();
         renderer_a_.reset();
     }
 
@@ -176,15 +180,18 @@ public:
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
         note_free_area(layout, fb_scale);
         apply_mouse();
+        note_hovered_row();
         if (state_.show_panels) draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
         draw_dialogs(state_);
         // A finished edit (no widget held, no drag on the display) is one undo step.
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
         answer_probes();
+        update_compare();  // the difference pane shows with the panels hidden too
         // After the render: the strip's histogram and timings are this frame's.
         if (state_.show_panels) {
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
+            info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
         }
         if (state_.screenshot_requested && renderer_a_) {
@@ -279,6 +286,27 @@ private:
             moved_while_down_ = true;
     }
 
+    // The A/B read-outs (count, difference pane) of this render, for the strip and the panes.
+    void update_compare() {
+        info_.compare_count.clear();
+        if (!renderer_a_ || !state_.compare) return;
+        try {
+            compare_->update(state_, readouts_.display_image(*renderer_a_), *renderer_b_);
+            info_.compare_count = compare_->count_label();
+        } catch (const std::exception& e) {
+            state_.error = e.what();
+        }
+    }
+
+    // The scanline profile follows the row under the mouse on A, and keeps the
+    // last one when the mouse leaves the display.
+    void note_hovered_row() {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+        if (const auto pixel = Readouts::pixel_at(state_.scene, shown_a_, io.MousePos.x, io.MousePos.y))
+            state_.profile_row = pixel->second;
+    }
+
     // --script's `probe X Y` and `click X Y`, answered once A is rendered.
     void answer_probes() {
         if (!renderer_a_) return;
@@ -289,6 +317,7 @@ private:
             std::printf("probe %s\n", line.c_str());
         }
         for (const auto& [x, y] : state_.pick_requests) readouts_.pick(state_, x, y);
+        answer_readout_requests(state_, readouts_, *renderer_a_, *compare_, *renderer_b_);
         if (!state_.probe_requests.empty()) std::fflush(stdout);
         state_.probe_requests.clear();
         state_.pick_requests.clear();
@@ -319,6 +348,7 @@ private:
         try {
             renderer_a_->render(state_.scene);
             readouts_.invalidate();
+            compare_->invalidate();
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
@@ -330,9 +360,11 @@ private:
 
     void draw_displays(const Layout& layout, float fb_scale) {
         if (renderer_a_) {
-            std::vector<unsigned> textures = {renderer_a_->display_texture()};
-            if (state_.compare) textures.push_back(renderer_b_->display_texture());
-            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
+            std::vector<Pane> panes = {{renderer_a_->display_texture(), "A: the scene (saved, screenshot)"}};
+            if (state_.compare) panes.push_back({renderer_b_->display_texture(), "B: selected object in material B"});
+            if (state_.compare && state_.compare_diff && compare_->texture())
+                panes.push_back({compare_->texture(), compare_->scale_label(state_) + "\n" + compare_->count_label()});
+            info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
                                        &shown_a_);
             hover_readouts();
         }
@@ -382,7 +414,8 @@ private:
     const GlApi& gl_;
     FrameInfo& info_;
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
-    Readouts readouts_;      // probe, histogram, pick and outline of A
+    Readouts readouts_;      // probe, histogram, profile, pick and outline of A
+    std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
     Rect shown_a_;           // where A was drawn last (ImGui units)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release
     bool pointer_moved_ = false;     // the pointer has moved in the window at least once

@@ -29,6 +29,7 @@ bool light_editor(ExplorerState& state, int index) {
     tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
             "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
     changed |= ImGui::Checkbox("enabled", &light.enabled);
+    tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
     ImGui::SameLine();
     int type = static_cast<int>(light.type);
     ImGui::SetNextItemWidth(120);
@@ -84,6 +85,8 @@ bool light_editor(ExplorerState& state, int index) {
             light.lobe_kind = kind;
             changed = true;
         }
+        tooltip("On: this light uses its own lobes instead of the material's (as in the paper's Fig. 11); "
+                "off: the material's.");
         const LobeForm& form = material->model().param("lobes").form_for(*material);
         if (own) changed |= lobe_editor("light_lobes", &light.lobes, form, 1);
     }
@@ -100,6 +103,7 @@ void lights_section(ExplorerState& state) {
         if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
             apply_light_preset(state, preset);
         }
+        tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
     }
     auto& lights = state.scene.lights;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
@@ -113,6 +117,7 @@ void lights_section(ExplorerState& state) {
         if (ImGui::IsItemClicked()) state.selected_light = i;
         ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
         const bool removed = ImGui::SmallButton("remove");
+        tooltip("Removes this light (undoable).");
         if (open) {
             if (!removed && light_editor(state, i)) {
                 state.selected_light = i;
@@ -128,6 +133,7 @@ void lights_section(ExplorerState& state) {
     }
     ImGui::BeginDisabled(static_cast<int>(lights.size()) >= kMaxExplorerLights);
     if (ImGui::Button("+ add light")) add_light(state);
+    tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 namespace m3055::explore {
@@ -23,7 +24,7 @@ std::string light_label(const Scene& scene, int i) {
 void light_combo(ExplorerState& state) {
     const int count = static_cast<int>(state.scene.lights.size());
     state.plotted_light = std::clamp(state.plotted_light, 0, count - 1);
-    ImGui::SetNextItemWidth(130.0f);
+    ImGui::SetNextItemWidth(110.0f);
     if (ImGui::BeginCombo("##plotted light", light_label(state.scene, state.plotted_light).c_str())) {
         for (int i = 0; i < count; ++i)
             if (ImGui::Selectable(light_label(state.scene, i).c_str(), i == state.plotted_light)) state.plotted_light = i;
@@ -36,7 +37,7 @@ void light_combo(ExplorerState& state) {
 // recomputed only when the material or the light changes, not with the angle.
 double scale_combo(ExplorerState& state, const Material& material, const Light& light) {
     int scale = static_cast<int>(state.plot_scale);
-    ImGui::SetNextItemWidth(120.0f);
+    ImGui::SetNextItemWidth(100.0f);
     if (ImGui::Combo("##scale", &scale, "fixed\0model max\0log\0")) {
         state.plot_scale = static_cast<RadialScale>(scale);
         state.plot_top = state.plot_scale == RadialScale::log ? 1000.0 : 1.0;
@@ -70,19 +71,30 @@ void plot_section(ExplorerState& state, float width, float height) {
         ImGui::TextUnformatted("(no light: nothing to plot)");
         return;
     }
+    const float top_y = ImGui::GetCursorScreenPos().y;
     light_combo(state);
     const Light& light = state.scene.lights[std::size_t(state.plotted_light)];
     ImGui::SameLine();
     const double top = scale_combo(state, *material, light);
     const double incidence = incidence_at_target(light, state.scene.camera);
     const PlaneCurve curve = plane_curve(*material, light, incidence, state.scene.background);
-    ImGui::SameLine();
-    ImGui::Text("object %d (%s), %.1f deg to N", state.selected_object, material->model_name().c_str(), incidence);
-    ImGui::TextColored(curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1), "%s",
-                       curve.quantity().c_str());
-    // The half-disc plot is twice as wide as it is tall; room for the lines above and the scale under it.
-    const float plot_height = height - 7.0f * ImGui::GetTextLineHeightWithSpacing();
-    polar_plot(curve, state.plot_scale, top, std::max(80.0f, std::min(2.0f * plot_height, width * 0.4f)));
+    // The A/B split: B's curve beside A's (dashed), the same light and scale.
+    std::optional<PlaneCurve> b;
+    if (state.compare) b = plane_curve(state.material_b, light, incidence, state.scene.background);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);  // the column's width, not the strip's
+    ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, material->model_name().c_str(),
+                b ? (std::string("; dashed: B ") + state.material_b.model_name()).c_str() : "", incidence);
+    ImGui::PushStyleColor(ImGuiCol_Text, curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1));
+    ImGui::TextWrapped("%s", curve.quantity().c_str());
+    ImGui::PopStyleColor();
+    ImGui::PopTextWrapPos();
+    // The half-disc plot is twice as wide as it is tall (polar_plot.h): the
+    // room left under the text, less the scale's line under it.
+    const float room = height - (ImGui::GetCursorScreenPos().y - top_y) - ImGui::GetTextLineHeightWithSpacing() - 4.0f;
+    polar_plot(curve, state.plot_scale, top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
+    tooltip("The red, green and blue value (CPU reference) for every view direction in the plane of the "
+            "plotted light L (yellow) and N; dashed grey: the mirror direction R; dashed colours: material B "
+            "(A/B split). Translucent objects: the displayed blend over the background colour.");
 }
 
 }  // namespace m3055::explore

@@ -22,6 +22,8 @@ struct FrameInfo {
     int free_height = 0;
     int scale = 1;            // whole-pixel magnification of the display
     const LevelHistogram* histogram = nullptr;  // of A's display, this frame
+    const RowProfile* profile = nullptr;        // A's levels on the last hovered row (none yet: nullptr)
+    std::string compare_count;                  // the A/B split's "N of M pixels on another level", or ""
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.

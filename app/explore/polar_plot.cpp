@@ -32,9 +32,33 @@ void draw_grid(ImDrawList* draw, const ImVec2& origin, float radius, RadialScale
     draw->AddLine(at(-90, radius), at(90, radius), IM_COL32(255, 255, 255, 80));  // the surface
     draw->AddLine(origin, at(0, radius), IM_COL32(255, 255, 255, 80));            // N
 }
+// One line per channel; beyond the outer circle it is drawn on it (returns
+// whether any value was). Dashed: every other run of four segments.
+bool draw_curve(ImDrawList* draw, const PlaneCurve& curve, RadialScale scale, double top, float radius,
+                const std::function<ImVec2(double, double)>& at, bool dashed) {
+    const ImU32 colours[3] = {IM_COL32(255, 80, 80, 255), IM_COL32(80, 230, 80, 255), IM_COL32(90, 140, 255, 255)};
+    bool clipped = false;
+    const int n = static_cast<int>(curve.values.size());
+    std::vector<ImVec2> points(static_cast<std::size_t>(n));
+    for (int c = 0; c < 3; ++c) {
+        for (int i = 0; i < n; ++i) {
+            const double f = radial_fraction(curve.values[i][c], scale, top);
+            clipped |= f > 1.0;
+            points[i] = at(curve.view_deg[i], std::min(f, 1.0) * radius);
+        }
+        if (!dashed) {
+            draw->AddPolyline(points.data(), n, colours[c], 0, 1.8f);
+            continue;
+        }
+        for (int i = 0; i + 1 < n; ++i)
+            if ((i / 4) % 2 == 0) draw->AddLine(points[i], points[i + 1], colours[c], 1.8f);
+    }
+    return clipped;
+}
+
 }  // namespace
 
-void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float size) {
+void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float size, const PlaneCurve* b) {
     const float radius = size * 0.5f - 6.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::Dummy(ImVec2(size, radius + 8.0f + ImGui::GetTextLineHeightWithSpacing()));
@@ -57,19 +81,8 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
         draw->AddText(ImVec2(l_tip.x - 14, l_tip.y - 16), IM_COL32(255, 220, 60, 255), "L");
         draw->AddText(ImVec2(r_tip.x + 4, r_tip.y - 16), IM_COL32(200, 200, 200, 255), "R");
     }
-    // One curve per channel; beyond the outer circle it is drawn on it.
-    const ImU32 colours[3] = {IM_COL32(255, 80, 80, 255), IM_COL32(80, 230, 80, 255), IM_COL32(90, 140, 255, 255)};
-    bool clipped = false;
-    const int n = static_cast<int>(curve.values.size());
-    std::vector<ImVec2> points(static_cast<std::size_t>(n));
-    for (int c = 0; c < 3; ++c) {
-        for (int i = 0; i < n; ++i) {
-            const double f = radial_fraction(curve.values[i][c], scale, top);
-            clipped |= f > 1.0;
-            points[i] = at(curve.view_deg[i], std::min(f, 1.0) * radius);
-        }
-        draw->AddPolyline(points.data(), n, colours[c], 0, 1.8f);
-    }
+    bool clipped = draw_curve(draw, curve, scale, top, radius, at, false);
+    if (b) clipped |= draw_curve(draw, *b, scale, top, radius, at, true);
     draw->AddText(ImVec2(origin.x + 4, corner.y), IM_COL32(255, 255, 255, 140), "N");
     if (curve.light_behind) {
         const char* text = "light behind the surface: no lobe";
@@ -78,8 +91,8 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
     }
     char label[128];
     if (scale == RadialScale::log) std::snprintf(label, sizeof label, "log: centre 0.001, outer %.3g", top);
-    else std::snprintf(label, sizeof label, "outer circle %.3g, bold = 1 (white)", top);
-    if (clipped) std::strncat(label, "; beyond it: on the circle", sizeof label - std::strlen(label) - 1);
+    else std::snprintf(label, sizeof label, "outer %.3g, bold = 1 (white)", top);
+    if (clipped) std::strncat(label, "; beyond: on it", sizeof label - std::strlen(label) - 1);
     draw->AddText(ImVec2(corner.x, origin.y + 4), clipped ? IM_COL32(255, 170, 60, 255) : IM_COL32(255, 255, 255, 140),
                   label);
 }

@@ -10,6 +10,7 @@ namespace m3055::explore {
 // Draws `curve` (one line per channel) with L on the left, N up, R dashed;
 // radius by `scale` with `top` at the outer circle; values beyond it are drawn
 // on the circle and the plot says so. `size` is the plot's width in pixels.
-void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float size);
+// `b`, when given (the A/B split), is drawn dashed in the same colours.
+void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float size, const PlaneCurve* b = nullptr);
 
 }  // namespace m3055::explore

@@ -29,6 +29,13 @@ PixelProbe Readouts::probe(const ExplorerState& state, Renderer& renderer, int x
     return probe_pixel(state.scene, picker(state.scene), *raw_, display(renderer), x, y, state.plotted_light);
 }
 
+const RowProfile* Readouts::profile(const ExplorerState& state, Renderer& renderer) {
+    const int row = state.profile_row;
+    if (row < 0 || row >= state.scene.display.height) return nullptr;  // none yet, or the display shrank
+    if (!profile_ || profile_->row != row) profile_ = row_profile(display(renderer), state.scene.display.bits, row);
+    return &*profile_;
+}
+
 bool Readouts::pick(ExplorerState& state, int x, int y) {
     const int object = picker(state.scene).pick(x, y).object;
     if (object < 0) return false;

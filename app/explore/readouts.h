@@ -24,12 +24,18 @@ public:
         picker_.reset();
         ids_.clear();
         histogram_fresh_ = false;
+        profile_.reset();
     }
 
     // The display pixel under window point (mx, my) when A is drawn at `shown` (ImGui units).
     static std::optional<std::pair<int, int>> pixel_at(const Scene& scene, const Rect& shown, float mx, float my);
 
     PixelProbe probe(const ExplorerState& state, Renderer& renderer, int x, int y);
+    // A's display as read back (PNG values, rows top to bottom): what the A/B difference uses.
+    const Rgb8Image& display_image(Renderer& renderer) { return display(renderer); }
+    // The scanline profile of state.profile_row, from the same readback as the
+    // probe; nullptr before any row was hovered.
+    const RowProfile* profile(const ExplorerState& state, Renderer& renderer);
     // Selects the object under pixel (x, y); false (selection kept) on the background.
     bool pick(ExplorerState& state, int x, int y);
     const LevelHistogram& histogram(const ExplorerState& state, Renderer& renderer);
@@ -46,6 +52,7 @@ private:
     std::vector<int> ids_;  // object per pixel, for the outline
     LevelHistogram histogram_;
     bool histogram_fresh_ = false;
+    std::optional<RowProfile> profile_;
 };
 
 }  // namespace m3055::explore

@@ -2,6 +2,7 @@
 
 #include "explore/keys.h"
 #include "explore/shape_editor.h"
+#include "grading/ab_compare.h"
 #include "scene/light_direction.h"
 #include "scene/load.h"
 #include "models/model_spec.h"
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -208,6 +210,13 @@ std::pair<int, int> display_pixel(Call& c) {
                                  " display");
     return {x, y};
 }
+int display_pixel_row(Call& c) {
+    const int y = c.integer();
+    if (y < 0 || y >= c.state.scene.display.height)
+        throw std::runtime_error(c.command + ": row " + std::to_string(y) + " is outside the " +
+                                 std::to_string(c.state.scene.display.height) + "-row display");
+    return y;
+}
 // Hovering display pixel (x, y): prints "probe ..." once rendered.
 void probe(Call& c) { c.state.probe_requests.push_back(display_pixel(c)); }
 // A click on display pixel (x, y): selects the object there.
@@ -228,6 +237,36 @@ void section(Call& c) {  // a click on a side panel header: "section Lights clos
 }
 
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
+
+void compare_diff(Call& c) {  // the A/B panel's difference pane checkbox
+    const std::string on = c.word();
+    if (on != "on" && on != "off") throw std::runtime_error("compare_diff: on or off");
+    c.state.compare_diff = on == "on";
+}
+void diff_scale(Call& c) {  // the A/B panel's scale: auto or 1 ... 255
+    const std::string value = c.word();
+    if (value == "auto") {
+        c.state.diff_scale = 0;
+        return;
+    }
+    const int scale = std::atoi(value.c_str());
+    if (scale < 1 || scale > grading::kMaxDifferenceScale || std::to_string(scale) != value)
+        throw std::runtime_error("diff_scale: auto or a whole number in [1, 255]");
+    c.state.diff_scale = scale;
+}
+void print_compare(Call& c) {  // "compare differing=N pixels=M scale=S", once rendered
+    if (!c.state.compare) throw std::runtime_error("print_compare: the A/B split is off");
+    c.state.readout_requests.push_back("compare");
+}
+void print_profile(Call& c) {  // hovering row Y of A (optional), then its profile, once rendered
+    if (!(c.in >> std::ws).eof()) c.state.profile_row = display_pixel_row(c);
+    c.state.readout_requests.push_back("profile");
+}
+void save_difference(Call& c) {  // the difference pane's image, at display resolution
+    if (!c.state.compare || !c.state.compare_diff)
+        throw std::runtime_error("save_difference: needs compare on and compare_diff on");
+    c.state.readout_requests.push_back("save_difference " + c.word());
+}
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
 
@@ -292,7 +331,9 @@ const std::map<std::string, Handler>& commands() {
         {"plot_scale", plot_scale}, {"probe", probe},
         {"click", click},           {"light_name", light_name},
         {"section", section},         {"print_state", print_state},
-        {"screenshot_dir", screenshot_dir},
+        {"screenshot_dir", screenshot_dir}, {"compare_diff", compare_diff},
+        {"diff_scale", diff_scale},   {"print_compare", print_compare},
+        {"print_profile", print_profile}, {"save_difference", save_difference},
     };
     return table;
 }

@@ -26,6 +26,12 @@
 //   plot_scale fixed|model_max|log   its radial scale
 //   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
 //                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
+//   compare_diff on|off     the A/B panel's third pane, |A - B| per channel, scaled
+//   diff_scale auto|N       its scale (N a whole number in 1 ... 255)
+//   print_compare           print "compare differing=N pixels=M scale=S" (pixels on another level)
+//   save_difference PATH    the difference pane's image as a PNG, at display resolution
+//   print_profile [Y]       hover row Y of A (optional), then print the scanline profile:
+//                           "profile row Y bits B<TAB>R l l ...<TAB>G ...<TAB>B ..." (display levels)
 //   click X Y               a click on display pixel (X, Y): selects the object there
 //   section NAME open|closed   open or close a side panel section (its header's click)
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)

@@ -35,6 +35,11 @@ struct ExplorerState {
     // A/B compare: the selected object rendered a second time with material_b.
     bool compare = false;
     Material material_b;
+    bool compare_diff = false;  // a third pane: |A - B| per channel, scaled
+    int diff_scale = 0;         // its whole scale, 1 ... 255; 0: automatic (grading/ab_compare.h)
+
+    // The scanline profile's row: the last display row hovered on A (-1: none yet).
+    int profile_row = -1;
 
     bool show_panels = true;  // F1
     bool screenshot_requested = false;  // button / F12: the frame loop owns the renderer
@@ -63,6 +68,9 @@ struct ExplorerState {
     // --script's `probe X Y` / `click X Y` (display pixels): the frame loop
     // answers them once the scene is rendered.
     std::vector<std::pair<int, int>> probe_requests, pick_requests;
+    // --script's `print_compare`, `print_profile` and `save_difference PATH`:
+    // answered the same way, each a line ("compare", "profile", "save_difference PATH").
+    std::vector<std::string> readout_requests;
     // --script's `section NAME open|closed`: the side panel's headers, next frame.
     std::map<std::string, bool> section_requests;
 

@@ -102,7 +102,9 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
         if (ImGui::IsItemHovered() && !form.value_help.empty())
             ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
         ImGui::SameLine();
-        if (static_cast<int>(lobes->size()) > min_lobes && ImGui::SmallButton("x")) {
+        const bool removed = static_cast<int>(lobes->size()) > min_lobes && ImGui::SmallButton("x");
+        if (static_cast<int>(lobes->size()) > min_lobes) tooltip("Removes this lobe.");
+        if (removed) {
             lobes->erase(lobes->begin() + j);
             changed = true;
             ImGui::PopID();
@@ -114,6 +116,8 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
         lobes->push_back(form.fallback.back());
         changed = true;
     }
+    if (static_cast<int>(lobes->size()) < kMaxLobes)
+        tooltip("Adds a lobe (at most " + std::to_string(kMaxLobes) + ", spec section 7).");
     ImGui::PopID();
     return changed;
 }

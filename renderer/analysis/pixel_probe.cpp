@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace m3055 {
 
@@ -99,6 +101,20 @@ LevelHistogram level_histogram(const Rgb8Image& display, int bits) {
     for (int c = 0; c < 3; ++c)
         for (long count : h.counts[std::size_t(c)]) h.used[std::size_t(c)] += count > 0;
     return h;
+}
+
+RowProfile row_profile(const Rgb8Image& display, int bits, int row) {
+    if (row < 0 || row >= display.height)
+        throw std::out_of_range("row " + std::to_string(row) + " is outside the " + std::to_string(display.height) +
+                                "-row display");
+    RowProfile profile;
+    profile.row = row;
+    profile.bits = bits;
+    for (auto& channel : profile.levels) channel.resize(std::size_t(display.width));
+    const std::uint8_t* p = display.pixels.data() + std::size_t(row) * display.width * 3;
+    for (int x = 0; x < display.width; ++x)
+        for (std::size_t c = 0; c < 3; ++c) profile.levels[c][std::size_t(x)] = level_of_png(p[3 * x + c], bits);
+    return profile;
 }
 
 }  // namespace m3055

@@ -5,7 +5,8 @@
 //     and the object id of every pixel (the selection's outline);
 //   - probe_pixel: one pixel's linear value, display level and PNG value, its
 //     object and model, and N.L and R.V for one light;
-//   - level_histogram: how many pixels show each level, per channel.
+//   - level_histogram: how many pixels show each level, per channel;
+//   - row_profile: the display levels along one row (the scanline plot).
 #pragma once
 
 #include "image/image.h"
@@ -62,5 +63,14 @@ struct LevelHistogram {
     std::array<int, 3> used{};                // bins with at least one pixel
 };
 LevelHistogram level_histogram(const Rgb8Image& display, int bits);
+
+// The display levels (0 .. 2^bits - 1) of row `row` (0 = the top row) of a
+// display image, per channel, left to right. Throws std::out_of_range for a
+// row outside the image.
+struct RowProfile {
+    int row = 0, bits = 5;
+    std::array<std::vector<int>, 3> levels;
+};
+RowProfile row_profile(const Rgb8Image& display, int bits, int row);
 
 }  // namespace m3055
