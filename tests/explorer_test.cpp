@@ -48,10 +48,13 @@ struct ExplorerRun {
 };
 
 // Runs `m3055 explore ARGS` under xvfb-run in `cwd` (the script's relative paths land there).
-ExplorerRun run_explorer(const std::string& cwd, const std::vector<std::string>& args) {
+// With `timeout_seconds` > 0 the run is killed after that long (exit code 124).
+ExplorerRun run_explorer(const std::string& cwd, const std::vector<std::string>& args, int timeout_seconds = 0) {
     const std::string out_path = cwd + "/explore.stdout", err_path = cwd + "/explore.stderr";
     std::vector<std::string> argv = {find_xvfb_run(), "-a", "-s", "-screen 0 1600x1000x24",
                                      M3055_BINARY, "explore"};
+    if (timeout_seconds > 0)
+        argv.insert(argv.begin(), {"/usr/bin/timeout", "-k", "5", std::to_string(timeout_seconds)});
     argv.insert(argv.end(), args.begin(), args.end());
     const pid_t pid = fork();
     if (pid == 0) {
@@ -192,6 +195,19 @@ TEST_F(Explorer, BadSceneShowsAnErrorAndKeepsRunning) {
         }
     }
     EXPECT_LE(colours.size(), 3u);
+}
+
+// A script whose last command is `idle` still ends: the frame after the idle
+// takes --capture-window and the explorer exits (it used to wait for input forever;
+// `timeout` turns a regression into a failure instead of a hung suite).
+TEST_F(Explorer, ScriptEndingOnIdleWritesTheCaptureAndExits) {
+    TempDir dir;
+    test::write_text(dir.file("script.txt"), "idle 0.3\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script",
+                                                      "--capture-window", "window.png"},
+                                         /*timeout_seconds=*/120);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_GT(read_png(dir.file("window.png")).width, 0);
 }
 
 TEST_F(Explorer, ScriptErrorsNameTheLineAndFailTheRun) {

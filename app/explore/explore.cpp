@@ -244,7 +244,10 @@ private:
         const bool was_idle = script_->idling();
         script_->step(state_, window_.time(), info_.frames, info_.free_width, info_.free_height);
         WindowEvents& events = window_.events();
-        if (!script_->idling() && !was_idle) events.frames_owed = std::max(events.frames_owed, 1);
+        // A command asks for a frame; so does the end of a script's last idle
+        // (else nothing would draw the frame that takes --capture-window and exits).
+        if (!script_->idling() && (!was_idle || script_->finished()))
+            events.frames_owed = std::max(events.frames_owed, 1);
         if (!script_->capture_path.empty()) {
             pending_capture_ = script_->capture_path;
             script_->capture_path.clear();
