@@ -95,6 +95,10 @@ std::vector<float> draw(const GlApi& gl, unsigned program, int w, int h, double 
     gl.Viewport(0, 0, w, h);
     gl.Disable(GL_DEPTH_TEST);
     gl.Disable(GL_BLEND);
+    // The renderer's translucent pass leaves a dual-source blend function
+    // (GL_SRC1_COLOR); with it set, Mesa refuses a draw into our two colour
+    // buffers even with blending off (GL_INVALID_OPERATION), so reset it.
+    gl.BlendFunc(GL_ONE, GL_ZERO);
     gl.BindVertexArray(vao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.BindVertexArray(0);
