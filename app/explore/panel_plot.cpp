@@ -3,6 +3,7 @@
 // plotted (reflected value, or the displayed blend for translucent objects).
 #include "explore/panels.h"
 
+#include "analysis/plane_curve_gpu.h"
 #include "explore/polar_plot.h"
 #include "explore/widgets.h"
 
@@ -51,7 +52,8 @@ double scale_combo(ExplorerState& state, const Material& material, const Light& 
             cached_light.color != light.color || cached_light.lobes.size() != light.lobes.size()) {
             cached_material = material;
             cached_light = light;
-            cached_top = std::max(1e-6, model_max(material, light, dvec3(0.0)));
+            cached_top = std::max(1e-6, state.plane_curves ? state.plane_curves->model_max(material, light, dvec3(0.0))
+                                                           : model_max(material, light, dvec3(0.0)));
         }
         return cached_top;
     }
@@ -75,7 +77,10 @@ void plot_section(ExplorerState& state, float width, float height) {
     ImGui::SameLine();
     const double top = scale_combo(state, *material, light);
     const double incidence = incidence_at_target(light, state.scene.camera);
-    const PlaneCurve curve = plane_curve(*material, light, incidence, state.scene.background);
+    // A .brdf model has no CPU reference: PlaneCurves evaluates it on the GPU.
+    const PlaneCurve curve = state.plane_curves
+                                 ? state.plane_curves->curve(*material, light, incidence, state.scene.background)
+                                 : plane_curve(*material, light, incidence, state.scene.background);
     ImGui::SameLine();
     ImGui::Text("object %d (%s), %.1f deg to N", state.selected_object, material->model_name().c_str(), incidence);
     ImGui::TextColored(curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1), "%s",
