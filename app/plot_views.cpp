@@ -1,6 +1,7 @@
 #include "plot_views.h"
 
 #include "analysis/brdf_check.h"
+#include "analysis/brdf_views.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +14,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
-
-// The largest channel: what the plots show of an RGB BRDF.
-double channel_max(const std::vector<float>& f, std::size_t k) {
-    return std::max({double(f[k * 3]), double(f[k * 3 + 1]), double(f[k * 3 + 2])});
-}
 
 std::string header(int width, int height, const std::string& title) {
     return "if (!exists(\"out\")) out = 'plot.png'\nset terminal pngcairo size " + std::to_string(width) + "," +
@@ -84,20 +80,8 @@ std::string polar_script(BrdfGrid& grid, const std::vector<BrdfTarget>& targets,
 }
 
 std::string slice_script(BrdfGrid& grid, const BrdfTarget& target, const ViewOptions& o) {
-    // Burley 2012: theta_h across, theta_d up, phi_d = 90 deg; H = rot_y(theta_h) z,
-    // L = rot_y(theta_h) of the direction at theta_d from z, V its mirror about H.
-    const int n = 90;
-    std::vector<dvec3> Ls, Vs;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const double th = rad(i + 0.5), td = rad(j + 0.5);
-            const dvec3 d(0.0, std::sin(td), std::cos(td));  // phi_d = 90 deg
-            const dvec3 L(d.x * std::cos(th) + d.z * std::sin(th), d.y, -d.x * std::sin(th) + d.z * std::cos(th));
-            const dvec3 H(std::sin(th), 0.0, std::cos(th));
-            Ls.push_back(L);
-            Vs.push_back(2.0 * (H.x * L.x + H.y * L.y + H.z * L.z) * H - L);
-        }
-    const std::vector<float> f = grid.evaluate_pairs(target.material, Ls, Vs);
+    const ThetaSlice slice = theta_slice(grid, target.material);
+    const int n = slice.n;
     std::ostringstream s;
     s << header(760, 640, "theta_h / theta_d slice (phi_d = 90 deg) of " + shown(target) +
                               (o.log ? ", log10 f" : ", f"));
@@ -106,8 +90,8 @@ std::string slice_script(BrdfGrid& grid, const BrdfTarget& target, const ViewOpt
       << "plot '-' using 1:2:3 with image notitle\n";
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {
-            const double v = channel_max(f, std::size_t(j * n + i));
-            const bool below = Ls[std::size_t(j * n + i)].z <= 0 || Vs[std::size_t(j * n + i)].z <= 0;
+            const double v = slice.at(i, j);
+            const bool below = slice.below[std::size_t(j * n + i)];
             const double shown = below || !std::isfinite(v) ? 0.0 : (o.log ? std::log10(std::max(v, 1e-4)) : v);
             s << i + 0.5 << " " << j + 0.5 << " " << shown << "\n";
         }
@@ -118,11 +102,9 @@ std::string slice_script(BrdfGrid& grid, const BrdfTarget& target, const ViewOpt
 }
 
 std::string albedo_script(BrdfGrid& grid, const std::vector<BrdfTarget>& targets, const ViewOptions& o) {
-    const AlbedoSamples samples = albedo_samples(o.albedo_mu, o.albedo_phi);
-    std::vector<double> degrees;
-    for (int d = 0; d < 90; ++d) degrees.push_back(d);
+    const std::size_t samples = std::size_t(o.albedo_mu) * std::size_t(o.albedo_phi);
     std::ostringstream s;
-    s << header(900, 560, "directional albedo, " + std::to_string(samples.L.size()) +
+    s << header(900, 560, "directional albedo, " + std::to_string(samples) +
                               " incident samples per view (cosine midpoint)");
     s << "set xlabel 'view angle theta_v (deg)'\nset ylabel 'albedo (largest channel)'\nset xrange [0:90]\n"
       << "set grid\nset key right center box opaque\nset arrow from 0,1 to 90,1 nohead dt 2 lc rgb 'gray'\nplot ";
@@ -130,40 +112,29 @@ std::string albedo_script(BrdfGrid& grid, const std::vector<BrdfTarget>& targets
         s << (t ? ", " : "") << "'-' using 1:2 with lines lw 2 title " << quoted(shown(targets[t]));
     s << "\n";
     for (const BrdfTarget& t : targets) {
-        const std::vector<double> a = directional_albedo(
-            grid.evaluate(t.material, samples.L, view_directions(degrees)), samples, degrees.size());
-        for (std::size_t k = 0; k < degrees.size(); ++k) s << degrees[k] << " " << (std::isfinite(a[k]) ? a[k] : 0.0) << "\n";
+        const AlbedoCurve curve = albedo_curve(grid, t.material, o.albedo_mu, o.albedo_phi);
+        for (std::size_t k = 0; k < curve.view_deg.size(); ++k)
+            s << curve.view_deg[k] << " " << (std::isfinite(curve.albedo[k]) ? curve.albedo[k] : 0.0) << "\n";
         s << "e\n";
     }
     return s.str();
 }
 
 std::string lobe_script(BrdfGrid& grid, const BrdfTarget& target, const ViewOptions& o) {
-    const dvec3 L = in_plane(-o.theta_in_deg);
-    const int nt = 46, np = 73;
-    std::vector<dvec3> Vs;
-    for (int t = 0; t < nt; ++t)
-        for (int p = 0; p < np; ++p) {
-            const double th = rad(90.0 * t / (nt - 1)), ph = rad(360.0 * p / (np - 1));
-            Vs.push_back({std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)});
-        }
-    const std::vector<float> f = grid.evaluate(target.material, {L}, Vs);
-    double top = 0;
-    for (std::size_t k = 0; k < Vs.size(); ++k) top = std::max(top, channel_max(f, k) * L.z);
-    if (!(top > 0)) top = 1;
+    const Lobe3d lobe = lobe_3d(grid, target.material, o.theta_in_deg);
+    const dvec3 L = lobe.L;
     std::ostringstream s;
     s << header(800, 700, "3D lobe of f (N.L), theta_in = " + std::to_string(int(o.theta_in_deg)) + " deg: " +
-                              shown(target) + " (max " + short_number(top) + " scaled to 1)");
+                              shown(target) + " (max " + short_number(lobe.top) + " scaled to 1)");
     s << "set view 60,30\nset view equal xyz\nunset key\nset xyplane at 0\nset pm3d depthorder\nset style fill solid\n"
       << "set palette rgb 33,13,10\nunset colorbox\nset xrange [-1:1]\nset yrange [-1:1]\nset zrange [0:1]\n"
       << "set arrow from " << L.x << ",0," << L.z << " to 0,0,0 lw 3 lc rgb 'orange' front\n"
       << "splot '-' using 1:2:3:4 with pm3d\n";
-    for (int t = 0; t < nt; ++t) {
-        for (int p = 0; p < np; ++p) {
-            const std::size_t k = std::size_t(t * np + p);
-            const double v = channel_max(f, k) * L.z;
-            const double r = std::isfinite(v) ? std::max(0.0, v) / top : 0.0;
-            s << r * Vs[k].x << " " << r * Vs[k].y << " " << r * Vs[k].z << " " << r << "\n";
+    for (int t = 0; t < lobe.nt; ++t) {
+        for (int p = 0; p < lobe.np; ++p) {
+            const std::size_t k = std::size_t(t * lobe.np + p);
+            const double r = lobe.value[k] / lobe.top;
+            s << r * lobe.V[k].x << " " << r * lobe.V[k].y << " " << r * lobe.V[k].z << " " << r << "\n";
         }
         s << "\n";
     }

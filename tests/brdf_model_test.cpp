@@ -3,7 +3,12 @@
 // built-in models they copy, within the GPU tolerances of docs/models.md;
 // scenes name them with errors naming the scene, the JSON path and the .brdf.
 #include "brdf_file/brdf_model.h"
+#include "gl/context.h"
 #include "gpu_compare.h"
+#include "models/glsl_generator.h"
+#include "models/model_table.h"
+#include "renderer.h"
+#include "scene/presets.h"
 #include "models/model_spec.h"
 #include "reference/reference.h"
 #include "scene/load.h"
@@ -294,6 +299,27 @@ TEST(BrdfModel, CpuReferenceIsNanNotAnException) {
     const Material m(*load_brdf_model(data_file("lambert.brdf")).spec);
     const dvec3 I = ref::shade_opaque(m, {test::directional({0, 0, 1})}, {dvec3(0.0), dvec3(0, 0, 1), dvec3(0, 0, 1)});
     EXPECT_TRUE(std::isnan(I.x) && std::isnan(I.y) && std::isnan(I.z));
+}
+
+// A file saved with a GLSL error is an entry of the table like any other (the
+// explorer parsed it before compiling); retired, it leaves the general
+// programs, so the renderer's general mode draws the other models again.
+TEST(BrdfModel, ARetiredBrokenEntryLeavesTheGeneralPrograms) {
+    test::TempDir dir;
+    test::write_text(dir.file("bad.brdf"), "analytic\n::begin shader\nvec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)"
+                                           " { return vec3(undefined_thing); }\n::end shader\n");
+    const BrdfModel& bad = load_brdf_model(dir.file("bad.brdf"));
+    const auto context = HeadlessContext::create(Backend::automatic);
+    Renderer renderer(context->gl());
+    EXPECT_THROW(renderer.warm_up_general_programs(), std::exception) << "the broken code is in the general program";
+    const std::vector<std::string> before = every_model_define(model_table());
+    EXPECT_NE(std::find(before.begin(), before.end(), has_define(*bad.spec)), before.end());
+    retire_brdf_model(*bad.spec);
+    const std::vector<std::string> after = every_model_define(model_table());
+    EXPECT_EQ(std::find(after.begin(), after.end(), has_define(*bad.spec)), after.end());
+    EXPECT_NO_THROW(renderer.warm_up_general_programs());
+    retire_brdf_model(Material::of("lambert").model());  // a built-in model is never retired
+    EXPECT_FALSE(model_table().retired(Material::of("lambert").model()));
 }
 
 }  // namespace

@@ -472,5 +472,54 @@ TEST_F(Explorer, CompareReadoutsEqualTheHeadlessRenders) {
     }
 }
 
+// A .brdf file opened on an object (File > Open BRDF's action) is watched: a
+// save with a GLSL error shows the error with the file's own line and keeps
+// the last good image; the fixed file reloads, changes the image and keeps the
+// value set before. A parse error likewise names its line.
+TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
+    TempDir dir;
+    const std::string good = test::read_text(test::source_path("tests/data/brdf/blinn_phong.brdf"));
+    const std::string spec_line = "    float spec = pow(max(dot(N, H), 0), shininess);";
+    const std::size_t at = good.find(spec_line);
+    ASSERT_NE(at, std::string::npos);
+    const int line = 1 + static_cast<int>(std::count(good.begin(), good.begin() + long(at), '\n'));
+    std::string broken = good, unparsable = good, fixed = good;
+    broken.replace(at, spec_line.size(), "    float spec = pow(max(dot(N, H), no_such_thing), shininess);");
+    const std::size_t param_at = unparsable.find("float shininess 0 10000 32");
+    const int param_line = 1 + static_cast<int>(std::count(good.begin(), good.begin() + long(param_at), '\n'));
+    unparsable.replace(param_at, 26, "float shininess 0 10000 -5");
+    fixed.replace(fixed.find("return kd / PI"), 14, "return 0.5 * kd / PI");
+    test::write_text(dir.file("mine.brdf"), good);
+    test::write_text(dir.file("broken.brdf"), broken);
+    test::write_text(dir.file("unparsable.brdf"), unparsable);
+    test::write_text(dir.file("fixed.brdf"), fixed);
+    test::write_text(dir.file("script.txt"),
+                     "open_brdf mine.brdf\nset objects[0].material.params.shininess 7\nscreenshot good.png\n"
+                     "replace_file broken.brdf mine.brdf\nidle 1.2\nprint_brdf\nscreenshot still.png\n"
+                     "replace_file unparsable.brdf mine.brdf\nidle 1.2\nprint_brdf\n"
+                     "replace_file fixed.brdf mine.brdf\nidle 1.2\nprint_brdf\nscreenshot fixed.png\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::vector<std::string> reports;
+    std::istringstream lines(run.out);
+    for (std::string l; std::getline(lines, l);)
+        if (l.rfind("brdf error=", 0) == 0) reports.push_back(l);
+    ASSERT_EQ(reports.size(), 3u) << run.out;
+    EXPECT_NE(reports[0].find("mine.brdf:" + std::to_string(line) + ": error:"), std::string::npos) << reports[0];
+    EXPECT_NE(reports[0].find("no_such_thing"), std::string::npos) << reports[0];
+    EXPECT_NE(reports[1].find("mine.brdf:" + std::to_string(param_line) + ": shininess: DEFAULT -5"), std::string::npos)
+        << reports[1];
+    EXPECT_EQ(reports[2], "brdf error=\tstatus=reloaded mine.brdf\terror=")
+        << "fixed: the error is gone, and the window's own render (general programs) works";
+    // The last good version kept rendering; the fixed one changed the image.
+    EXPECT_EQ(test::read_text(dir.file("good.png")), test::read_text(dir.file("still.png")));
+    EXPECT_NE(test::read_text(dir.file("good.png")), test::read_text(dir.file("fixed.png")));
+    const auto scene = nlohmann::json::parse(test::read_text(dir.file("fixed.json")));
+    EXPECT_EQ(scene["objects"][0]["material"]["params"]["shininess"], 7.0) << "the value set before is kept";
+    const auto render = test::run_m3055({"render", "--scene", dir.file("fixed.json"), "--out", dir.file("r.png")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_EQ(test::read_text(dir.file("fixed.png")), test::read_text(dir.file("r.png")));
+}
+
 }  // namespace
 }  // namespace m3055

@@ -101,9 +101,14 @@ void draw_menu_bar(ExplorerState& state) {
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("Save", "Ctrl+S")) save_or_ask(state);
         if (ImGui::MenuItem("Save as...")) state.save_as_requested = true;
+        if (ImGui::MenuItem("Open BRDF...")) state.open_brdf_requested = true;
         if (ImGui::MenuItem("Screenshot", "F12")) state.screenshot_requested = true;
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Esc")) state.quit_requested = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        ImGui::MenuItem("BRDF views", nullptr, &state.show_brdf_views);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
@@ -122,6 +127,7 @@ void draw_dialogs(ExplorerState& state) {
     quit_dialog(state);
     save_as_dialog(state);
     load_error_dialog(state);
+    open_brdf_dialog(state);
 }
 
 }  // namespace m3055::explore

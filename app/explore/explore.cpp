@@ -5,6 +5,9 @@
 #include "explore/explore.h"
 
 #include "explore/compare_view.h"
+#include "analysis/brdf_views.h"
+#include "analysis/plane_curve_gpu.h"
+#include "explore/brdf_files.h"
 #include "explore/display_view.h"
 #include "explore/imgui_layer.h"
 #include "explore/keys.h"
@@ -16,6 +19,7 @@
 #include "explore/window.h"
 #include "gl/gl_api.h"
 #include "image/image.h"
+#include "passes/brdf_grid.h"
 #include "renderer.h"
 #include "scene/load.h"
 #include "scene/presets.h"
@@ -122,6 +126,12 @@ public:
                 renderer_a_->warm_up_general_programs();  // start-up, so no render compiles
                 renderer_b_->warm_up_general_programs();
             }
+            // .brdf files: the polar plot's GPU curves and the GLSL check of a (re)loaded file.
+            plane_curves_ = std::make_unique<PlaneCurves>(gl);
+            state_.plane_curves = plane_curves_.get();
+            brdf_views_ = std::make_unique<BrdfViews>(gl);
+            state_.brdf_views = brdf_views_.get();
+            state_.brdf_compile_check = [&gl](const Material& m) { return brdf_compile_error(gl, m); };
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -134,6 +144,11 @@ public:
     ~Explorer() {
         gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
         compare_.reset();  // GL objects go while the context is still current
+        state_.plane_curves = nullptr;
+        state_.brdf_compile_check = nullptr;
+        plane_curves_.reset();
+        state_.brdf_views = nullptr;
+        brdf_views_.reset();
         renderer_b_.reset();
         renderer_a_.reset();
     }
@@ -161,17 +176,23 @@ public:
     // runs the script's next command.
     void wait_for_work() {
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
+        // Watched .brdf files: wake at least every poll period.
+        const double most = brdf_files_in_use(state_).empty() ? 1e30 : kBrdfPollSeconds;
         if (frame_needed() || script_busy) window_.poll();
-        else if (script_ && script_->idling()) window_.wait(std::max(0.0, script_->idle_until() - window_.time()));
+        else if (script_ && script_->idling())
+            window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (deferred_programs() > 0) compile_when_idle();
-        else window_.wait(-1.0);
+        else window_.wait(most < 1e30 ? most : -1.0);
+        if (poll_brdf_files(state_, window_.time())) window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
         step_script();
     }
 
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
-        for (const std::string& path : window_.events().dropped)
-            if (!load_scene(state_, path)) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
+        for (const std::string& path : window_.events().dropped) {
+            const bool ok = is_brdf_path(path) ? open_brdf(state_, path) : load_scene(state_, path);
+            if (!ok) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
+        }
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
@@ -193,6 +214,7 @@ public:
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
+            draw_brdf_views(state_);
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
@@ -417,6 +439,8 @@ private:
     const GlApi& gl_;
     FrameInfo& info_;
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
+    std::unique_ptr<PlaneCurves> plane_curves_;          // the polar plot of .brdf models (GPU)
+    std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
     Readouts readouts_;      // probe, histogram, profile, pick and outline of A
     std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
     Rect shown_a_;           // where A was drawn last (ImGui units)

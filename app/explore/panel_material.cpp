@@ -152,6 +152,7 @@ void material_section(ExplorerState& state) {
     if (!material) return;
     ImGui::Text("object %d of %zu (choose in Objects)", state.selected_object,
                 state.scene.objects.size());
+    brdf_material_note(state, *material);
     if (material_editor(*material)) state.changed();
 }
 

@@ -3,6 +3,7 @@
 // plotted (reflected value, or the displayed blend for translucent objects).
 #include "explore/panels.h"
 
+#include "analysis/plane_curve_gpu.h"
 #include "explore/polar_plot.h"
 #include "explore/widgets.h"
 
@@ -19,6 +20,11 @@ namespace {
 std::string light_label(const Scene& scene, int i) {
     const Light& light = scene.lights[std::size_t(i)];
     return "light " + std::to_string(i) + (light.name.empty() ? "" : " \"" + light.name + "\"");
+}
+
+// The model's scene name, or for a .brdf model (internally "brdf_16") its file's label.
+std::string shown_name(const Material& material) {
+    return material.model().family == Family::brdf ? material.model().label : material.model_name();
 }
 
 void light_combo(ExplorerState& state) {
@@ -52,7 +58,8 @@ double scale_combo(ExplorerState& state, const Material& material, const Light& 
             cached_light.color != light.color || cached_light.lobes.size() != light.lobes.size()) {
             cached_material = material;
             cached_light = light;
-            cached_top = std::max(1e-6, model_max(material, light, dvec3(0.0)));
+            cached_top = std::max(1e-6, state.plane_curves ? state.plane_curves->model_max(material, light, dvec3(0.0))
+                                                           : model_max(material, light, dvec3(0.0)));
         }
         return cached_top;
     }
@@ -77,13 +84,18 @@ void plot_section(ExplorerState& state, float width, float height) {
     ImGui::SameLine();
     const double top = scale_combo(state, *material, light);
     const double incidence = incidence_at_target(light, state.scene.camera);
-    const PlaneCurve curve = plane_curve(*material, light, incidence, state.scene.background);
+    // A .brdf model has no CPU reference: PlaneCurves evaluates it on the GPU.
+    auto curve_of = [&](const Material& m) {
+        return state.plane_curves ? state.plane_curves->curve(m, light, incidence, state.scene.background)
+                                  : plane_curve(m, light, incidence, state.scene.background);
+    };
+    const PlaneCurve curve = curve_of(*material);
     // The A/B split: B's curve beside A's (dashed), the same light and scale.
     std::optional<PlaneCurve> b;
-    if (state.compare) b = plane_curve(state.material_b, light, incidence, state.scene.background);
+    if (state.compare) b = curve_of(state.material_b);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);  // the column's width, not the strip's
-    ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, material->model_name().c_str(),
-                b ? (std::string("; dashed: B ") + state.material_b.model_name()).c_str() : "", incidence);
+    ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, shown_name(*material).c_str(),
+                b ? ("; dashed: B " + shown_name(state.material_b)).c_str() : "", incidence);
     ImGui::PushStyleColor(ImGuiCol_Text, curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1));
     ImGui::TextWrapped("%s", curve.quantity().c_str());
     ImGui::PopStyleColor();
@@ -92,7 +104,7 @@ void plot_section(ExplorerState& state, float width, float height) {
     // room left under the text, less the scale's line under it.
     const float room = height - (ImGui::GetCursorScreenPos().y - top_y) - ImGui::GetTextLineHeightWithSpacing() - 4.0f;
     polar_plot(curve, state.plot_scale, top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
-    tooltip("The red, green and blue value (CPU reference) for every view direction in the plane of the "
+    tooltip("The red, green and blue value (CPU reference; the GPU for a .brdf model) for every view direction in the plane of the "
             "plotted light L (yellow) and N; dashed grey: the mirror direction R; dashed colours: material B "
             "(A/B split). Translucent objects: the displayed blend over the background colour.");
 }

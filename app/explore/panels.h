@@ -37,6 +37,12 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
 void draw_menu_bar(ExplorerState& state);
 void draw_dialogs(ExplorerState& state);
+// File > Open BRDF's dialog, and the Material section's note on a .brdf
+// material (its file, the last error in red): panel_brdf.cpp.
+void open_brdf_dialog(ExplorerState& state);
+void brdf_material_note(const ExplorerState& state, const Material& material);
+// The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
+void draw_brdf_views(ExplorerState& state);
 
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);

@@ -1,5 +1,6 @@
 #include "explore/script.h"
 
+#include "explore/brdf_files.h"
 #include "explore/keys.h"
 #include "explore/shape_editor.h"
 #include "grading/ab_compare.h"
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -268,6 +270,37 @@ void save_difference(Call& c) {  // the difference pane's image, at display reso
     c.state.readout_requests.push_back("save_difference " + c.word());
 }
 
+// ---- .brdf files (explore/brdf_files.h) ------------------------------------------------------
+
+// File > Open BRDF's dialog with PATH typed (or a drop): errors show in the window, as `load`'s.
+void open_brdf_command(Call& c) { open_brdf(c.state, c.rest()); }
+
+// What an editor's save does to a watched file: DST's bytes replaced by SRC's
+// (written to a temporary and renamed, so the watcher never reads half a file).
+void replace_file(Call& c) {
+    const std::string from = c.word(), to = c.word();
+    std::ifstream in(from, std::ios::binary);
+    if (!in) throw std::runtime_error("replace_file: cannot read " + from);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string temporary = to + ".saving";
+    std::ofstream(temporary, std::ios::binary) << bytes;
+    if (std::rename(temporary.c_str(), to.c_str()) != 0) throw std::runtime_error("replace_file: cannot write " + to);
+}
+
+// View > BRDF views.
+void brdf_views(Call& c) {
+    const std::string how = c.word();
+    if (how != "on" && how != "off") throw std::runtime_error("brdf_views: on|off");
+    c.state.show_brdf_views = how == "on";
+}
+
+// One line: the Material section's .brdf error and the status strip.
+void print_brdf(Call& c) {
+    std::printf("brdf error=%s\tstatus=%s\terror=%s\n", c.state.brdf_error.c_str(), c.state.status.c_str(),
+                c.state.error.c_str());
+    std::fflush(stdout);
+}
+
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
 
 void undo_command(Call& c) {
@@ -334,6 +367,9 @@ const std::map<std::string, Handler>& commands() {
         {"screenshot_dir", screenshot_dir}, {"compare_diff", compare_diff},
         {"diff_scale", diff_scale},   {"print_compare", print_compare},
         {"print_profile", print_profile}, {"save_difference", save_difference},
+        {"screenshot_dir", screenshot_dir}, {"open_brdf", open_brdf_command},
+        {"replace_file", replace_file}, {"print_brdf", print_brdf},
+        {"brdf_views", brdf_views},
     };
     return table;
 }

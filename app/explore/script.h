@@ -16,6 +16,11 @@
 //   shape NAME              the selected object's shape (sphere, plane, cube, cylinder, torus)
 //   figure NAME             a figure preset (fig05 ... fig13, spec_example)
 //   load PATH               load a scene file (errors show in the window)
+//   open_brdf PATH          File > Open BRDF: PATH on the selected object (errors show in the window)
+//   replace_file SRC DST    an editor saving DST with SRC's bytes (for the .brdf watcher)
+//   brdf_views on|off       View > BRDF views (the slice, albedo and 3D lobe window)
+//   print_brdf              print "brdf error=TEXT<TAB>status=TEXT<TAB>error=TEXT" (the Material
+//                           section's .brdf error, the status strip, the panel's general error)
 //   display m3055|modern    the Display panel's two preset buttons
 //   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
 //   projection perspective|orthographic

@@ -10,10 +10,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace m3055 {
+class BrdfViews;
+class PlaneCurves;
+}
 
 namespace m3055::explore {
 
@@ -73,6 +79,25 @@ struct ExplorerState {
     std::vector<std::string> readout_requests;
     // --script's `section NAME open|closed`: the side panel's headers, next frame.
     std::map<std::string, bool> section_requests;
+
+    // .brdf files (explore/brdf_files.h): File > Open BRDF's path field, the
+    // last parse or GLSL error (shown in the Material section), each watched
+    // file's "mtime size" and the next poll time. The frame loop sets the
+    // GLSL check (a GL compile; empty: none) and the polar plot's curves.
+    std::string brdf_path;
+    bool open_brdf_requested = false;
+    std::string brdf_error;
+    std::string brdf_error_path;  // the file brdf_error is about
+    std::map<std::string, std::string> brdf_stamps;
+    double brdf_next_poll = 0.0;
+    std::function<std::string(const Material&)> brdf_compile_check;
+    PlaneCurves* plane_curves = nullptr;
+    // The "BRDF views" window (View menu): shown?, its slice's log colour, the
+    // lobe's turn (radians), and the frame loop's cache of the views.
+    bool show_brdf_views = false;
+    bool views_log = true;
+    float lobe_yaw = 0.6f, lobe_pitch = 0.5f;
+    BrdfViews* brdf_views = nullptr;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;

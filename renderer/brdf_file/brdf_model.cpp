@@ -103,6 +103,10 @@ const BrdfModel* find_brdf_model(const ModelSpec& spec) {
     return nullptr;
 }
 
+void retire_brdf_model(const ModelSpec& spec) {
+    if (find_brdf_model(spec)) mutable_model_table().retire(spec);
+}
+
 Material reload_brdf_material(const Material& current, const std::string& path) {
     const BrdfModel& fresh = load_brdf_model(path);
     Material out(*fresh.spec);

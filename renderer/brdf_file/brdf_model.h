@@ -40,4 +40,8 @@ const BrdfModel* find_brdf_model(const ModelSpec& spec);
 // with the result succeeds.
 Material reload_brdf_material(const Material& current, const std::string& path);
 
+// A file's entry whose GLSL failed to compile: left out of the general
+// programs from now on (ModelTable::retire), so the other models keep drawing.
+void retire_brdf_model(const ModelSpec& spec);
+
 }  // namespace m3055

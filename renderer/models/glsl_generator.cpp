@@ -195,6 +195,7 @@ std::string family_define(int family) { return "HAS_FAMILY_" + upper(to_string(s
 std::vector<std::string> every_model_define(const ModelTable& table) {
     std::set<std::string> out;
     for (const ModelSpec& spec : table.models()) {
+        if (table.retired(spec)) continue;
         out.insert(has_define(spec));
         out.insert(family_define(static_cast<int>(spec.family)));
     }

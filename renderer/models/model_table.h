@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +43,12 @@ public:
     std::uint64_t revision() const { return revision_; }
     // How many of the models are built in (the first builtin_count() ids).
     int builtin_count() const { return builtin_count_; }
+    // A model whose GLSL does not compile (a .brdf file saved with an error)
+    // stays in the table (references stay valid) but is left out of the
+    // general programs (every_model_define), which would otherwise never
+    // compile again and leave the explorer showing nothing new.
+    void retire(const ModelSpec& spec) { retired_.insert(spec.id); }
+    bool retired(const ModelSpec& spec) const { return retired_.count(spec.id) > 0; }
 
 private:
     friend const ModelTable& model_table();
@@ -52,6 +59,7 @@ private:
     int record_texels_ = 1;
     std::uint64_t revision_ = 0;
     int builtin_count_ = 0;
+    std::set<int> retired_;
 };
 
 // The process's table, with the built-in models registered.

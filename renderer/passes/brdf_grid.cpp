@@ -4,16 +4,25 @@
 #include "passes/light_uniforms.h"
 #include "passes/material_buffer.h"
 #include "models/model_spec.h"
+#include "models/model_table.h"
 #include "passes/shader_plan.h"
 
+#include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace m3055 {
 
 struct BrdfGrid::Impl {
     const GlApi& gl;
     unsigned vao = 0, material_buffer = 0, material_texture = 0, dirs[2] = {0, 0}, targets[2] = {0, 0}, fbo = 0;
+    // The programs built so far, by the model table's revision and the defines:
+    // a compile costs tens of milliseconds on llvmpipe, and the explorer asks
+    // again for every frame of a slider drag (the values are in the record).
+    std::map<std::pair<std::uint64_t, std::vector<std::string>>, unsigned> programs;
 
     explicit Impl(const GlApi& api) : gl(api) {
         gl.GenVertexArrays(1, &vao);
@@ -24,6 +33,7 @@ struct BrdfGrid::Impl {
         gl.GenFramebuffers(1, &fbo);
     }
     ~Impl() {
+        for (const auto& entry : programs) gl.DeleteProgram(entry.second);
         gl.DeleteFramebuffers(1, &fbo);
         gl.DeleteTextures(2, targets);
         gl.DeleteTextures(2, dirs);
@@ -75,13 +85,16 @@ BrdfGrid::~BrdfGrid() = default;
 
 namespace {
 
-unsigned grid_program(const GlApi& gl, const Material& material) {
+std::vector<std::string> grid_defines(const Material& material) {
     Object object;
     object.material = material;
     Light light;
     light.type = LightType::point;
-    return build_program(gl, {"passes/fullscreen.vert", "passes/brdf_grid.frag",
-                              specialization_defines(ShaderMode::specialized, {&object}, {light})});
+    return specialization_defines(ShaderMode::specialized, {&object}, {light});
+}
+
+unsigned grid_program(const GlApi& gl, const Material& material) {
+    return build_program(gl, {"passes/fullscreen.vert", "passes/brdf_grid.frag", grid_defines(material)});
 }
 
 // One draw of the grid with light 0 of colour `white`: RGB per (L, V). (Black,
@@ -95,6 +108,10 @@ std::vector<float> draw(const GlApi& gl, unsigned program, int w, int h, double 
     gl.Viewport(0, 0, w, h);
     gl.Disable(GL_DEPTH_TEST);
     gl.Disable(GL_BLEND);
+    // The renderer's translucent pass leaves a dual-source blend function
+    // (GL_SRC1_COLOR); with it set, Mesa refuses a draw into our two colour
+    // buffers even with blending off (GL_INVALID_OPERATION), so reset it.
+    gl.BlendFunc(GL_ONE, GL_ZERO);
     gl.BindVertexArray(vao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.BindVertexArray(0);
@@ -137,7 +154,11 @@ std::vector<float> BrdfGrid::run(const Material& material, const std::vector<dve
     const GlApi& gl = impl_->gl;
     const int w = int(Ls.size()), h = paired ? 1 : int(Vs.size());
     if (w < 1 || h < 1 || w > 16384 || h > 16384) throw std::invalid_argument("BRDF grid: 1 to 16384 L and V");
-    const unsigned program = grid_program(gl, material);
+    auto key = std::make_pair(model_table().revision(), grid_defines(material));
+    auto cached = impl_->programs.find(key);
+    if (cached == impl_->programs.end())
+        cached = impl_->programs.emplace(std::move(key), grid_program(gl, material)).first;
+    const unsigned program = cached->second;
     impl_->targets_of(w, h);
     impl_->material(without_ambient_term(material));
     impl_->directions(1, impl_->dirs[0], Ls);
@@ -162,7 +183,6 @@ std::vector<float> BrdfGrid::run(const Material& material, const std::vector<dve
     }
     gl.UseProgram(0);
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl.DeleteProgram(program);
     const GLenum error = gl.GetError();
     if (error != GL_NO_ERROR) throw std::runtime_error("BRDF grid: GL error " + std::to_string(error));
     return f;
