@@ -117,6 +117,13 @@ TEST(GradeAssignment, ErrorsNameTheField) {
               "a.json: pass: must be in [0, 10], got 11");
 }
 
+// "start" (the explorer's starting scene) is optional and, like the reference, relative to the assignment.
+TEST(GradeAssignment, StartIsOptionalAndBesideTheAssignment) {
+    EXPECT_EQ(assignment_from_json(R"({"reference": "r.json"})", "hw/a.json").start, "");
+    EXPECT_EQ(assignment_from_json(R"({"reference": "r.json", "start": "s.json"})", "hw/a.json").start, "hw/s.json");
+    EXPECT_THROW(assignment_from_json(R"({"reference": "r.json", "start": ""})", "a.json"), std::exception);
+}
+
 TEST(GradeScore, PointsAddUpAndPassNeedsThePassScore) {
     const Assignment a = assignment_from_json(
         R"({"reference": "r.json", "image": {"points": 40},

@@ -8,6 +8,7 @@
 #include "explore/imgui_layer.h"
 #include "explore/keys.h"
 #include "explore/panels.h"
+#include "explore/practice.h"
 #include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/state.h"
@@ -130,8 +131,24 @@ public:
 
     ~Explorer() {
         gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+        practice_.reset();
         renderer_b_.reset();  // GL objects go while the context is still current
         renderer_a_.reset();
+    }
+
+    // --assignment: the reference (a scene one rendered on A, which then
+    // renders the student's scene) and the live grade. False (printed) on a bad reference.
+    bool practise(grading::Assignment assignment) {
+        try {
+            if (!renderer_a_) throw std::runtime_error(state_.error);
+            practice_ = std::make_unique<Practice>(std::move(assignment), *renderer_a_, gl_);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            return false;
+        }
+        state_.practice = practice_->start_status();
+        state_.changed();
+        return true;
     }
 
     // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
@@ -158,6 +175,7 @@ public:
     void wait_for_work() {
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         if (frame_needed() || script_busy) window_.poll();
+        else if (practice_ && practice_->settle_left(state_.practice, window_.time()) >= 0.0) grade_when_settled();
         else if (script_ && script_->idling()) window_.wait(std::max(0.0, script_->idle_until() - window_.time()));
         else if (deferred_programs() > 0) compile_when_idle();
         else window_.wait(-1.0);
@@ -182,6 +200,7 @@ public:
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
         answer_probes();
+        answer_grade_print();
         // After the render: the strip's histogram and timings are this frame's.
         if (state_.show_panels) {
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
@@ -230,6 +249,26 @@ private:
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
+    }
+
+    // The edit has settled (kSettleSeconds without a change, no button held):
+    // grade_one on A, between frames, off the interaction path; then a frame shows it.
+    void grade_when_settled() {
+        const double left = practice_->settle_left(state_.practice, window_.time());
+        if (left > 0.0) return window_.wait(left);
+        if (ImGui::GetIO().MouseDown[0]) return window_.wait(-1.0);  // a drag held still is not over
+        practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+    }
+
+    // --script's `print_grade`: the grade of the scene as it is now (graded at once if stale).
+    void answer_grade_print() {
+        if (!state_.practice.print_requested) return;
+        state_.practice.print_requested = false;
+        if (!practice_) return;
+        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        std::printf("%s\n", grade_line(state_.practice).c_str());
+        std::fflush(stdout);
     }
 
     void step_script() {
@@ -322,6 +361,7 @@ private:
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
+            if (practice_) practice_->scene_changed(state_.practice, window_.time());
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -332,7 +372,9 @@ private:
         if (renderer_a_) {
             std::vector<unsigned> textures = {renderer_a_->display_texture()};
             if (state_.compare) textures.push_back(renderer_b_->display_texture());
-            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
+            const Rect area = practice_ ? practice_->draw_reference(layout.display, int(textures.size()), fb_scale)
+                                        : layout.display;  // --assignment: the reference on the right
+            info_.scale = draw_display(textures, renderer_a_->width(), renderer_a_->height(), area, fb_scale,
                                        &shown_a_);
             hover_readouts();
         }
@@ -382,6 +424,7 @@ private:
     const GlApi& gl_;
     FrameInfo& info_;
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
+    std::unique_ptr<Practice> practice_;  // --assignment
     Readouts readouts_;      // probe, histogram, pick and outline of A
     Rect shown_a_;           // where A was drawn last (ImGui units)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release
@@ -396,6 +439,14 @@ int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
     if (!load_start_scene(state, options)) return 1;
+    std::optional<grading::Assignment> assignment;
+    try {
+        if (!options.assignment_path.empty())
+            assignment = open_assignment(state, options.assignment_path, !options.scene_path.empty());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
     start_history(state);
     std::optional<Script> script;
     if (!options.script_path.empty()) {
@@ -430,6 +481,7 @@ int run_explorer(const ExploreOptions& options) {
 
     // ---- The frame loop: sleep until something happens, then draw one frame ----
     Explorer explorer(options, state, script, window, imgui, gl, info);
+    if (assignment && !explorer.practise(std::move(*assignment))) return 1;
     while (!explorer.done()) {
         explorer.wait_for_work();
         if (explorer.frame_needed()) explorer.draw_frame();

@@ -247,6 +247,12 @@ void print_state(Call& c) {
     std::fflush(stdout);
 }
 
+// --assignment's live grade, printed by the frame loop once it is current.
+void print_grade(Call& c) {
+    if (!c.state.practice.active) throw std::runtime_error("print_grade: no --assignment");
+    c.state.practice.print_requested = true;
+}
+
 // ---- Keys, files and the script itself -----------------------------------------------------
 
 void key(Call& c) {
@@ -292,7 +298,7 @@ const std::map<std::string, Handler>& commands() {
         {"plot_scale", plot_scale}, {"probe", probe},
         {"click", click},           {"light_name", light_name},
         {"section", section},         {"print_state", print_state},
-        {"screenshot_dir", screenshot_dir},
+        {"screenshot_dir", screenshot_dir}, {"print_grade", print_grade},
     };
     return table;
 }

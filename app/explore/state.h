@@ -5,6 +5,7 @@
 
 #include "analysis/plane_curve.h"
 #include "explore/history.h"
+#include "explore/practice_status.h"
 #include "scene/presets.h"
 #include "scene/scene.h"
 
@@ -65,6 +66,9 @@ struct ExplorerState {
     std::vector<std::pair<int, int>> probe_requests, pick_requests;
     // --script's `section NAME open|closed`: the side panel's headers, next frame.
     std::map<std::string, bool> section_requests;
+
+    // --assignment: the live grade shown in the Assignment section (practice.h).
+    PracticeStatus practice;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;

@@ -134,12 +134,13 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     const std::string source = text::quote_name(path);
     const json doc = scene_json::parse_document(text, source);
     const Fields top(doc, source, "");
-    top.only({"title", "reference", "image", "rules", "pass", "time_budget"});
+    top.only({"title", "reference", "start", "image", "rules", "pass", "time_budget"});
     Assignment a;
     a.path = path;
     a.title = top.string("title", std::string("Assignment"));
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     a.reference = (folder / top.string("reference")).string();
+    if (top.has("start")) a.start = (folder / top.string("start")).string();
     if (top.has("image")) {
         const Fields image(top.at("image"), source, "image");
         image.only({"points", "fail_levels", "fail_percent"});

@@ -44,6 +44,8 @@ struct Assignment {
     std::string path;       // the assignment file, as given
     std::string title;
     std::string reference;  // a scene, .png or .pfm, joined to the assignment's folder
+    std::string start;      // optional: the scene a student starts from in `explore --assignment`
+                            // (joined to the folder; grading ignores it), or ""
     double image_points = 0;
     Thresholds image_tolerance;  // only "fail" is used for the score (warn is ignored)
     std::vector<Rule> rules;
