@@ -78,10 +78,13 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
 }
 
 Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
-                LevelImage* render_out) {
-    LevelImage render = render_levels(renderer, scene, false);
+                LevelImage* render_out, Rgb8Image* display_out) {
+    renderer.render(scene);
+    Rgb8Image display = renderer.read_display();
+    LevelImage render = levels_from_png(display, scene.display.bits);  // the levels the display shows
     Grade grade = grade_scene(assignment, scene, reference, render);
     if (render_out) *render_out = std::move(render);
+    if (display_out) *display_out = std::move(display);
     return grade;
 }
 
