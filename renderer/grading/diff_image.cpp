@@ -46,16 +46,29 @@ const std::vector<std::uint8_t>& dimmed_table(int bits) {
     return tables[bits];
 }
 
-// Pixel p of A dimmed, with the table when there is one.
+// A pixel's levels `l` (of A) dimmed, with the table when there is one.
 struct Dimmer {
-    const LevelImage& a;
+    int bits;
     const std::uint8_t* table;
-    std::uint8_t operator()(std::size_t p) const {
-        const std::uint8_t* l = &a.levels[3 * p];
-        if (table) return table[(std::size_t(l[0]) << (2 * a.bits)) | (std::size_t(l[1]) << a.bits) | l[2]];
-        return dimmed(a.bits, l[0], l[1], l[2]);
+    std::uint8_t operator()(const std::uint8_t* l) const {
+        if (table) return table[(std::size_t(l[0]) << (2 * bits)) | (std::size_t(l[1]) << bits) | l[2]];
+        return dimmed(bits, l[0], l[1], l[2]);
     }
 };
+
+// One row of the difference image. Plain pointers: the stores would
+// otherwise make the compiler reload the images' buffers every pixel.
+void difference_row(const std::uint8_t* la, const std::uint8_t* lb, std::uint8_t* out, int width, const Dimmer& dim) {
+    for (int x = 0; x < width; ++x, la += 3, lb += 3, out += 3) {
+        if (la[0] == lb[0] && la[1] == lb[1] && la[2] == lb[2]) {
+            out[0] = out[1] = out[2] = dim(la);
+            continue;
+        }
+        int off = 0;
+        for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(la[c]) - int(lb[c])));
+        diff_colour(off, out);
+    }
+}
 
 int legend_width() {
     int width = text_width("LEVELS OFF:", 2) + 4;
@@ -96,21 +109,11 @@ Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     image.width = std::max(a.width, legend_width());
     image.height = a.height + kLegendHeight;
     image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 3, 0);
-    const Dimmer dim{a, a.bits >= 1 && a.bits <= kMaxTableBits ? dimmed_table(a.bits).data() : nullptr};
+    const Dimmer dim{a.bits, a.bits >= 1 && a.bits <= kMaxTableBits ? dimmed_table(a.bits).data() : nullptr};
+    const std::size_t in_row = std::size_t(a.width) * 3, out_row = std::size_t(image.width) * 3;
     for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) {
-            const std::size_t p = std::size_t(y) * std::size_t(a.width) + std::size_t(x);
-            const std::uint8_t* la = &a.levels[3 * p];
-            const std::uint8_t* lb = &b.levels[3 * p];
-            std::uint8_t* out = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
-            if (la[0] == lb[0] && la[1] == lb[1] && la[2] == lb[2]) {
-                out[0] = out[1] = out[2] = dim(p);
-                continue;
-            }
-            int off = 0;
-            for (std::size_t c = 0; c < 3; ++c) off = std::max(off, std::abs(int(la[c]) - int(lb[c])));
-            diff_colour(off, out);
-        }
+        difference_row(a.levels.data() + std::size_t(y) * in_row, b.levels.data() + std::size_t(y) * in_row,
+                       image.pixels.data() + std::size_t(y) * out_row, a.width, dim);
     draw_legend(image, a.height);
     return image;
 }
