@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 
 namespace m3055::explore {
@@ -142,8 +143,13 @@ grading::Assignment open_assignment(ExplorerState& state, const std::string& pat
     grading::Assignment assignment = grading::load_assignment(path);
     state.save_path = "submission.json";
     if (!scene_given && !assignment.start.empty()) {
-        set_scene(state, load_scene_file(assignment.start),
-                  std::filesystem::path(assignment.start).filename().string() + " (copy)");
+        Scene start;
+        try {
+            start = load_scene_file(assignment.start);
+        } catch (const std::exception& e) {  // the loader names the scene; say which field named it
+            throw std::runtime_error(text::quote_name(path) + ": start: " + text::one_line(e.what()));
+        }
+        set_scene(state, start, std::filesystem::path(assignment.start).filename().string() + " (copy)");
         state.scene_file.clear();  // Ctrl+S asks: the assignment's own file stays as it is
     }
     return assignment;
