@@ -135,9 +135,6 @@ std::string grade_line(const PracticeStatus& status) {
     return line;
 }
 
-}  // namespace m3055::explore
-
-namespace m3055::explore {
 
 grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given) {
     grading::Assignment assignment = grading::load_assignment(path);

@@ -66,9 +66,6 @@ inline constexpr double kSettleSeconds = 0.3;
 // The status line `print_grade` prints: "grade score=S max=M passed=yes|no<TAB>reason<TAB>...".
 std::string grade_line(const PracticeStatus& status);
 
-}  // namespace m3055::explore
-
-namespace m3055::explore {
 
 // --assignment PATH: loads the assignment (throws its one-line error). With
 // no scene given, the student starts from a copy of the assignment's "start"
