@@ -21,7 +21,15 @@ void add_explore_command(CLI::App& app) {
     auto options = std::make_shared<ExploreOptions>();
     CLI::App* explore = app.add_subcommand(
         "explore", "Open the interactive explorer window (needs a display; see README)");
-    explore->add_option("--scene", options->scene_path, "Scene JSON to start with")->check(CLI::ExistingFile);
+    CLI::Option* scene =
+        explore->add_option("--scene", options->scene_path, "Scene JSON to start with")->check(CLI::ExistingFile);
+    // `explore --assignment A.json SCENE.json`: the scene as a positional argument too.
+    explore->add_option("SCENE", options->scene_path, "Scene JSON to start with (as --scene)")
+        ->check(CLI::ExistingFile)->excludes(scene);
+    explore->add_option("--assignment", options->assignment_path,
+                        "Practise an assignment (docs/grading.md): its reference beside the display, the live "
+                        "score and reasons m3055 grade would give")
+        ->check(CLI::ExistingFile);
     explore->add_option("--script", options->script_path,
                         "Text file of UI actions, one per frame (see app/explore/script.h)")
         ->check(CLI::ExistingFile);

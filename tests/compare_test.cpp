@@ -98,6 +98,49 @@ TEST(LevelCompare, PngLevelsRoundTripForEveryBitDepth) {
         }
 }
 
+// levels_from_png computes round(v * top / 255) in integers: every byte value, every depth.
+TEST(LevelCompare, PngBytesMapToTheNearestLevelForEveryByteAndDepth) {
+    Rgb8Image png{256, 1, {}};
+    for (int v = 0; v < 256; ++v) png.pixels.insert(png.pixels.end(), 3, std::uint8_t(v));
+    for (int bits = 1; bits <= 8; ++bits) {
+        const LevelImage levels = levels_from_png(png, bits);
+        for (int v = 0; v < 256; ++v)
+            ASSERT_EQ(levels.levels[3 * std::size_t(v)], std::lround(v * double((1 << bits) - 1) / 255.0))
+                << v << " at " << bits << " bits";
+    }
+}
+
+// The counts (skipping runs of equal pixels) against a plain count, on images
+// with long equal runs and scattered differences at every position in a run.
+TEST(LevelCompare, CountsEqualAPlainCountPixelByPixel) {
+    LevelImage a = flat(97, 31, 7), b = a;
+    std::uint32_t seed = 12345;
+    const auto next = [&seed]() { return seed = seed * 1664525u + 1013904223u; };
+    for (int k = 0; k < 300; ++k) b.levels[(next() >> 8) % b.levels.size()] = std::uint8_t((next() >> 8) % 32);
+    for (std::size_t i = 0; i < 48; ++i) b.levels[b.levels.size() - 1 - i] = 31;  // the tail, past the last whole run
+    const Comparison c = compare_levels(a, b, Thresholds{{2, 0.0}, Threshold{5, 0.0}});
+    std::uint64_t same = 0, over_fail = 0, over_warn = 0, histogram[3][32] = {};
+    int largest = 0;
+    for (std::size_t p = 0; p < c.pixels; ++p) {
+        int off = 0;
+        for (int ch = 0; ch < 3; ++ch) {
+            const int d = std::abs(int(a.levels[3 * p + std::size_t(ch)]) - int(b.levels[3 * p + std::size_t(ch)]));
+            ++histogram[ch][d];
+            off = std::max(off, d);
+        }
+        same += off == 0;
+        over_fail += off > 2;
+        over_warn += off > 5;
+        largest = std::max(largest, off);
+    }
+    EXPECT_EQ(c.same_pixels, same);
+    EXPECT_EQ(c.over_fail, over_fail);
+    EXPECT_EQ(c.over_warn, over_warn);
+    EXPECT_EQ(c.max_levels, largest);
+    for (int ch = 0; ch < 3; ++ch)
+        EXPECT_EQ(c.histogram[ch], std::vector<std::uint64_t>(histogram[ch], histogram[ch] + 32)) << ch;
+}
+
 TEST(LevelCompare, PfmLinearStatsAndRowOrder) {
     RgbFloatImage a{2, 2, std::vector<float>(12, 0.5f)};
     RgbFloatImage b = a;
@@ -127,6 +170,22 @@ TEST(DiffImage, ColoursByLevelsOffWithALegendBand) {
     // Unchanged pixels are grey (the dimmed A), never a class colour.
     EXPECT_EQ(image.pixels[6], image.pixels[7]);
     EXPECT_EQ(image.pixels[7], image.pixels[8]);
+}
+
+// An unchanged pixel is A's luma dimmed, 20 + 60 * luma (from a table at low depths): every colour at 3 bits.
+TEST(DiffImage, UnchangedPixelsAreADimmedGreyOfA) {
+    LevelImage a;
+    a.width = 512;
+    a.height = 1;
+    a.bits = 3;
+    for (int r = 0; r < 8; ++r)
+        for (int g = 0; g < 8; ++g)
+            for (int b = 0; b < 8; ++b) a.levels.insert(a.levels.end(), {std::uint8_t(r), std::uint8_t(g), std::uint8_t(b)});
+    const Rgb8Image image = difference_image(a, a);
+    for (std::size_t p = 0; p < 512; ++p) {
+        const double luma = (0.2126 * a.levels[3 * p] + 0.7152 * a.levels[3 * p + 1] + 0.0722 * a.levels[3 * p + 2]) / 7;
+        ASSERT_EQ(image.pixels[3 * p], std::uint8_t(20 + luma * 60.0)) << p;
+    }
 }
 
 // ---- The command --------------------------------------------------------------

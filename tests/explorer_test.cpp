@@ -521,5 +521,85 @@ TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
     EXPECT_EQ(test::read_text(dir.file("fixed.png")), test::read_text(dir.file("r.png")));
 }
 
+// Issue 14: `explore --assignment A.json SCENE.json` shows the score and the
+// reasons `m3055 grade` gives (both run grading::grade_one): for a worked
+// submission, after an edit that breaks a rule, and for the scene saved with
+// Ctrl+S to submit.
+struct ShownGrade {
+    double score = -1;
+    std::vector<std::string> reasons;
+};
+
+std::vector<ShownGrade> shown_grades(const std::string& out) {
+    std::vector<ShownGrade> grades;
+    std::istringstream lines(out);
+    const std::regex head(R"(grade score=([0-9.]+) max=([0-9.]+) passed=(yes|no))");
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream fields(line);
+        std::string first;
+        std::smatch m;
+        if (!std::getline(fields, first, '\t') || !std::regex_match(first, m, head)) continue;
+        ShownGrade g;
+        g.score = std::stod(m[1]);
+        for (std::string reason; std::getline(fields, reason, '\t');) g.reasons.push_back(reason);
+        grades.push_back(g);
+    }
+    return grades;
+}
+
+nlohmann::json graded_student(const std::string& assignment, const std::string& submissions, const std::string& out,
+                              const std::string& student) {
+    const test::RunResult run = test::run_m3055({"grade", assignment, submissions, "--out", out});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const nlohmann::json grades = nlohmann::json::parse(test::read_text(out + "/grades.json"));
+    for (const auto& s : grades["students"])
+        if (s["student"] == student) return s;
+    ADD_FAILURE() << student << " not in " << out << "/grades.json";
+    return {};
+}
+
+TEST_F(Explorer, AssignmentShowsTheScoreAndReasonsGradeGives) {
+    TempDir dir;
+    const std::string folder = test::source_path("assignments/three-point"), assignment = folder + "/assignment.json";
+    std::filesystem::create_directories(dir.file("mine"));
+    std::filesystem::copy_file(folder + "/submissions/dave.json", dir.file("mine/dave.json"));
+    // dave: metal_blinn, not metal. Then d = 0.5 breaks the range rule too, and Ctrl+S saves.
+    test::write_text(dir.file("script.txt"), "print_grade\nset objects[0].material.d 0.5\nprint_grade\nkey ctrl+s\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--assignment", assignment, dir.file("mine/dave.json"),
+                                                      "--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::vector<ShownGrade> shown = shown_grades(run.out);
+    ASSERT_EQ(shown.size(), 2u) << run.out;
+
+    const nlohmann::json dave = graded_student(assignment, folder + "/submissions", dir.file("out"), "dave");
+    EXPECT_EQ(shown[0].score, dave["score"].get<double>());
+    EXPECT_EQ(shown[0].reasons, dave["reasons"].get<std::vector<std::string>>());
+
+    EXPECT_LT(shown[1].score, shown[0].score);
+    bool range_reason = false;
+    for (const std::string& r : shown[1].reasons) range_reason |= r.find("objects[0].material.d = 0.5") != std::string::npos;
+    EXPECT_TRUE(range_reason) << run.out;
+
+    const nlohmann::json saved = graded_student(assignment, dir.file("mine"), dir.file("out2"), "dave");
+    EXPECT_EQ(saved["score"].get<double>(), shown[1].score);
+    EXPECT_EQ(saved["reasons"].get<std::vector<std::string>>(), shown[1].reasons);
+}
+
+// With no scene, the student starts from a copy of the assignment's "start"
+// scene (never the reference: that would score full marks untouched).
+TEST_F(Explorer, AssignmentWithoutASceneStartsFromACopyOfItsStart) {
+    TempDir dir;
+    const std::string folder = test::source_path("assignments/three-point");
+    test::write_text(dir.file("script.txt"), "print_state\nprint_grade\nsave copy.json\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--assignment", folder + "/assignment.json", "--script",
+                                                      dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("state title=start.json (copy)"), std::string::npos) << run.out;
+    EXPECT_EQ(load_scene_file(dir.file("copy.json")).lights.size(), 1u);
+    const std::vector<ShownGrade> shown = shown_grades(run.out);
+    ASSERT_EQ(shown.size(), 1u) << run.out;
+    EXPECT_LT(shown[0].score, 100.0);
+}
+
 }  // namespace
 }  // namespace m3055

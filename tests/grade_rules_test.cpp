@@ -117,6 +117,39 @@ TEST(GradeAssignment, ErrorsNameTheField) {
               "a.json: pass: must be in [0, 10], got 11");
 }
 
+// "start" (the explorer's starting scene) is optional and, like the reference, relative to the assignment.
+TEST(GradeAssignment, StartIsOptionalAndBesideTheAssignment) {
+    EXPECT_EQ(assignment_from_json(R"({"reference": "r.json"})", "hw/a.json").start, "");
+    EXPECT_EQ(assignment_from_json(R"({"reference": "r.json", "start": "s.json"})", "hw/a.json").start, "hw/s.json");
+    EXPECT_THROW(assignment_from_json(R"({"reference": "r.json", "start": ""})", "a.json"), std::exception);
+}
+
+// Partial credit for the image: full up to fail_percent, none from zero_percent, linear between.
+TEST(GradeScore, ImagePartialCreditFallsLinearlyToZeroPercent) {
+    const std::string image = R"("image": {"points": 40, "fail_levels": 1, "fail_percent": 1)";
+    const Assignment partial = assignment_from_json(R"({"reference": "r.json", )" + image + R"(, "zero_percent": 9}})", "a.json");
+    const Assignment whole = assignment_from_json(R"({"reference": "r.json", )" + image + "}}", "a.json");
+    const Scene scene = scene_from_json(reference_doc(), "s.json");
+    LevelImage reference;
+    reference.width = 100;
+    reference.height = 1;
+    reference.levels.assign(300, 3);
+    const auto with_off = [&](int pixels) {  // `pixels` of 100 two levels off
+        LevelImage render = reference;
+        for (int p = 0; p < pixels; ++p) render.levels[3 * std::size_t(p)] = 5;
+        return render;
+    };
+    EXPECT_EQ(grade_scene(partial, scene, reference, with_off(1)).checks[0].earned, 40);  // 1 %: allowed
+    const Grade half = grade_scene(partial, scene, reference, with_off(5));                // 5 %: (9 - 5) / (9 - 1)
+    EXPECT_EQ(half.checks[0].earned, 20);
+    EXPECT_FALSE(half.checks[0].ok);
+    EXPECT_NE(half.reasons()[0].find(": 20 of 40 points (none at 9 %)"), std::string::npos) << half.reasons()[0];
+    EXPECT_EQ(grade_scene(partial, scene, reference, with_off(9)).checks[0].earned, 0);
+    EXPECT_EQ(grade_scene(whole, scene, reference, with_off(5)).checks[0].earned, 0);  // all or nothing without it
+    EXPECT_THROW(assignment_from_json(R"({"reference": "r.json", )" + image + R"(, "zero_percent": 1}})", "a.json"),
+                 AssignmentError);
+}
+
 TEST(GradeScore, PointsAddUpAndPassNeedsThePassScore) {
     const Assignment a = assignment_from_json(
         R"({"reference": "r.json", "image": {"points": 40},

@@ -63,7 +63,7 @@ int draw_display(const std::vector<Pane>& panes, int w, int h, const Rect& area,
     const int n = static_cast<int>(panes.size());
     const float label_h = ImGui::GetTextLineHeight() + 4.0f;
     Grid g = fit_grid(n, n, w, h, area, fb_scale, label_h);
-    if (n == 3) {  // A and B side by side, |A - B| under A, when that magnifies more
+    if (n >= 3) {  // two columns (e.g. A and B, |A - B| under A) when that magnifies more
         const Grid two_rows = fit_grid(n, 2, w, h, area, fb_scale, label_h);
         if (two_rows.shown > g.shown) g = two_rows;
     }

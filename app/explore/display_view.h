@@ -31,10 +31,10 @@ struct Pane {
 };
 
 // Draws the panes (A; A and B in compare; A, B and |A - B| with the
-// difference pane) centred in `area`, all at the largest whole magnification
-// that fits (shrunk, no longer whole pixels, when even 1:1 does not fit):
-// side by side, or a third pane under the first two when that fits a larger
-// magnification. Returns that scale (0: shrunk). `shown_a`, when given,
+// difference pane; then the assignment's reference with --assignment) centred
+// in `area`, all at the largest whole magnification that fits (shrunk, no
+// longer whole pixels, when even 1:1 does not fit): side by side, or from
+// three panes on in two columns when that fits a larger magnification. Returns that scale (0: shrunk). `shown_a`, when given,
 // receives where A is drawn (ImGui units).
 int draw_display(const std::vector<Pane>& panes, int width, int height, const Rect& area, float fb_scale,
                  Rect* shown_a = nullptr);

@@ -13,6 +13,7 @@
 #include "explore/keys.h"
 #include "explore/panels.h"
 #include "explore/readout_requests.h"
+#include "explore/practice.h"
 #include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/state.h"
@@ -144,6 +145,7 @@ public:
     ~Explorer() {
         gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
         compare_.reset();  // GL objects go while the context is still current
+        practice_.reset();
         state_.plane_curves = nullptr;
         state_.brdf_compile_check = nullptr;
         plane_curves_.reset();
@@ -151,6 +153,21 @@ public:
         brdf_views_.reset();
         renderer_b_.reset();
         renderer_a_.reset();
+    }
+
+    // --assignment: the reference (a scene one rendered on A, which then
+    // renders the student's scene) and the live grade. False (printed) on a bad reference.
+    bool practise(grading::Assignment assignment) {
+        try {
+            if (!renderer_a_) throw std::runtime_error(state_.error);
+            practice_ = std::make_unique<Practice>(std::move(assignment), *renderer_a_, gl_);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            return false;
+        }
+        state_.practice = practice_->start_status();
+        state_.changed();
+        return true;
     }
 
     // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
@@ -179,6 +196,7 @@ public:
         // Watched .brdf files: wake at least every poll period.
         const double most = brdf_files_in_use(state_).empty() ? 1e30 : kBrdfPollSeconds;
         if (frame_needed() || script_busy) window_.poll();
+        else if (practice_ && practice_->settle_left(state_.practice, window_.time()) >= 0.0) grade_when_settled();
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (deferred_programs() > 0) compile_when_idle();
@@ -209,6 +227,7 @@ public:
         render_if_changed();
         answer_probes();
         update_compare();  // the difference pane shows with the panels hidden too
+        answer_grade_print();
         // After the render: the strip's histogram and timings are this frame's.
         if (state_.show_panels) {
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
@@ -259,6 +278,26 @@ private:
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
+    }
+
+    // The edit has settled (kSettleSeconds without a change, no button held):
+    // grade_one on A, between frames, off the interaction path; then a frame shows it.
+    void grade_when_settled() {
+        const double left = practice_->settle_left(state_.practice, window_.time());
+        if (left > 0.0) return window_.wait(left);
+        if (ImGui::GetIO().MouseDown[0]) return window_.wait(-1.0);  // a drag held still is not over
+        practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+    }
+
+    // --script's `print_grade`: the grade of the scene as it is now (graded at once if stale).
+    void answer_grade_print() {
+        if (!state_.practice.print_requested) return;
+        state_.practice.print_requested = false;
+        if (!practice_) return;
+        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        std::printf("%s\n", grade_line(state_.practice).c_str());
+        std::fflush(stdout);
     }
 
     void step_script() {
@@ -377,6 +416,7 @@ private:
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
+            if (practice_) practice_->scene_changed(state_.practice, window_.time());
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -385,10 +425,14 @@ private:
 
     void draw_displays(const Layout& layout, float fb_scale) {
         if (renderer_a_) {
-            std::vector<Pane> panes = {{renderer_a_->display_texture(), "A: the scene (saved, screenshot)"}};
+            // A (with --assignment: the student's scene), B and |A - B| in the
+            // A/B split, and the assignment's reference: one size, one magnification.
+            std::vector<Pane> panes = {{renderer_a_->display_texture(),
+                                        practice_ ? "your scene (Ctrl+S saves it)" : "A: the scene (saved, screenshot)"}};
             if (state_.compare) panes.push_back({renderer_b_->display_texture(), "B: selected object in material B"});
             if (state_.compare && state_.compare_diff && compare_->texture())
                 panes.push_back({compare_->texture(), compare_->scale_label(state_) + "\n" + compare_->count_label()});
+            if (practice_) panes.push_back(practice_->reference_pane());
             info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
                                        &shown_a_);
             hover_readouts();
@@ -443,6 +487,7 @@ private:
     std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
     Readouts readouts_;      // probe, histogram, profile, pick and outline of A
     std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
+    std::unique_ptr<Practice> practice_;  // --assignment
     Rect shown_a_;           // where A was drawn last (ImGui units)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release
     bool pointer_moved_ = false;     // the pointer has moved in the window at least once
@@ -456,6 +501,14 @@ int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
     if (!load_start_scene(state, options)) return 1;
+    std::optional<grading::Assignment> assignment;
+    try {
+        if (!options.assignment_path.empty())
+            assignment = open_assignment(state, options.assignment_path, !options.scene_path.empty());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
     start_history(state);
     std::optional<Script> script;
     if (!options.script_path.empty()) {
@@ -490,6 +543,7 @@ int run_explorer(const ExploreOptions& options) {
 
     // ---- The frame loop: sleep until something happens, then draw one frame ----
     Explorer explorer(options, state, script, window, imgui, gl, info);
+    if (assignment && !explorer.practise(std::move(*assignment))) return 1;
     while (!explorer.done()) {
         explorer.wait_for_work();
         if (explorer.frame_needed()) explorer.draw_frame();

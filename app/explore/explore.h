@@ -8,6 +8,7 @@ namespace m3055 {
 
 struct ExploreOptions {
     std::string scene_path;      // --scene: start with this scene (default: the spec example)
+    std::string assignment_path;  // --assignment: practice against it (the reference beside, the live grade)
     std::string script_path;     // --script: UI actions to run, one per frame (see script.h)
     bool exit_after_script = false;  // --exit-after-script
     std::string capture_window;  // --capture-window: PNG of the whole window when the script

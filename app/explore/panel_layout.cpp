@@ -44,6 +44,7 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
         ImGui::Separator();
     }
 
+    if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
     if (header(state, "Display", true)) display_section(state, info);
     if (header(state, "Material", true)) material_section(state);
     if (header(state, "Lights", true)) lights_section(state);

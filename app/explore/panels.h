@@ -52,6 +52,8 @@ void objects_section(ExplorerState& state);
 void camera_section(ExplorerState& state);
 void compare_section(ExplorerState& state);
 void file_section(ExplorerState& state);
+// --assignment: the live score and reasons (panel_assignment.cpp).
+void assignment_section(ExplorerState& state);
 // The Lights panel's top-down light plot and key-to-fill ratio; true when a drag turned a light.
 bool light_plot(ExplorerState& state);
 // The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.

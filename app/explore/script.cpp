@@ -319,6 +319,12 @@ void print_state(Call& c) {
     std::fflush(stdout);
 }
 
+// --assignment's live grade, printed by the frame loop once it is current.
+void print_grade(Call& c) {
+    if (!c.state.practice.active) throw std::runtime_error("print_grade: no --assignment");
+    c.state.practice.print_requested = true;
+}
+
 // ---- Keys, files and the script itself -----------------------------------------------------
 
 void key(Call& c) {
@@ -367,9 +373,10 @@ const std::map<std::string, Handler>& commands() {
         {"screenshot_dir", screenshot_dir}, {"compare_diff", compare_diff},
         {"diff_scale", diff_scale},   {"print_compare", print_compare},
         {"print_profile", print_profile}, {"save_difference", save_difference},
-        {"screenshot_dir", screenshot_dir}, {"open_brdf", open_brdf_command},
+        {"open_brdf", open_brdf_command},
         {"replace_file", replace_file}, {"print_brdf", print_brdf},
         {"brdf_views", brdf_views},
+        {"print_grade", print_grade},
     };
     return table;
 }

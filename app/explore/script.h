@@ -40,6 +40,8 @@
 //   click X Y               a click on display pixel (X, Y): selects the object there
 //   section NAME open|closed   open or close a side panel section (its header's click)
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
+//   print_grade             (--assignment) print the live grade once current, graded now if stale:
+//                           "grade score=S max=M passed=yes|no<TAB>reason<TAB>..." (the reasons grade writes)
 //   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
 //   screenshot_dir DIR      the folder F12 writes NAME-0001.png ... into

@@ -5,6 +5,7 @@
 
 #include "analysis/plane_curve.h"
 #include "explore/history.h"
+#include "explore/practice_status.h"
 #include "scene/presets.h"
 #include "scene/scene.h"
 
@@ -98,6 +99,8 @@ struct ExplorerState {
     bool views_log = true;
     float lobe_yaw = 0.6f, lobe_pitch = 0.5f;
     BrdfViews* brdf_views = nullptr;
+    // --assignment: the live grade shown in the Assignment section (practice.h).
+    PracticeStatus practice;
 
     // Set by every edit; the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;

@@ -134,18 +134,26 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     const std::string source = text::quote_name(path);
     const json doc = scene_json::parse_document(text, source);
     const Fields top(doc, source, "");
-    top.only({"title", "reference", "image", "rules", "pass", "time_budget"});
+    top.only({"title", "reference", "start", "image", "rules", "pass", "time_budget"});
     Assignment a;
     a.path = path;
     a.title = top.string("title", std::string("Assignment"));
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     a.reference = (folder / top.string("reference")).string();
+    if (top.has("start")) a.start = (folder / top.string("start")).string();
     if (top.has("image")) {
         const Fields image(top.at("image"), source, "image");
-        image.only({"points", "fail_levels", "fail_percent"});
+        image.only({"points", "fail_levels", "fail_percent", "zero_percent"});
         a.image_points = image.number("points", 0, 1e6);
         a.image_tolerance.fail = {int(image.number("fail_levels", 0, 255, 0.0)),
                                   image.number("fail_percent", 0, 100, 0.0)};
+        if (image.has("zero_percent")) {
+            a.image_zero_percent = image.number("zero_percent", 0, 100);
+            if (a.image_zero_percent <= a.image_tolerance.fail.percent)
+                image.fail("image.zero_percent", "must be more than image.fail_percent (" +
+                                                     text::format_number(a.image_tolerance.fail.percent) + "), got " +
+                                                     text::format_number(a.image_zero_percent));
+        }
     }
     if (top.has("rules")) {
         const json& rules = top.at("rules");

@@ -44,8 +44,13 @@ struct Assignment {
     std::string path;       // the assignment file, as given
     std::string title;
     std::string reference;  // a scene, .png or .pfm, joined to the assignment's folder
+    std::string start;      // optional: the scene a student starts from in `explore --assignment`
+                            // (joined to the folder; grading ignores it), or ""
     double image_points = 0;
     Thresholds image_tolerance;  // only "fail" is used for the score (warn is ignored)
+    // Partial credit: with more than fail.percent % of the pixels off, the image
+    // points fall linearly to 0 at this share; 0 = none (all or nothing).
+    double image_zero_percent = 0;
     std::vector<Rule> rules;
     double pass_score = 0;  // a submission passes with at least this score
     double time_budget_s = 30;  // each submission's render budget (capture.h: scene_deadline)

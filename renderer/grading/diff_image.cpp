@@ -3,6 +3,8 @@
 #include "grading/tiny_font.h"
 
 #include <algorithm>
+#include <mutex>
+#include <vector>
 
 namespace m3055::grading {
 
@@ -19,11 +21,53 @@ int diff_class(int off) {
     return off <= 7 ? 4 : 5;
 }
 
-void dimmed(const LevelImage& a, std::size_t p, std::uint8_t rgb[3]) {
-    // A quarter of A's brightness in grey: context, never mistaken for a colour class.
-    const int top = (1 << a.bits) - 1;
-    const double luma = (0.2126 * a.levels[3 * p] + 0.7152 * a.levels[3 * p + 1] + 0.0722 * a.levels[3 * p + 2]) / top;
-    rgb[0] = rgb[1] = rgb[2] = std::uint8_t(20 + luma * 60.0);
+// A quarter of A's brightness in grey: context, never mistaken for a colour class.
+std::uint8_t dimmed(int bits, int r, int g, int b) {
+    const int top = (1 << bits) - 1;
+    const double luma = (0.2126 * r + 0.7152 * g + 0.0722 * b) / top;
+    return std::uint8_t(20 + luma * 60.0);
+}
+
+// dimmed() of every colour at `bits` <= kMaxTableBits, made once a depth
+// (grading makes a difference image a student, on writer threads): most
+// pixels of a difference image are dimmed ones.
+constexpr int kMaxTableBits = 6;
+const std::vector<std::uint8_t>& dimmed_table(int bits) {
+    static std::once_flag made[kMaxTableBits + 1];
+    static std::vector<std::uint8_t> tables[kMaxTableBits + 1];
+    std::call_once(made[bits], [bits]() {
+        const int n = 1 << bits;
+        std::vector<std::uint8_t>& t = tables[bits];
+        t.resize(std::size_t(n) * std::size_t(n) * std::size_t(n));
+        for (int r = 0; r < n; ++r)
+            for (int g = 0; g < n; ++g)
+                for (int b = 0; b < n; ++b) t[std::size_t((r * n + g) * n + b)] = dimmed(bits, r, g, b);
+    });
+    return tables[bits];
+}
+
+// A pixel's levels `l` (of A) dimmed, with the table when there is one.
+struct Dimmer {
+    int bits;
+    const std::uint8_t* table;
+    std::uint8_t operator()(const std::uint8_t* l) const {
+        if (table) return table[(std::size_t(l[0]) << (2 * bits)) | (std::size_t(l[1]) << bits) | l[2]];
+        return dimmed(bits, l[0], l[1], l[2]);
+    }
+};
+
+// One row of the difference image. Plain pointers: the stores would
+// otherwise make the compiler reload the images' buffers every pixel.
+void difference_row(const std::uint8_t* la, const std::uint8_t* lb, std::uint8_t* out, int width, const Dimmer& dim) {
+    for (int x = 0; x < width; ++x, la += 3, lb += 3, out += 3) {
+        if (la[0] == lb[0] && la[1] == lb[1] && la[2] == lb[2]) {
+            out[0] = out[1] = out[2] = dim(la);
+            continue;
+        }
+        int off = 0;
+        for (int c = 0; c < 3; ++c) off = std::max(off, std::abs(int(la[c]) - int(lb[c])));
+        diff_colour(off, out);
+    }
 }
 
 int legend_width() {
@@ -65,18 +109,11 @@ Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     image.width = std::max(a.width, legend_width());
     image.height = a.height + kLegendHeight;
     image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 3, 0);
+    const Dimmer dim{a.bits, a.bits >= 1 && a.bits <= kMaxTableBits ? dimmed_table(a.bits).data() : nullptr};
+    const std::size_t in_row = std::size_t(a.width) * 3, out_row = std::size_t(image.width) * 3;
     for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) {
-            const std::size_t p = std::size_t(y) * std::size_t(a.width) + std::size_t(x);
-            int off = 0;
-            for (std::size_t c = 0; c < 3; ++c)
-                off = std::max(off, std::abs(int(a.levels[3 * p + c]) - int(b.levels[3 * p + c])));
-            std::uint8_t* out = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 3];
-            if (off == 0)
-                dimmed(a, p, out);
-            else
-                diff_colour(off, out);
-        }
+        difference_row(a.levels.data() + std::size_t(y) * in_row, b.levels.data() + std::size_t(y) * in_row,
+                       image.pixels.data() + std::size_t(y) * out_row, a.width, dim);
     draw_legend(image, a.height);
     return image;
 }

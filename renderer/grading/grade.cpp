@@ -1,25 +1,40 @@
 #include "grading/grade.h"
 
 #include "grading/image_input.h"
+#include "io/message_text.h"
 #include "scene/load.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace m3055::grading {
 
 namespace {
 
+// The image points earned with `off` % of the pixels off: all up to the
+// allowed share; with partial credit (image_zero_percent) falling linearly
+// to 0 at that share, to the hundredth of a point; otherwise none.
+double image_points_earned(const Assignment& assignment, double off) {
+    const double allowed = assignment.image_tolerance.fail.percent, zero = assignment.image_zero_percent;
+    if (off <= allowed) return assignment.image_points;
+    if (zero <= allowed || off >= zero) return 0.0;
+    return std::round(assignment.image_points * (zero - off) / (zero - allowed) * 100.0) / 100.0;
+}
+
 Check image_check(const Assignment& assignment, const Comparison& c) {
     Check check;
     check.label = "image";
     check.points = assignment.image_points;
     check.ok = c.verdict != Verdict::fail;
-    check.earned = check.ok ? check.points : 0.0;
+    const double off = 100.0 * double(c.over_fail) / double(c.pixels ? c.pixels : 1);
+    check.earned = check.ok ? check.points : image_points_earned(assignment, off);
     char line[200];
     std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
-                  100.0 * c.same_share(), 100.0 * double(c.over_fail) / double(c.pixels ? c.pixels : 1),
-                  c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
+                  100.0 * c.same_share(), off, c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
     check.reason = std::string("image: ") + line;
+    if (!check.ok && assignment.image_zero_percent > 0)
+        check.reason += ": " + text::format_number(check.earned) + " of " + text::format_number(check.points) +
+                        " points (none at " + text::format_number(assignment.image_zero_percent) + " %)";
     return check;
 }
 
@@ -78,10 +93,13 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
 }
 
 Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
-                LevelImage* render_out) {
-    LevelImage render = render_levels(renderer, scene, false);
+                LevelImage* render_out, Rgb8Image* display_out) {
+    renderer.render(scene);
+    Rgb8Image display = renderer.read_display();
+    LevelImage render = levels_from_png(display, scene.display.bits);  // the levels the display shows
     Grade grade = grade_scene(assignment, scene, reference, render);
     if (render_out) *render_out = std::move(render);
+    if (display_out) *display_out = std::move(display);
     return grade;
 }
 

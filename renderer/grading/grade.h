@@ -40,9 +40,10 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
                   const LevelImage& render);
 
 // Renders `scene` with `renderer` (the caller sets its deadline, if any),
-// then grade_scene. The render is left in *render_out when given.
+// then grade_scene. The render is left in *render_out when given, and the
+// display as read back (what `m3055 render` writes) in *display_out.
 Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
-                LevelImage* render_out = nullptr);
+                LevelImage* render_out = nullptr, Rgb8Image* display_out = nullptr);
 
 // A submission that could not be graded: score 0 of the maximum, `reason`.
 Grade broken_grade(const Assignment& assignment, const std::string& student, const std::string& reason);

@@ -76,9 +76,10 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
             r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                        std::chrono::duration<double>(assignment.time_budget_s)));
         auto render = std::make_shared<LevelImage>();
+        auto display = std::make_shared<Rgb8Image>();
         Grade grade;
         try {
-            grade = grade_one(assignment, scene, r, reference, render.get());  // what the explorer calls too
+            grade = grade_one(assignment, scene, r, reference, render.get(), display.get());  // what the explorer calls too
         } catch (const RenderTimeout&) {
             r.set_deadline(std::nullopt);
             return {broken_grade(assignment, s.student,
@@ -102,9 +103,9 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
         const std::size_t bytes = render->levels.size() * 3;  // levels, display and diff while encoding
         return {std::move(grade),
-                [render, diff, png, diff_png, &reference]() {
-                    // The display's own bytes, from its levels: byte-identical to `m3055 render`.
-                    std::vector<FileContents> files = {{png, encode_png(display_of(*render))}};
+                [render, display, diff, png, diff_png, &reference]() {
+                    // The display as read back, as `m3055 render` writes it.
+                    std::vector<FileContents> files = {{png, encode_png(*display)}};
                     if (diff) files.push_back({diff_png, encode_png(difference_image(reference, *render))});
                     write_files_atomic(files);
                 },

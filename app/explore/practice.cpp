@@ -1,0 +1,141 @@
+#include "explore/practice.h"
+
+#include "grading/grade.h"
+#include "io/message_text.h"
+#include "scene/load.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+namespace m3055::explore {
+
+namespace {
+
+// The image as a texture laid out like the renderer's display texture (row 0
+// at the bottom), so draw_display shows both the same way.
+unsigned upload(const GlApi& gl, const Rgb8Image& image) {
+    std::vector<std::uint8_t> rows(image.pixels.size());
+    const std::size_t stride = std::size_t(image.width) * 3;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.pixels.data() + std::size_t(image.height - 1 - y) * stride, stride, rows.data() + y * stride);
+    unsigned texture = 0;
+    gl.GenTextures(1, &texture);
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    // Nearest, as the display: the reference's dots as they are.
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// grade_one under the assignment's time budget, as grade_run.cpp runs it; a
+// render over the budget scores 0 there, and here says so.
+grading::Grade timed_grade(const grading::Assignment& assignment, const Scene& scene, Renderer& renderer,
+                           const grading::LevelImage& reference) {
+    if (assignment.time_budget_s > 0)
+        renderer.set_deadline(std::chrono::steady_clock::now() +
+                              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(assignment.time_budget_s)));
+    try {
+        grading::Grade grade = grading::grade_one(assignment, scene, renderer, reference);
+        renderer.set_deadline(std::nullopt);
+        return grade;
+    } catch (const RenderTimeout&) {
+        renderer.set_deadline(std::nullopt);
+        return grading::broken_grade(assignment, "", "over its time budget: not drawn within " +
+                                                         text::format_number(assignment.time_budget_s) +
+                                                         " s (the assignment's time_budget)");
+    }
+}
+
+}  // namespace
+
+Practice::Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl)
+    : assignment_(std::move(assignment)), gl_(gl) {
+    reference_ = grading::load_reference(assignment_, &renderer, &shown_);
+    texture_ = upload(gl_, shown_);
+}
+
+Practice::~Practice() {
+    if (texture_) gl_.DeleteTextures(1, &texture_);
+}
+
+PracticeStatus Practice::start_status() const {
+    PracticeStatus status;
+    status.active = true;
+    status.title = assignment_.title;
+    status.reference = std::filesystem::path(assignment_.reference).filename().string();
+    status.pass_score = assignment_.pass_score;
+    status.max = assignment_.max_score();
+    status.pending = true;
+    return status;
+}
+
+void Practice::scene_changed(PracticeStatus& status, double now) {
+    status.pending = true;
+    changed_at_ = now;
+}
+
+double Practice::settle_left(const PracticeStatus& status, double now) const {
+    if (!status.pending) return -1.0;
+    return std::max(0.0, changed_at_ + kSettleSeconds - now);
+}
+
+void Practice::regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const {
+    const auto start = std::chrono::steady_clock::now();
+    grading::Grade grade;
+    try {
+        grade = timed_grade(assignment_, scene, renderer, reference_);
+    } catch (const std::exception& e) {
+        grade = grading::broken_grade(assignment_, "", text::one_line(e.what()));
+    }
+    status.graded = true;
+    status.pending = false;
+    status.score = grade.score;
+    status.max = grade.max;
+    status.passed = grade.passed;
+    status.checks = grade.checks;
+    status.reasons = grade.reasons();
+    status.grade_ms = milliseconds_since(start);
+    ++status.grades;
+}
+
+Pane Practice::reference_pane() const {
+    return {texture_, "reference (" + std::filesystem::path(assignment_.reference).filename().string() + ")"};
+}
+
+std::string grade_line(const PracticeStatus& status) {
+    std::string line = "grade score=" + text::format_number(status.score) + " max=" +
+                       text::format_number(status.max) + " passed=" + (status.passed ? "yes" : "no");
+    for (const std::string& reason : status.reasons) line += "\t" + reason;
+    return line;
+}
+
+
+grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given) {
+    grading::Assignment assignment = grading::load_assignment(path);
+    state.save_path = "submission.json";
+    if (!scene_given && !assignment.start.empty()) {
+        Scene start;
+        try {
+            start = load_scene_file(assignment.start);
+        } catch (const std::exception& e) {  // the loader names the scene; say which field named it
+            throw std::runtime_error(text::quote_name(path) + ": start: " + text::one_line(e.what()));
+        }
+        set_scene(state, start, std::filesystem::path(assignment.start).filename().string() + " (copy)");
+        state.scene_file.clear();  // Ctrl+S asks: the assignment's own file stays as it is
+    }
+    return assignment;
+}
+
+}  // namespace m3055::explore
