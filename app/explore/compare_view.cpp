@@ -46,8 +46,8 @@ void CompareView::upload() {
 
 std::string CompareView::scale_label(const ExplorerState& state) const {
     char text[96];
-    std::snprintf(text, sizeof text, "|A - B| per channel x %d (%s)", scale_used_,
-                  state.diff_scale > 0 ? "chosen" : "auto: the largest difference at full scale");
+    std::snprintf(text, sizeof text, "|A - B| x %d (%s)", scale_used_,
+                  state.diff_scale > 0 ? "chosen" : "auto");
     return text;
 }
 
@@ -57,6 +57,10 @@ std::string CompareView::count_label() const {
                   static_cast<unsigned long long>(difference_.differing),
                   static_cast<unsigned long long>(difference_.pixels), 100.0 * difference_.share());
     return text;
+}
+
+std::string CompareView::pane_count_label() const {
+    return std::to_string(difference_.differing) + " px on another level";
 }
 
 }  // namespace m3055::explore

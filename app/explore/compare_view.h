@@ -37,6 +37,8 @@ public:
     std::string scale_label(const ExplorerState& state) const;
     // "123 of 163840 pixels (0.08 %) on another level": the count's line.
     std::string count_label() const;
+    // "123 px on another level": short enough for one line above the pane.
+    std::string pane_count_label() const;
 
 private:
     void upload();

@@ -40,15 +40,22 @@ struct Grid {
     int columns = 1, rows = 1;
     int scale = 0;      // whole pixels; 0: shrunk
     float shown = 0.0f;  // framebuffer pixels per dot
+    bool label_right = false;  // the second row's one label in the free cell to its right
+    float row_label_h = 0.0f;  // room above each row after the first for its labels
 };
 
-// A second row needs room for the first row's labels above it (one row keeps
-// its labels in the margin above, as before the third pane).
+// Labels sit above their row. Exceptions that keep a whole magnification
+// where it matters: one row keeps its labels in the margin above, and a
+// second row of one pane (A, B and |A - B|) has its label in the free cell to
+// its right, so only the first row's labels need room.
 Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale, float label_h) {
     Grid g;
     g.columns = columns;
     g.rows = (n + columns - 1) / columns;
-    const float room_h = area.h - (g.rows > 1 ? label_h + kCompareGap * float(g.rows - 1) : 0.0f);
+    g.label_right = g.rows == 2 && n == columns + 1;
+    const int label_rows = g.rows == 1 ? 0 : g.label_right ? 1 : g.rows;
+    g.row_label_h = g.rows > 1 && !g.label_right ? label_h : 0.0f;
+    const float room_h = area.h - label_h * float(label_rows) - kCompareGap * float(g.rows - 1);
     const float area_w = (area.w - kCompareGap * float(columns - 1)) * fb_scale / float(columns);
     const float area_h = room_h * fb_scale / float(g.rows);
     g.scale = whole_pixel_scale(w, h, area_w, area_h);
@@ -69,15 +76,17 @@ int draw_display(const std::vector<Pane>& panes, int w, int h, const Rect& area,
     }
     const float iw = float(w) * g.shown / fb_scale, ih = float(h) * g.shown / fb_scale;  // ImGui units
     const float total_w = iw * float(g.columns) + kCompareGap * float(g.columns - 1);
-    const float total_h = ih * float(g.rows) + kCompareGap * float(g.rows - 1) + (g.rows > 1 ? label_h : 0.0f);
+    const float row_label_h = g.row_label_h;
+    const float first_label_h = g.rows > 1 ? label_h : 0.0f;  // one row: in the margin above
+    const float total_h = first_label_h + ih * float(g.rows) + (kCompareGap + row_label_h) * float(g.rows - 1);
     // Snap the corner to a framebuffer pixel so every dot covers whole pixels.
     const float x0 = std::floor((area.x + (area.w - total_w) * 0.5f) * fb_scale) / fb_scale;
     const float y0 =
-        std::floor((area.y + (area.h - total_h) * 0.5f + (g.rows > 1 ? label_h : 0.0f)) * fb_scale) / fb_scale;
+        std::floor((area.y + (area.h - total_h) * 0.5f + first_label_h) * fb_scale) / fb_scale;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     for (int i = 0; i < n; ++i) {
         const int column = i % g.columns, row = i / g.columns;
-        const float x = x0 + float(column) * (iw + kCompareGap), y = y0 + float(row) * (ih + kCompareGap);
+        const float x = x0 + float(column) * (iw + kCompareGap), y = y0 + float(row) * (ih + kCompareGap + row_label_h);
         if (i == 0 && shown_a) *shown_a = {x, y, iw, ih};
         // GL textures store row 0 at the bottom: flip v.
         draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(panes[i].texture)), ImVec2(x, y),
@@ -87,7 +96,8 @@ int draw_display(const std::vector<Pane>& panes, int w, int h, const Rect& area,
         // Labels beside the pictures, never on them: the display stays exactly the screenshot.
         if (n < 2) continue;
         const char* text = panes[i].label.c_str();
-        if (row == 0) draw->AddText(ImVec2(x, y - ImGui::CalcTextSize(text).y - 4), IM_COL32(255, 255, 255, 220), text);
+        if (row == 0 || !g.label_right)
+            draw->AddText(ImVec2(x, y - ImGui::CalcTextSize(text).y - 4), IM_COL32(255, 255, 255, 220), text);
         else  // in the free cell to its right, wrapped to that cell
             draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x + iw + kCompareGap, y),
                           IM_COL32(255, 255, 255, 220), text, nullptr, iw);

@@ -431,7 +431,7 @@ private:
                                         practice_ ? "your scene (Ctrl+S saves it)" : "A: the scene (saved, screenshot)"}};
             if (state_.compare) panes.push_back({renderer_b_->display_texture(), "B: selected object in material B"});
             if (state_.compare && state_.compare_diff && compare_->texture())
-                panes.push_back({compare_->texture(), compare_->scale_label(state_) + "\n" + compare_->count_label()});
+                panes.push_back({compare_->texture(), compare_->scale_label(state_) + ", " + compare_->pane_count_label()});
             if (practice_) panes.push_back(practice_->reference_pane());
             info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
                                        &shown_a_);
