@@ -19,6 +19,11 @@
 namespace m3055::test {
 namespace {
 
+// The stalls and write pauses below last 20 s: ending well before that means
+// the signal ended the run, not the scene finishing. (Not a speed check: a
+// loaded machine may take seconds to schedule the exit.)
+constexpr double kEndedBySignal = 10.0;
+
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
@@ -67,12 +72,12 @@ TEST_P(RenderSignal, DuringTheWriteRemovesTemporariesAndKeepsOldFiles) {
                                                               : signal == SIGTERM ? "SIGTERM"
                                                                                   : "SIGHUP") +
                            ": nothing written\n");
-    EXPECT_LT(after, 2.0);
+    EXPECT_LT(after, kEndedBySignal);
     expect_within(run, Bounds{60, 256});
     EXPECT_TRUE(snapshot(dir.path()) == before) << "a temporary was left or an old file changed";
 }
 
-TEST_P(RenderSignal, DuringASlowSceneEndsWithinASecond) {
+TEST_P(RenderSignal, DuringASlowSceneEndsWithoutFinishingIt) {
     const int signal = GetParam();
     TempDir dir;
     write_stalling_scene(dir.file("slow.json"), 512, 320, 20000);
@@ -86,7 +91,7 @@ TEST_P(RenderSignal, DuringASlowSceneEndsWithinASecond) {
     EXPECT_EQ(run.exit_code, 128 + signal);
     EXPECT_EQ(bad_lines(run.err), "");
     EXPECT_NE(run.err.find(": nothing written\n"), std::string::npos) << run.err;
-    EXPECT_LT(after, 2.0);
+    EXPECT_LT(after, kEndedBySignal);
     EXPECT_TRUE(snapshot(dir.path()) == before);
 }
 
@@ -113,7 +118,7 @@ TEST(BatchSignal, SigtermDuringASlowSceneKeepsWhatWasWrittenAndEndsAtOnce) {
     const std::string last = "m3055: interrupted by SIGTERM: 1 of 3 scenes written, the rest not\n";
     ASSERT_GE(run.err.size(), last.size());
     EXPECT_EQ(run.err.substr(run.err.size() - last.size()), last) << run.err;
-    EXPECT_LT(after, 2.0);
+    EXPECT_LT(after, kEndedBySignal);
     EXPECT_TRUE(fs::exists(dir.file("quick.png")));
     EXPECT_FALSE(fs::exists(dir.file("slow.png")));
     EXPECT_FALSE(fs::exists(dir.file("after.png")));
@@ -133,7 +138,7 @@ TEST(BatchSignal, SighupDuringAWriteRemovesBothTemporaries) {
     const RunResult run = interrupt(batch, SIGHUP, after);
     EXPECT_EQ(run.exit_code, 128 + SIGHUP);
     EXPECT_EQ(run.err, "m3055: interrupted by SIGHUP: 0 of 2 scenes written, the rest not\n");
-    EXPECT_LT(after, 2.0);
+    EXPECT_LT(after, kEndedBySignal);
     EXPECT_FALSE(has_temporary(dir.path()));
     EXPECT_EQ(snapshot(dir.path()).size(), 2u);  // the scene and the manifest, nothing else
 }
