@@ -1,5 +1,7 @@
 #include "explore/compare_view.h"
 
+#include "explore/display_view.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -21,27 +23,7 @@ void CompareView::update(const ExplorerState& state, const Rgb8Image& a, Rendere
     scale_asked_ = state.diff_scale;
     scale_used_ = state.diff_scale > 0 ? state.diff_scale : grading::auto_difference_scale(a, b_display_);
     image_ = grading::scaled_difference(a, b_display_, scale_used_);
-    upload();
-}
-
-// Nearest-neighbour, like the display textures: each dot stays a block of whole pixels.
-void CompareView::upload() {
-    if (!texture_) gl_.GenTextures(1, &texture_);
-    gl_.BindTexture(GL_TEXTURE_2D, texture_);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    // Rows go in bottom to top, as the renderer's display textures store them
-    // (draw_display flips v for all panes alike).
-    const std::size_t stride = std::size_t(image_.width) * 3;
-    std::vector<std::uint8_t> rows(image_.pixels.size());
-    for (int y = 0; y < image_.height; ++y)
-        std::copy_n(image_.pixels.data() + std::size_t(image_.height - 1 - y) * stride, stride,
-                    rows.data() + std::size_t(y) * stride);
-    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image_.width, image_.height, 0, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
-    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    upload_pane_texture(gl_, texture_, image_);
 }
 
 std::string CompareView::scale_label(const ExplorerState& state) const {

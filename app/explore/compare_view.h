@@ -41,8 +41,6 @@ public:
     std::string pane_count_label() const;
 
 private:
-    void upload();
-
     const GlApi& gl_;
     bool fresh_ = false;
     Rgb8Image b_display_, image_;

@@ -105,6 +105,23 @@ int draw_display(const std::vector<Pane>& panes, int w, int h, const Rect& area,
     return std::max(g.scale, 0);
 }
 
+void upload_pane_texture(const GlApi& gl, unsigned& texture, const Rgb8Image& image) {
+    if (!texture) gl.GenTextures(1, &texture);
+    gl.BindTexture(GL_TEXTURE_2D, texture);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const std::size_t stride = std::size_t(image.width) * 3;
+    std::vector<std::uint8_t> rows(image.pixels.size());
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.pixels.data() + std::size_t(image.height - 1 - y) * stride, stride,
+                    rows.data() + std::size_t(y) * stride);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+}
+
 Rgb8Image read_window(const GlApi& gl, int width, int height) {
     Rgb8Image image;
     image.width = width;

@@ -39,6 +39,11 @@ struct Pane {
 int draw_display(const std::vector<Pane>& panes, int width, int height, const Rect& area, float fb_scale,
                  Rect* shown_a = nullptr);
 
+// Puts `image` (rows top to bottom, as PNGs) into `texture` (made when 0) the
+// way the renderer's display textures hold theirs: rows bottom to top,
+// nearest-neighbour, so draw_display shows every pane alike, dot for dot.
+void upload_pane_texture(const GlApi& gl, unsigned& texture, const Rgb8Image& image);
+
 // The whole window as the user sees it (the back buffer, after ImGui has drawn).
 Rgb8Image read_window(const GlApi& gl, int width, int height);
 

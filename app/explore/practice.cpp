@@ -14,26 +14,6 @@ namespace m3055::explore {
 
 namespace {
 
-// The image as a texture laid out like the renderer's display texture (row 0
-// at the bottom), so draw_display shows both the same way.
-unsigned upload(const GlApi& gl, const Rgb8Image& image) {
-    std::vector<std::uint8_t> rows(image.pixels.size());
-    const std::size_t stride = std::size_t(image.width) * 3;
-    for (int y = 0; y < image.height; ++y)
-        std::copy_n(image.pixels.data() + std::size_t(image.height - 1 - y) * stride, stride, rows.data() + y * stride);
-    unsigned texture = 0;
-    gl.GenTextures(1, &texture);
-    gl.BindTexture(GL_TEXTURE_2D, texture);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image.width, image.height, 0, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
-    // Nearest, as the display: the reference's dots as they are.
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return texture;
-}
-
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -63,7 +43,7 @@ grading::Grade timed_grade(const grading::Assignment& assignment, const Scene& s
 Practice::Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl)
     : assignment_(std::move(assignment)), gl_(gl) {
     reference_ = grading::load_reference(assignment_, &renderer, &shown_);
-    texture_ = upload(gl_, shown_);
+    upload_pane_texture(gl_, texture_, shown_);
 }
 
 Practice::~Practice() {
