@@ -55,7 +55,10 @@ void brdf_material_note(const ExplorerState& state, const Material& material) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(kRed, "%s", state.brdf_error.c_str());
     ImGui::PopTextWrapPos();
+    // The error may be about a file another object (or an undone step) uses:
+    // say whose it is rather than seem to blame the selected material.
     if (model && model->path == state.brdf_error_path) ImGui::TextDisabled("(showing the last version that compiled)");
+    else ImGui::TextDisabled("(not the selected object's material: %s)", state.brdf_error_path.c_str());
 }
 
 }  // namespace m3055::explore
