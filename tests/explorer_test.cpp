@@ -457,18 +457,25 @@ TEST_F(Explorer, CompareReadoutsEqualTheHeadlessRenders) {
     EXPECT_GT(at_b.first, at_a.first + a.width);
     EXPECT_EQ(at_diff.first, at_a.first);
     EXPECT_GT(at_diff.second, at_a.second + a.height);
-    // The profile of row 170: the levels whose PNG values the headless render has there.
-    const std::regex profile_line("profile row 170 bits 5\tR([ 0-9]+)\tG([ 0-9]+)\tB([ 0-9]+)\n");
-    std::smatch match;
-    ASSERT_TRUE(std::regex_search(run.out, match, profile_line)) << run.out;
-    for (int c = 0; c < 3; ++c) {
-        std::istringstream levels(match[c + 1].str());
-        int x = 0;
-        for (int level; levels >> level; ++x) {
-            ASSERT_LT(x, a.width);
-            EXPECT_EQ(std::lround(level * 255.0 / 31.0), a.pixels[(std::size_t(170) * a.width + x) * 3 + c]) << x;
+    // The profiles of row 170, A's and B's (dashed in the plot): the levels
+    // whose PNG values the headless renders have there (they differ there).
+    const std::size_t row_bytes = std::size_t(a.width) * 3, row_170 = 170 * row_bytes;
+    ASSERT_FALSE(std::equal(a.pixels.begin() + long(row_170), a.pixels.begin() + long(row_170 + row_bytes),
+                            b.pixels.begin() + long(row_170)));
+    for (const auto& [name, image] : {std::make_pair(std::string("profile"), &a), std::make_pair(std::string("profile_b"), &b)}) {
+        const std::regex profile_line(name + " row 170 bits 5\tR([ 0-9]+)\tG([ 0-9]+)\tB([ 0-9]+)\n");
+        std::smatch match;
+        ASSERT_TRUE(std::regex_search(run.out, match, profile_line)) << name << "\n" << run.out;
+        for (int c = 0; c < 3; ++c) {
+            std::istringstream levels(match[c + 1].str());
+            int x = 0;
+            for (int level; levels >> level; ++x) {
+                ASSERT_LT(x, image->width);
+                EXPECT_EQ(std::lround(level * 255.0 / 31.0), image->pixels[(std::size_t(170) * image->width + x) * 3 + c])
+                    << name << " " << x;
+            }
+            EXPECT_EQ(x, image->width) << "one level per column";
         }
-        EXPECT_EQ(x, a.width) << "one level per column";
     }
 }
 

@@ -33,6 +33,7 @@ public:
     unsigned texture() const { return texture_; }
     int scale_used() const { return scale_used_; }
     const Rgb8Image& difference_image() const { return image_; }
+    const Rgb8Image& b_display() const { return b_display_; }  // B as shown, this render
     // "|A - B| x 4 (auto)": the pane's label.
     std::string scale_label(const ExplorerState& state) const;
     // "123 of 163840 pixels (0.08 %) on another level": the count's line.

@@ -232,6 +232,7 @@ public:
         if (state_.show_panels) {
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
+            info_.profile_b = profile_of_b();
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
             draw_brdf_views(state_);
         }
@@ -362,6 +363,14 @@ private:
         }
     }
 
+    // B's levels on the profile's row, drawn dashed beside A's (the A/B split).
+    const RowProfile* profile_of_b() {
+        profile_b_.reset();
+        if (!state_.compare || !info_.profile || compare_->b_display().pixels.empty()) return nullptr;
+        profile_b_ = row_profile(compare_->b_display(), state_.scene.display.bits, info_.profile->row);
+        return &*profile_b_;
+    }
+
     // The scanline profile follows the row under the mouse on A, and keeps the
     // last one when the mouse leaves the display.
     void note_hovered_row() {
@@ -486,6 +495,7 @@ private:
     std::unique_ptr<PlaneCurves> plane_curves_;          // the polar plot of .brdf models (GPU)
     std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
     Readouts readouts_;      // probe, histogram, profile, pick and outline of A
+    std::optional<RowProfile> profile_b_;  // B's levels on the profile's row
     std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
     std::unique_ptr<Practice> practice_;  // --assignment
     Rect shown_a_;           // where A was drawn last (ImGui units)

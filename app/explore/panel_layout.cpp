@@ -123,7 +123,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     ImGui::SameLine(0.0f, gap);
     ImGui::BeginGroup();  // what the polar plot left, less the statistics
     const float profile_w = std::max(120.0f, ImGui::GetContentRegionAvail().x - stats_w - gap);
-    profile_plot(info.profile, profile_w, room.y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
+    profile_plot(info.profile, info.profile_b, profile_w, room.y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
     ImGui::EndGroup();
 
     ImGui::SameLine(0.0f, gap);

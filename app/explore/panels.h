@@ -23,6 +23,7 @@ struct FrameInfo {
     int scale = 1;            // whole-pixel magnification of the display
     const LevelHistogram* histogram = nullptr;  // of A's display, this frame
     const RowProfile* profile = nullptr;        // A's levels on the last hovered row (none yet: nullptr)
+    const RowProfile* profile_b = nullptr;      // B's on the same row in the A/B split (else nullptr)
     std::string compare_count;                  // the A/B split's "N of M pixels on another level", or ""
 };
 

@@ -9,7 +9,8 @@
 namespace m3055::explore {
 
 // Draws `profile` (nullptr: a note to hover the display) in a box of
-// `width` x `height` pixels, the row named above it; hovering a column shows its levels.
-void profile_plot(const RowProfile* profile, float width, float height);
+// `width` x `height` pixels, the row named above it; hovering a column shows
+// its levels. `b` (the A/B split; may be nullptr) is drawn dashed, as in the polar plot.
+void profile_plot(const RowProfile* profile, const RowProfile* b, float width, float height);
 
 }  // namespace m3055::explore

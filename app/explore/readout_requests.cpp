@@ -10,9 +10,9 @@ namespace m3055::explore {
 
 namespace {
 
-// "profile row Y bits B<TAB>R l l l ...<TAB>G ...<TAB>B ..."
-void print_profile(const RowProfile& profile) {
-    std::string line = "profile row " + std::to_string(profile.row) + " bits " + std::to_string(profile.bits);
+// "profile row Y bits B<TAB>R l l l ...<TAB>G ...<TAB>B ..." ("profile_b ..." for B's, dashed)
+void print_profile(const RowProfile& profile, const char* name = "profile") {
+    std::string line = std::string(name) + " row " + std::to_string(profile.row) + " bits " + std::to_string(profile.bits);
     const char* names[3] = {"R", "G", "B"};
     for (std::size_t c = 0; c < 3; ++c) {
         line += std::string("\t") + names[c];
@@ -27,6 +27,10 @@ void answer(const std::string& request, ExplorerState& state, Readouts& readouts
         const RowProfile* profile = readouts.profile(state, a);
         if (!profile) throw std::runtime_error("print_profile: no row hovered yet");
         print_profile(*profile);
+        if (state.compare) {  // B's row, as the plot draws it dashed
+            compare.update(state, readouts.display_image(a), b);
+            print_profile(row_profile(compare.b_display(), state.scene.display.bits, profile->row), "profile_b");
+        }
         return;
     }
     if (!state.compare) throw std::runtime_error(request + ": the A/B split is off");

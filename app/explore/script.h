@@ -35,7 +35,7 @@
 //   diff_scale auto|N       its scale (N a whole number in 1 ... 255)
 //   print_compare           print "compare differing=N pixels=M scale=S" (pixels on another level)
 //   save_difference PATH    the difference pane's image as a PNG, at display resolution
-//   print_profile [Y]       hover row Y of A (optional), then print the scanline profile:
+//   print_profile [Y]       hover row Y of A (optional), then print the scanline profile (and B's, "profile_b ...", in the split):
 //                           "profile row Y bits B<TAB>R l l ...<TAB>G ...<TAB>B ..." (display levels)
 //   click X Y               a click on display pixel (X, Y): selects the object there
 //   section NAME open|closed   open or close a side panel section (its header's click)
