@@ -22,14 +22,17 @@ void add_explore_command(CLI::App& app) {
     CLI::App* explore = app.add_subcommand(
         "explore", "Open the interactive explorer window (needs a display; see README)");
     CLI::Option* scene =
-        explore->add_option("--scene", options->scene_path, "Scene JSON to start with")->check(CLI::ExistingFile);
+        explore->add_option("--scene", options->scene_path, "Scene JSON to start with (with --assignment it may be new: "
+                            "the assignment's start scene, saved there)");
     // `explore --assignment A.json SCENE.json`: the scene as a positional argument too.
-    explore->add_option("SCENE", options->scene_path, "Scene JSON to start with (as --scene)")
-        ->check(CLI::ExistingFile)->excludes(scene);
+    explore->add_option("SCENE", options->scene_path, "Scene JSON to start with (as --scene)")->excludes(scene);
     explore->add_option("--assignment", options->assignment_path,
                         "Practise an assignment (docs/grading.md): its reference beside the display, the live "
                         "score and reasons m3055 grade would give")
         ->check(CLI::ExistingFile);
+    explore->add_flag("--allow-brdf", options->allow_brdf,
+                      "With --assignment: grade .brdf materials as m3055 grade --allow-brdf does (without it they "
+                      "score 0, as grade gives them)");
     explore->add_option("--script", options->script_path,
                         "Text file of UI actions, one per frame (see app/explore/script.h)")
         ->check(CLI::ExistingFile);

@@ -61,7 +61,8 @@ void run_grade(const GradeOptions& options) {
         run);
     std::size_t passed = 0;
     for (const auto& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
-    std::fprintf(stderr, "m3055: graded %zu submissions, %zu passed; wrote %s\n", report.students.size(), passed,
+    std::fprintf(stderr, "m3055: graded %zu submission%s, %zu passed; wrote %s\n", report.students.size(),
+                 report.students.size() == 1 ? "" : "s", passed,
                  text::quote_name(options.out + "/report.html").c_str());
 }
 
@@ -72,7 +73,7 @@ void add_grade_command(CLI::App& app) {
     CLI::App* command = app.add_subcommand(
         "grade", "Grade a folder of submitted scenes against an assignment: grades.csv, grades.json, report.html");
     command->add_option("assignment", options->assignment, "Assignment JSON (docs/grading.md)");
-    command->add_option("submissions", options->submissions, "Folder of NAME.json or NAME/scene.json submissions");
+    command->add_option("submissions", options->submissions, "Folder of NAME.json or NAME/scene.json submissions, or one NAME.json");
     command->add_option("--out", options->out, "Output folder")->required();
     command->add_option("--shard", options->shard, "Grade only shard K of N (sorted names), e.g. 2/4")
         ->capture_default_str();

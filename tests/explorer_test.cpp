@@ -514,6 +514,7 @@ TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
     ASSERT_EQ(reports.size(), 3u) << run.out;
     EXPECT_NE(reports[0].find("mine.brdf:" + std::to_string(line) + ": error:"), std::string::npos) << reports[0];
     EXPECT_NE(reports[0].find("no_such_thing"), std::string::npos) << reports[0];
+    EXPECT_NE(reports[0].find("status=not reloaded mine.brdf: an error"), std::string::npos) << reports[0];
     EXPECT_NE(reports[1].find("mine.brdf:" + std::to_string(param_line) + ": shininess: DEFAULT -5"), std::string::npos)
         << reports[1];
     EXPECT_EQ(reports[2], "brdf error=\tstatus=reloaded mine.brdf\terror=")
@@ -594,6 +595,40 @@ TEST_F(Explorer, AssignmentShowsTheScoreAndReasonsGradeGives) {
 
 // With no scene, the student starts from a copy of the assignment's "start"
 // scene (never the reference: that would score full marks untouched).
+// A first practice names the file to submit before it exists: the start
+// scene, written there by Ctrl+S. A .brdf material scores 0 with grade's
+// reason unless --allow-brdf, as `m3055 grade` does.
+TEST_F(Explorer, AssignmentNewSceneFileAndBrdfPermissionAsGradeHasThem) {
+    TempDir dir;
+    const std::string assignment = test::source_path("assignments/three-point/assignment.json");
+    test::write_text(dir.file("new.txt"), "print_state\nkey ctrl+s\n");
+    const ExplorerRun fresh = run_explorer(dir.path(), {"--assignment", assignment, "mine.json", "--script",
+                                                        dir.file("new.txt"), "--exit-after-script"});
+    ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+    EXPECT_EQ(load_scene_file(dir.file("mine.json")).lights.size(), 1u) << "the start scene, saved where named";
+
+    std::filesystem::copy_file(test::source_path("tests/data/brdf/lambert.brdf"), dir.file("lambert.brdf"));
+    nlohmann::json scene = nlohmann::json::parse(test::read_text(dir.file("mine.json")));
+    scene["objects"][0]["material"] = {{"model", "brdf"}, {"file", "lambert.brdf"}};
+    test::write_text(dir.file("brdf.json"), scene.dump());
+    test::write_text(dir.file("grade.txt"), "print_grade\n");
+    for (const bool allow : {false, true}) {
+        std::vector<std::string> args = {"--assignment", assignment, "brdf.json", "--script", dir.file("grade.txt"),
+                                         "--exit-after-script"};
+        if (allow) args.push_back("--allow-brdf");
+        const ExplorerRun run = run_explorer(dir.path(), args);
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const std::vector<ShownGrade> shown = shown_grades(run.out);
+        ASSERT_EQ(shown.size(), 1u) << run.out;
+        const std::string refusal = "objects[0].material.file: a .brdf file is code";
+        const bool refused = !shown[0].reasons.empty() && shown[0].reasons[0].find(refusal) != std::string::npos;
+        EXPECT_EQ(refused, !allow) << run.out;
+        if (!allow) EXPECT_EQ(shown[0].score, 0.0);
+        // Graded: the rules see the file's model, named as people read it.
+        if (allow) EXPECT_NE(run.out.find("objects[0] is lambert (.brdf), not metal"), std::string::npos) << run.out;
+    }
+}
+
 TEST_F(Explorer, AssignmentWithoutASceneStartsFromACopyOfItsStart) {
     TempDir dir;
     const std::string folder = test::source_path("assignments/three-point");

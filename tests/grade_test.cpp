@@ -60,6 +60,25 @@ TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
     EXPECT_TRUE(file_exists(dir.file("out/zoe.png")));
 }
 
+// A student checks the one file they will submit: the same grade as in the class's folder.
+TEST(Grade, OneSceneFileIsGradedAsInTheFolder) {
+    TempDir dir;
+    const RunResult one = run_m3055({"grade", kAssignment, kSubmissions + "/dave.json", "--out", dir.file("one")});
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    EXPECT_NE(one.err.find("graded 1 submission, 0 passed"), std::string::npos) << one.err;
+    const RunResult all = run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("all")});
+    ASSERT_EQ(all.exit_code, 0) << all.err;
+    const auto alone = by_student(read_json(dir.file("one/grades.json")));
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_EQ(alone.at("dave"), by_student(read_json(dir.file("all/grades.json"))).at("dave"));
+    EXPECT_EQ(read_text(dir.file("one/dave-diff.png")), read_text(dir.file("all/dave-diff.png")));
+    write_text(dir.file("notes.txt"), "not a scene");
+    const RunResult text = run_m3055({"grade", kAssignment, dir.file("notes.txt"), "--out", dir.file("bad")});
+    EXPECT_EQ(text.exit_code, 1);
+    EXPECT_NE(text.err.find("notes.txt: not a submissions folder nor a .json scene file"), std::string::npos) << text.err;
+    EXPECT_FALSE(file_exists(dir.file("bad/grades.csv")));
+}
+
 TEST(Grade, WorkedAssignmentScores) {
     TempDir out;
     const RunResult run = run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path(), "--gradescope",

@@ -53,11 +53,13 @@ void reload(ExplorerState& state, const std::string& path) {
             retire_brdf_model(fresh.front().model());  // or no general program compiles again
             state.brdf_error = error;
             state.brdf_error_path = path;
+            state.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
             return;
         }
     } catch (const std::exception& e) {  // BrdfError: "FILE:LINE: problem"
         state.brdf_error = e.what();
         state.brdf_error_path = path;
+        state.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
         return;
     }
     for (std::size_t i = 0; i < users.size(); ++i) *users[i] = fresh[i];

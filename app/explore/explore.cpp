@@ -94,8 +94,15 @@ void write_stats(const std::string& path, long frames, long renders, const Scrip
 }
 
 // The starting scene: --scene, or the spec example. False (message printed) on a bad file.
+// `explore --assignment A.json NEW.json` with no NEW.json yet: a student's
+// first practice; the assignment's start scene is the scene, saved as NEW.json.
+bool new_submission(const ExploreOptions& options) {
+    return !options.assignment_path.empty() && !options.scene_path.empty() &&
+           !std::filesystem::exists(options.scene_path);
+}
+
 bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
-    if (options.scene_path.empty()) {
+    if (options.scene_path.empty() || new_submission(options)) {
         set_scene(state, default_scene(), "spec example");
         return true;
     }
@@ -160,7 +167,7 @@ public:
     bool practise(grading::Assignment assignment) {
         try {
             if (!renderer_a_) throw std::runtime_error(state_.error);
-            practice_ = std::make_unique<Practice>(std::move(assignment), *renderer_a_, gl_);
+            practice_ = std::make_unique<Practice>(std::move(assignment), *renderer_a_, gl_, options_.allow_brdf);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
             return false;
@@ -513,8 +520,14 @@ int run_explorer(const ExploreOptions& options) {
     if (!load_start_scene(state, options)) return 1;
     std::optional<grading::Assignment> assignment;
     try {
-        if (!options.assignment_path.empty())
-            assignment = open_assignment(state, options.assignment_path, !options.scene_path.empty());
+        if (!options.assignment_path.empty()) {
+            const bool fresh = new_submission(options);
+            assignment = open_assignment(state, options.assignment_path, !options.scene_path.empty() && !fresh);
+            if (fresh) {  // Ctrl+S writes the named file: the one the student will submit
+                state.scene_file = state.save_path = options.scene_path;
+                state.status = "new submission: the assignment's start scene; Ctrl+S writes " + options.scene_path;
+            }
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -15,6 +15,7 @@ struct ExploreOptions {
                                  // ends (or after the first frames without a script)
     std::string stats_path;      // --stats: JSON with frame counts, written at exit
     bool compile_at_once = false;  // --compile-at-once: no deferral (the stall before issue 12, to compare)
+    bool allow_brdf = false;     // --allow-brdf: with --assignment, grade .brdf materials as grade --allow-brdf
     int window_width = 1500;
     int window_height = 940;
 };

@@ -22,11 +22,6 @@ std::string light_label(const Scene& scene, int i) {
     return "light " + std::to_string(i) + (light.name.empty() ? "" : " \"" + light.name + "\"");
 }
 
-// The model's scene name, or for a .brdf model (internally "brdf_16") its file's label.
-std::string shown_name(const Material& material) {
-    return material.model().family == Family::brdf ? material.model().label : material.model_name();
-}
-
 void light_combo(ExplorerState& state) {
     const int count = static_cast<int>(state.scene.lights.size());
     state.plotted_light = std::clamp(state.plotted_light, 0, count - 1);
@@ -94,8 +89,8 @@ void plot_section(ExplorerState& state, float width, float height) {
     std::optional<PlaneCurve> b;
     if (state.compare) b = curve_of(state.material_b);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);  // the column's width, not the strip's
-    ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, shown_name(*material).c_str(),
-                b ? ("; dashed: B " + shown_name(state.material_b)).c_str() : "", incidence);
+    ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, material->shown_name().c_str(),
+                b ? ("; dashed: B " + state.material_b.shown_name()).c_str() : "", incidence);
     ImGui::PushStyleColor(ImGuiCol_Text, curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1));
     ImGui::TextWrapped("%s", curve.quantity().c_str());
     ImGui::PopStyleColor();

@@ -55,7 +55,7 @@ void objects_section(ExplorerState& state) {
     for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
         ImGui::PushID(i);
         const std::string label = std::string(to_string(objects[i].shape)) + " " + std::to_string(i) + ": " +
-                                  objects[i].material.model_name().c_str();
+                                  objects[i].material.shown_name();
         if (ImGui::Selectable(label.c_str(), state.selected_object == i)) state.selected_object = i;
         tooltip("Select: the Material panel edits this object (a click on it in the display does the same).");
         if (state.selected_object == i) {

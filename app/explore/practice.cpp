@@ -2,6 +2,8 @@
 
 #include "grading/grade.h"
 #include "io/message_text.h"
+#include "models/model_spec.h"
+#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <algorithm>
@@ -13,6 +15,13 @@
 namespace m3055::explore {
 
 namespace {
+
+// The first object whose material comes from a .brdf file, or -1.
+int first_brdf_object(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].material.model().family == Family::brdf) return int(i);
+    return -1;
+}
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -40,8 +49,8 @@ grading::Grade timed_grade(const grading::Assignment& assignment, const Scene& s
 
 }  // namespace
 
-Practice::Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl)
-    : assignment_(std::move(assignment)), gl_(gl) {
+Practice::Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl, bool allow_brdf)
+    : assignment_(std::move(assignment)), gl_(gl), allow_brdf_(allow_brdf) {
     reference_ = grading::load_reference(assignment_, &renderer, &shown_);
     upload_pane_texture(gl_, texture_, shown_);
 }
@@ -75,7 +84,13 @@ void Practice::regrade(PracticeStatus& status, const Scene& scene, Renderer& ren
     const auto start = std::chrono::steady_clock::now();
     grading::Grade grade;
     try {
-        grade = timed_grade(assignment_, scene, renderer, reference_);
+        // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
+        const int brdf_object = allow_brdf_ ? -1 : first_brdf_object(scene);
+        if (brdf_object >= 0)
+            grade = grading::broken_grade(assignment_, "", "objects[" + std::to_string(brdf_object) +
+                                                               "].material.file: " +
+                                                               scene_json::brdf_not_allowed_reason());
+        else grade = timed_grade(assignment_, scene, renderer, reference_);
     } catch (const std::exception& e) {
         grade = grading::broken_grade(assignment_, "", text::one_line(e.what()));
     }

@@ -24,7 +24,9 @@ public:
     // Loads the reference (a scene reference is rendered once with `renderer`,
     // which the caller then re-renders its own scene on). Throws with the
     // loader's one-line message.
-    Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl);
+    // `allow_brdf`: grade .brdf materials as `m3055 grade --allow-brdf` does
+    // (without it a scene with one scores 0 with grade's reason).
+    Practice(grading::Assignment assignment, Renderer& renderer, const GlApi& gl, bool allow_brdf);
     ~Practice();
     Practice(const Practice&) = delete;
     Practice& operator=(const Practice&) = delete;
@@ -56,6 +58,7 @@ private:
     const GlApi& gl_;
     unsigned texture_ = 0;      // shown_, rows bottom to top like the renderer's display texture
     double changed_at_ = 0;
+    bool allow_brdf_ = false;
 };
 
 // Seconds without a further change before the grade is recomputed: a slider

@@ -73,7 +73,7 @@ PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbF
     const PixelHit hit = picker.pick(x, y);
     p.object = hit.object;
     if (hit.object < 0) return p;
-    p.model = scene.objects[std::size_t(hit.object)].material.model_name();
+    p.model = scene.objects[std::size_t(hit.object)].material.shown_name();
     if (light < 0 || light >= static_cast<int>(scene.lights.size())) return p;
     const dvec3 L = ref::sample_light(scene.lights[std::size_t(light)], hit.P).L;
     p.lit = true;

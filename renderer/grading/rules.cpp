@@ -32,8 +32,9 @@ Check check_model(const Rule& rule, const Scene& scene) {
                                        std::to_string(scene.objects.size()) + " objects)");
     for (int i = 0; i < int(scene.objects.size()); ++i) {
         if (rule.object >= 0 && i != rule.object) continue;
-        const std::string& model = scene.objects[std::size_t(i)].material.model_name();
-        if (model != rule.text) return result(rule, false, object_name(i) + " is " + model + ", not " + rule.text);
+        const Material& material = scene.objects[std::size_t(i)].material;
+        if (material.model_name() != rule.text)
+            return result(rule, false, object_name(i) + " is " + material.shown_name() + ", not " + rule.text);
     }
     if (scene.objects.empty()) return result(rule, false, "the scene has no objects");
     return result(rule, true, (rule.object >= 0 ? object_name(rule.object) : "every object") + " is " + rule.text);
@@ -78,7 +79,7 @@ Check check_eq14(const Rule& rule, const Scene& scene) {
     if (rule.object >= int(scene.objects.size())) return result(rule, false, "no " + object_name(rule.object));
     const Material& material = scene.objects[std::size_t(rule.object)].material;
     if (material.model().family != Family::metal)
-        return result(rule, false, object_name(rule.object) + " is " + material.model_name() + ", not a metal model");
+        return result(rule, false, object_name(rule.object) + " is " + material.shown_name() + ", not a metal model");
     const double peak = highlight_peak(material);
     const double off = 100.0 * std::abs(peak - 1.0);
     const bool ok = off <= rule.max;

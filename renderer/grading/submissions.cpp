@@ -34,11 +34,17 @@ Submission from_entry(const fs::directory_entry& entry) {
     return s;
 }
 
-}  // namespace
-
-std::vector<Submission> find_submissions(const std::string& folder) {
+// The folder's NAME.json files and NAME/ folders, or one scene file (a
+// student checking the file they will submit).
+std::vector<Submission> list_entries(const std::string& folder) {
     std::vector<Submission> all;
     std::error_code error;
+    if (fs::is_regular_file(folder, error)) {
+        if (fs::path(folder).extension() != ".json")
+            throw std::runtime_error(text::quote_name(folder) + ": not a submissions folder nor a .json scene file");
+        all.push_back(from_entry(fs::directory_entry(folder)));
+        return all;
+    }
     fs::directory_iterator it(folder, error);
     if (error) throw std::runtime_error(text::quote_name(folder) + ": cannot read the submissions folder: " + error.message());
     for (const fs::directory_entry& entry : it) {
@@ -49,6 +55,13 @@ std::vector<Submission> find_submissions(const std::string& folder) {
         const bool json = entry.path().extension() == ".json";
         if (folder_entry || json) all.push_back(from_entry(entry));
     }
+    return all;
+}
+
+}  // namespace
+
+std::vector<Submission> find_submissions(const std::string& folder) {
+    std::vector<Submission> all = list_entries(folder);
     std::sort(all.begin(), all.end(), [](const Submission& a, const Submission& b) { return a.student < b.student; });
     std::set<std::string> names;
     for (const Submission& s : all) names.insert(s.student);

@@ -17,7 +17,8 @@ struct Submission {
 };
 
 // Every NAME.json and every folder (hidden entries, starting with '.', and
-// other files skipped), sorted by student name. A name the outputs reserve
+// other files skipped), sorted by student name; or, when `folder` is a .json
+// file, that one submission (a student checking what they will submit). A name the outputs reserve
 // (reference, grades, report, results) or that would clash with another's
 // difference image (x-diff beside x) gets a `problem`. Throws
 // std::runtime_error when the folder cannot be read.

@@ -56,6 +56,10 @@ BrdfScope::~BrdfScope() {
 
 void set_brdf_files_allowed(bool allowed) { g_allowed = allowed; }
 
+std::string brdf_not_allowed_reason() {
+    return "a .brdf file is code: m3055 batch and grade run it only with --allow-brdf";
+}
+
 bool is_brdf_material(const Node& node) {
     return node.value().is_object() && node.has("model") && node.value()["model"] == "brdf";
 }
@@ -64,7 +68,7 @@ Material read_brdf_material(const Node& node) {
     node.check_keys({"model", "file", "params", "axis"});
     const Node file_node = node.required("file");
     if (!file_node.value().is_string()) file_node.fail("must be the path of a .brdf file");
-    if (!g_allowed) file_node.fail("a .brdf file is code: m3055 batch and grade run it only with --allow-brdf");
+    if (!g_allowed) file_node.fail(brdf_not_allowed_reason());
     const BrdfModel* model = nullptr;
     try {
         model = &load_brdf_model(resolve(file_node.value().get<std::string>()));

@@ -27,6 +27,10 @@ private:
     bool old_allowed_;
 };
 
+// The refusal when .brdf files are not accepted (m3055 explore --assignment
+// gives the same reason for a scene whose material comes from one).
+std::string brdf_not_allowed_reason();
+
 // Whether .brdf materials are accepted outside any scope (the default: yes).
 void set_brdf_files_allowed(bool allowed);
 

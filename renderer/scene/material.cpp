@@ -49,6 +49,8 @@ Material Material::of(std::string_view name) {
 
 const std::string& Material::model_name() const { return model_->name; }
 
+std::string Material::shown_name() const { return model_->family == Family::brdf ? model_->label : model_->name; }
+
 bool Material::has(std::string_view name) const { return model_->find(name) != nullptr; }
 
 const double* Material::slot(std::string_view name, int kinds) const {

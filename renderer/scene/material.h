@@ -59,6 +59,9 @@ public:
 
     const ModelSpec& model() const { return *model_; }
     const std::string& model_name() const;
+    // For people (messages, panels): the scene name, or for a model from a
+    // .brdf file (internally "brdf_16") its label, the file's name + " (.brdf)".
+    std::string shown_name() const;
 
     // Typed access by parameter name (the scene file's key).
     bool has(std::string_view name) const;
