@@ -48,7 +48,9 @@ void open_brdf_dialog(ExplorerState& state) {
 void brdf_material_note(const ExplorerState& state, const Material& material) {
     const BrdfModel* model = find_brdf_model(material.model());
     if (model) {
+        ImGui::PushTextWrapPos(0.0f);  // a long path wraps instead of running off the panel
         ImGui::TextDisabled("file %s (watched: saving it reloads, values kept)", model->path.c_str());
+        ImGui::PopTextWrapPos();
         tooltip("Edit the .brdf in any editor and save: it is re-read and recompiled within half a second.");
     }
     if (state.brdf_error.empty()) return;

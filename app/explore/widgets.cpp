@@ -5,6 +5,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <utility>
 
@@ -75,11 +77,25 @@ bool slider_double(const char* label, double* value, double lo, double hi, const
     return changed;
 }
 
+// The double a person meant by float `f`: its shortest decimal form that reads
+// back as `f` (0.1f is 0.1, not 0.10000000149011612 in a saved scene).
+static double shortest_double(float f) {
+    char text[32];
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(f));
+        if (std::strtof(text, nullptr) == f) break;
+    }
+    return std::strtod(text, nullptr);
+}
+
 bool color_edit(const char* label, dvec3* color) {
     float rgb[3] = {static_cast<float>(color->r), static_cast<float>(color->g),
                     static_cast<float>(color->b)};
+    const float before[3] = {rgb[0], rgb[1], rgb[2]};
     if (!ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_Float)) return false;
-    for (int i = 0; i < 3; ++i) (*color)[i] = std::clamp(static_cast<double>(rgb[i]), 0.0, 1.0);
+    // ImGui edits floats: a channel left alone keeps its double exactly.
+    for (int i = 0; i < 3; ++i)
+        if (rgb[i] != before[i]) (*color)[i] = std::clamp(shortest_double(rgb[i]), 0.0, 1.0);
     return true;
 }
 
