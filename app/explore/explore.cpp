@@ -93,7 +93,6 @@ void write_stats(const std::string& path, long frames, long renders, const Scrip
     write_file_atomic(path, text.data(), text.size());
 }
 
-// The starting scene: --scene, or the spec example. False (message printed) on a bad file.
 // `explore --assignment A.json NEW.json` with no NEW.json yet: a student's
 // first practice; the assignment's start scene is the scene, saved as NEW.json.
 bool new_submission(const ExploreOptions& options) {
@@ -101,6 +100,7 @@ bool new_submission(const ExploreOptions& options) {
            !std::filesystem::exists(options.scene_path);
 }
 
+// The starting scene: --scene, or the spec example. False (message printed) on a bad file.
 bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
     if (options.scene_path.empty() || new_submission(options)) {
         set_scene(state, default_scene(), "spec example");
@@ -370,11 +370,12 @@ private:
         }
     }
 
-    // B's levels on the profile's row, drawn dashed beside A's (the A/B split).
+    // B's levels on the profile's row, drawn dashed beside A's (the A/B split):
+    // made again after a render or for another row, not every frame.
     const RowProfile* profile_of_b() {
-        profile_b_.reset();
         if (!state_.compare || !info_.profile || compare_->b_display().pixels.empty()) return nullptr;
-        profile_b_ = row_profile(compare_->b_display(), state_.scene.display.bits, info_.profile->row);
+        if (!profile_b_ || profile_b_->row != info_.profile->row)
+            profile_b_ = row_profile(compare_->b_display(), state_.scene.display.bits, info_.profile->row);
         return &*profile_b_;
     }
 
@@ -429,6 +430,7 @@ private:
             renderer_a_->render(state_.scene);
             readouts_.invalidate();
             compare_->invalidate();
+            profile_b_.reset();
             if (state_.compare) renderer_b_->render(compare_scene(state_));
             gl_.Finish();
             ++info_.renders;
@@ -502,7 +504,7 @@ private:
     std::unique_ptr<PlaneCurves> plane_curves_;          // the polar plot of .brdf models (GPU)
     std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
     Readouts readouts_;      // probe, histogram, profile, pick and outline of A
-    std::optional<RowProfile> profile_b_;  // B's levels on the profile's row
+    std::optional<RowProfile> profile_b_;  // B's levels on the profile's row (reset by each render)
     std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
     std::unique_ptr<Practice> practice_;  // --assignment
     Rect shown_a_;           // where A was drawn last (ImGui units)

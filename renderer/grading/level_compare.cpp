@@ -44,10 +44,14 @@ LinearStats linear_stats(const std::vector<float>& a, const std::vector<float>& 
 
 }  // namespace
 
+void check_same_size(int a_width, int a_height, int b_width, int b_height) {
+    if (a_width != b_width || a_height != b_height)
+        throw CompareError("sizes differ: A is " + size_text(a_width, a_height) + ", B is " +
+                           size_text(b_width, b_height));
+}
+
 void check_comparable(const LevelImage& a, const LevelImage& b) {
-    if (a.width != b.width || a.height != b.height)
-        throw CompareError("sizes differ: A is " + size_text(a.width, a.height) + ", B is " +
-                           size_text(b.width, b.height));
+    check_same_size(a.width, a.height, b.width, b.height);
     if (a.bits != b.bits)
         throw CompareError("bit depths differ: A has " + std::to_string(a.bits) + " bits a channel, B has " +
                            std::to_string(b.bits));

@@ -86,6 +86,8 @@ public:
 
 // Throws CompareError unless a and b have the same size and bit depth.
 void check_comparable(const LevelImage& a, const LevelImage& b);
+// Its size half, for images of any kind: CompareError "sizes differ: A is W x H, B is W x H".
+void check_same_size(int a_width, int a_height, int b_width, int b_height);
 
 Comparison compare_levels(const LevelImage& a, const LevelImage& b, const Thresholds& thresholds = {});
 
