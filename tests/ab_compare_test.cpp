@@ -1,4 +1,4 @@
-// The A/B split's read-outs (renderer/grading/ab_compare.h) and the scanline
+// The A/B split's read-outs (grading/ab_compare.h) and the scanline
 // profile (analysis/pixel_probe.h's row_profile) on two headless renders whose
 // scenes differ in one parameter: the level-difference count, the scaled
 // difference image and the row profile against direct counts on the PNGs. The explorer's own panes against headless renders are in

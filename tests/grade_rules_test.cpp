@@ -1,4 +1,4 @@
-// The rule vocabulary of grading (renderer/grading/rules.h) and the
+// The rule vocabulary of grading (grading/rules.h) and the
 // assignment loader: each rule passes and fails on a crafted scene, with the
 // one-line reason; a malformed assignment is one line naming the field.
 #include "grading/assignment.h"

@@ -1,6 +1,6 @@
 // The A/B split's read-outs in the window (issue 12): B's display readback,
 // the count of pixels on another display level, and the third pane |A - B|
-// as a GL texture. The numbers come from renderer/grading/ab_compare.h
+// as a GL texture. The numbers come from grading/ab_compare.h
 // (tested there and against headless renders); this keeps them between
 // renders and recomputes them only after one (or when the scale changes).
 #pragma once
