@@ -1,9 +1,9 @@
 // `m3055 batch`: many scenes in one process (issue 4, "Batch capture"); the
-// manifest format is in io/manifest.h.
+// manifest format is in scene/manifest.h.
 #pragma once
 
 #include "capture.h"
-#include "io/manifest.h"
+#include "scene/manifest.h"
 
 #include <functional>
 #include <string>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "gl/context.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/scene.h"
 
 #include <chrono>

@@ -1,6 +1,9 @@
 # m3055_library(NAME FOLDER folder [USES lib...] [EXTERNAL target...]
 #               [PRIVATE_EXTERNAL target...] [SOURCES file...])
 #
+# EXTERNAL: third-party targets its headers expose; PRIVATE_EXTERNAL: used only
+# in its .cpp files. SOURCES: generated files that belong to it.
+#
 # One folder of the source tree becomes one static library, m3055_<name>. Its
 # headers are reached as "<leaf>/file.h" (leaf: the folder's last component),
 # through an include root of its own in the build tree that holds nothing but a

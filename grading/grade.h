@@ -7,7 +7,7 @@
 #include "grading/assignment.h"
 #include "grading/level_compare.h"
 #include "grading/rules.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/scene.h"
 
 #include <optional>

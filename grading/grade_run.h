@@ -9,7 +9,7 @@
 #include "grading/grade.h"
 #include "grading/grade_outputs.h"
 #include "grading/submissions.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 
 #include <functional>
 #include <string>

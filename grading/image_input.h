@@ -4,7 +4,7 @@
 #pragma once
 
 #include "grading/level_compare.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/scene.h"
 
 #include <string>

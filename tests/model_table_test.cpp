@@ -5,6 +5,7 @@
 // it, the GPU record carries it, and run-time models are checked like
 // built-in ones.
 #include "gl/shader_source.h"
+#include "reference/hooks.h"
 #include "models/glsl_generator.h"
 #include "models/model_table.h"
 #include "passes/material_buffer.h"
@@ -47,7 +48,8 @@ TEST(ModelTable, EveryEntryHasItsHooksInGlslAndInTheReference) {
         if (!model.glsl_specular.empty()) {
             EXPECT_TRUE(defines_function(glsl, model.glsl_specular)) << model.glsl_specular;
         }
-        const ReferenceHooks& r = model.reference;
+        const ref::ReferenceHooks& r = ref::reference_hooks(model);
+        EXPECT_TRUE(ref::has_reference(model));
         switch (model.family) {
             case Family::opaque: EXPECT_NE(r.opaque, nullptr); break;
             case Family::translucent: EXPECT_NE(r.translucent, nullptr); break;

@@ -148,7 +148,7 @@ TEST(ShapeMesh, CylinderVerticesAndSideWithinTheSagitta) {
     const dvec3 c(0, 0.5, 0), axis = glm::normalize(dvec3(0.3, 1, 0.2));
     for (int segments : {8, 64}) {
         const Mesh mesh = geometry::make_cylinder(c, axis, 0.6, 1.4, true, segments);
-        EXPECT_EQ(mesh.triangles(), geometry::triangle_count([&] {
+        EXPECT_EQ(mesh.triangles(), triangle_count([&] {
                       Object o;
                       o.shape = Shape::cylinder, o.segments = segments;
                       return o;
@@ -275,10 +275,10 @@ TEST(ShapeMesh, DefaultTessellationShadesWithinTheStatedError) {
                     segments, c.max, c.mean, c.pixels, t.max, t.mean, t.pixels);
         EXPECT_GT(c.pixels, 3000);
         EXPECT_GT(t.pixels, 3000);
-        if (segments == geometry::kDefaultSegments) {
+        if (segments == kDefaultSegments) {
             EXPECT_LE(c.max, 5e-3);
         }
-        if (segments == geometry::kDefaultTorusSegments) {
+        if (segments == kDefaultTorusSegments) {
             EXPECT_LE(t.max, 5e-3);
         }
     }

@@ -83,8 +83,8 @@ TEST(ShapesLoader, DefaultsForOptionalFields) {
     EXPECT_EQ(scene.objects[1].rotation_deg, dvec3(0, 0, 0));
     EXPECT_EQ(scene.objects[2].axis, dvec3(0, 1, 0));
     EXPECT_TRUE(scene.objects[2].capped);
-    EXPECT_EQ(scene.objects[2].segments, 0);  // 0 = geometry::kDefaultSegments
-    EXPECT_EQ(geometry::segments_of(scene.objects[2]), geometry::kDefaultSegments);
+    EXPECT_EQ(scene.objects[2].segments, 0);  // 0 = kDefaultSegments
+    EXPECT_EQ(segments_of(scene.objects[2]), kDefaultSegments);
     EXPECT_EQ(scene.objects[3].axis, dvec3(0, 1, 0));
 }
 

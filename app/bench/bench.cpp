@@ -10,7 +10,7 @@
 #include "gl/context.h"
 #include "image/image.h"
 #include "reference/reference.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/load.h"
 
 #include <glm/common.hpp>

@@ -3,7 +3,7 @@
 #include "timing.h"
 #include "brdf_file/brdf_model.h"
 #include "image/image.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/presets.h"
 
 #include <cstdio>

@@ -2,8 +2,8 @@
 
 #include "timing.h"
 #include "models/model_table.h"
-#include "renderer.h"
-#include "scene/material.h"
+#include "frame/renderer.h"
+#include "models/material.h"
 #include "scene/presets.h"
 
 #include <algorithm>

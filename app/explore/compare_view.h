@@ -8,7 +8,7 @@
 #include "grading/ab_compare.h"
 #include "explore/state.h"
 #include "gl/gl_api.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 
 #include <optional>
 #include <string>

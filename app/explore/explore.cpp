@@ -21,7 +21,7 @@
 #include "gl/gl_api.h"
 #include "image/image.h"
 #include "passes/brdf_grid.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/load.h"
 #include "scene/presets.h"
 

@@ -11,7 +11,7 @@
 #include "gl/gl_api.h"
 #include "grading/assignment.h"
 #include "grading/level_compare.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/scene.h"
 
 #include <memory>

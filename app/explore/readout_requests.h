@@ -7,7 +7,7 @@
 #include "explore/compare_view.h"
 #include "explore/readouts.h"
 #include "explore/state.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 
 namespace m3055::explore {
 

@@ -8,7 +8,7 @@
 #include "analysis/pixel_probe.h"
 #include "explore/display_view.h"
 #include "explore/state.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 
 #include <memory>
 #include <optional>

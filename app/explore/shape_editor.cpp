@@ -118,8 +118,8 @@ bool shape_editor(Object& o) {
             break;
     }
     if (o.shape == Shape::cylinder || o.shape == Shape::torus) {
-        int segments = geometry::segments_of(o);
-        if (ImGui::SliderInt("segments", &segments, geometry::kMinSegments, geometry::kMaxSegments, "%d",
+        int segments = segments_of(o);
+        if (ImGui::SliderInt("segments", &segments, kMinSegments, kMaxSegments, "%d",
                              ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic)) {
             o.segments = segments;
             changed = true;
@@ -127,7 +127,7 @@ bool shape_editor(Object& o) {
         tooltip("Segments of a full circle, 3 to 512 (defaults: cylinder 64, torus 128; docs/shapes.md gives "
                 "the shading error of each).");
         ImGui::SameLine();
-        ImGui::TextDisabled("%zu triangles", geometry::triangle_count(o));
+        ImGui::TextDisabled("%zu triangles", triangle_count(o));
     }
     return changed;
 }

@@ -148,7 +148,7 @@ Material* selected_material(ExplorerState& state);
 // Every model of the model table, in its order (the model selector's list).
 std::vector<const ModelSpec*> all_models();
 
-// Switches a material's model (with_model, scene/material.h: values with the
+// Switches a material's model (with_model, models/material.h: values with the
 // same name and meaning are kept, the rest are the new model's defaults).
 void set_model(Material& material, const ModelSpec& model);
 // The same by name; std::runtime_error for a name not in the table.

@@ -5,7 +5,7 @@
 // evaluates f (on the GPU) at the directions given here.
 #pragma once
 
-#include "scene/material.h"
+#include "models/material.h"
 #include "scene/scene.h"
 
 #include <optional>

@@ -4,7 +4,7 @@
 // or a choice's name), and the corners of its parameter ranges.
 #pragma once
 
-#include "scene/material.h"
+#include "models/material.h"
 
 #include <set>
 #include <string>

@@ -1,4 +1,5 @@
 #include "analysis/plane_curve.h"
+#include "reference/hooks.h"
 
 #include "models/model_spec.h"
 #include "reference/reference.h"
@@ -46,7 +47,7 @@ PlaneCurve plane_curve(const Material& material, const Light& light, double inci
         const ref::SurfacePoint point{dvec3(0.0), N, dvec3(std::sin(view * kDeg), std::cos(view * kDeg), 0.0)};
         dvec3 value(0.0);
         if (curve.translucent) {
-            const ref::TranslucentShade shade = material.model().reference.translucent(material, lights, point);
+            const ref::TranslucentShade shade = ref::reference_hooks(material.model()).translucent(material, lights, point);
             value = shade.color + shade.transmittance * background;
         } else if (!curve.light_behind) {
             value = ref::shade_opaque(material, lights, point);

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "brdf_file/brdf_file.h"
-#include "scene/material.h"
+#include "models/material.h"
 
 #include <string>
 #include <string_view>

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "scene/shape_limits.h"
 
 #include <cstdint>
 #include <vector>
@@ -32,18 +33,10 @@ struct Mesh {
     std::size_t triangles() const { return indices.size() / 3; }
 };
 
-// Segments a full circle when an object gives none, chosen so that the
-// shading error against the analytic surface stays below 5e-3 (a sixth of a
-// 5-bit level) away from silhouettes for the spec example's highlight m = 10
-// (tests/shape_mesh_test.cpp measures it; docs/shapes.md has the table):
-// cylinders 64 (5.6 degree steps, measured 5e-4), tori 128 in both directions
-// (curved both ways, measured 2.9e-3; 64 gives 1.1e-2).
-inline constexpr int kDefaultSegments = 64;
-inline constexpr int kDefaultTorusSegments = 128;
-inline constexpr int kMinSegments = 3;
-inline constexpr int kMaxSegments = 512;
-// Every mesh of a scene together: the loader rejects scenes above this.
-inline constexpr std::size_t kMaxSceneTriangles = 4000000;
+// The segment defaults and limits, segments_of and triangle_count are the
+// scene format's (scene/shape_limits.h): the loader checks them; make_mesh
+// gives exactly triangle_count(object) triangles.
+
 
 // The orthonormal frame around a unit axis A (unit: the loader normalizes it) used by every shape: T is the
 // world axis least aligned with A (ties: x, then y, then z) made perpendicular
@@ -56,8 +49,6 @@ AxisFrame axis_frame(const dvec3& axis);
 // Rotation of the cube: about world x by rx, then y by ry, then z by rz (degrees).
 dvec3 rotate_xyz(const dvec3& v, const dvec3& rotation_deg);
 
-int segments_of(const Object& object);
-
 Mesh make_plane(const dvec3& center, const dvec3& normal, double size);
 Mesh make_cube(const dvec3& center, double size, const dvec3& rotation_deg);
 Mesh make_cylinder(const dvec3& center, const dvec3& axis, double radius, double height, bool capped,
@@ -67,8 +58,6 @@ Mesh make_torus(const dvec3& center, const dvec3& axis, double major_radius, dou
 
 // The mesh of any non-sphere object (empty for a sphere).
 Mesh make_mesh(const Object& object);
-// Triangles make_mesh(object) gives, without building it (0 for a sphere).
-std::size_t triangle_count(const Object& object);
 
 // Radius of a sphere around object.center containing the whole object.
 double bounding_radius(const Object& object);

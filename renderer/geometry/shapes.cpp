@@ -59,11 +59,6 @@ dvec3 rotate_xyz(const dvec3& v, const dvec3& rotation_deg) {
     return p;
 }
 
-int segments_of(const Object& object) {
-    if (object.segments > 0) return object.segments;
-    return object.shape == Shape::torus ? kDefaultTorusSegments : kDefaultSegments;
-}
-
 // A square of side `size` in the plane through `center` with unit `normal`,
 // its edges along the normal's axis frame T and B. Flat: two triangles are exact.
 Mesh make_plane(const dvec3& center, const dvec3& normal, double size) {
@@ -165,18 +160,6 @@ Mesh make_mesh(const Object& object) {
                               segments_of(object));
     }
     return {};
-}
-
-std::size_t triangle_count(const Object& object) {
-    const std::size_t n = std::size_t(segments_of(object));
-    switch (object.shape) {
-        case Shape::sphere: return 0;
-        case Shape::plane: return 2;
-        case Shape::cube: return 12;
-        case Shape::cylinder: return object.capped ? 4 * n : 2 * n;
-        case Shape::torus: return 2 * n * n;
-    }
-    return 0;
 }
 
 double bounding_radius(const Object& object) {

@@ -1,6 +1,6 @@
 #include "gl/shader_source.h"
 
-#include "gl/glsl_sources.h"
+#include "models/glsl_sources.h"
 #include "models/glsl_generator.h"
 
 #include <algorithm>

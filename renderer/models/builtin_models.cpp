@@ -1,23 +1,14 @@
 // The model table's built-in entries: the paper's five models (docs/spec.md,
 // eq. 3-18) and the seeds' classic models (docs/models.md). Each entry is the
 // one place that states a model's name, label, citation, parameters (kind,
-// range, default, help, slider), GLSL hook and reference hook; see
+// range, default, help, slider) and hooks (the GLSL function, whose C++ namesake
+// in reference/ is its twin: reference/hooks.h); see
 // models/model_spec.h for the fields and docs/adding-a-model.md for a walk
 // through adding one.
 #include "models/model_table.h"
 #include "numeric/normalization.h"
 
 namespace m3055 {
-
-// The reference hooks (renderer/reference/), declared by their family's
-// signature (reference/reference.h); each mirrors the GLSL hook of the same name.
-namespace ref {
-MetalLobeSumFn beckmann_lobe_sum, blinn_lobe_sum, phong_lobe_sum;
-ClassicDiffuseFn diffuse_lambert, diffuse_half_lambert, diffuse_half_lambert_clamped,
-    diffuse_half_lambert_normalized, diffuse_oren_nayar, diffuse_minnaert;
-ClassicSpecularFn specular_phong, specular_blinn_phong, specular_microfacet, specular_ward,
-    specular_heidrich_seidel;
-}  // namespace ref
 
 namespace {
 
@@ -90,7 +81,6 @@ ModelSpec highlight() {
     s.family = Family::opaque;
     s.params = highlight_params();
     s.glsl_file = "models/highlight.glsl", s.glsl_hook = "shade_highlight";
-    s.reference.opaque = ref::shade_highlight;
     return s;
 }
 
@@ -105,7 +95,6 @@ ModelSpec translucent() {
     s.params.push_back(number("t_p", "t_p (falloff)", closed(0.0, 10.0), 1.0,
                               "Kay's falloff power: larger makes faces towards the viewer clearer", "eq. 6"));
     s.glsl_file = "models/translucent.glsl", s.glsl_hook = "shade_translucent";
-    s.reference.translucent = ref::shade_translucent;
     return s;
 }
 
@@ -135,7 +124,6 @@ ModelSpec metal() {
                                           "Beckmann roughness m_j (eq. 13)"));
     s.summary = "metal after Cook-Torrance, a mixture of Beckmann lobes; F = C0";
     s.glsl_hook = "beckmann_lobe_sum";
-    s.reference.metal = ref::beckmann_lobe_sum;
     return s;
 }
 
@@ -147,7 +135,6 @@ ModelSpec metal_blinn() {
                                           "exponent n_j on N.H"));
     s.summary = "cheap metal: lobes ((N.H)+)^n_j";
     s.glsl_hook = "blinn_lobe_sum";
-    s.reference.metal = ref::blinn_lobe_sum;
     return s;
 }
 
@@ -157,7 +144,6 @@ ModelSpec metal_phong() {
                                           "exponent n_j on R.V"));
     s.summary = "cheap metal: lobes ((R.V)+)^n_j, falls off twice as fast as eq. 15";
     s.glsl_hook = "phong_lobe_sum";
-    s.reference.metal = ref::phong_lobe_sum;
     return s;
 }
 
@@ -181,10 +167,7 @@ ModelSpec classic(std::string name, std::string label, std::string citation, std
     s.misplaced_hints = {{"color", "its diffuse colour is \"kd\""}};
     s.glsl_file = "models/classic.glsl";
     s.glsl_hook = specular ? "diffuse_lambert" : "diffuse_" + s.name;
-    if (specular) {
-        s.glsl_specular = "specular_" + s.name;
-        s.reference.classic_diffuse = ref::diffuse_lambert;
-    }
+    if (specular) s.glsl_specular = "specular_" + s.name;
     return s;
 }
 
@@ -195,29 +178,23 @@ ParamSpec shininess(std::string help, std::string cite) {
 std::vector<ModelSpec> diffuse_models() {
     std::vector<ModelSpec> out;
     out.push_back(classic("lambert", "Lambert", "Lambert's cosine law (seed 003)", "(N.L)+ K_diff", false));
-    out.back().reference.classic_diffuse = ref::diffuse_lambert;
     out.push_back(classic("half_lambert", "Half-Lambert", "Valve, Mitchell 2008 (seed 004)",
                           "((N.L) 0.5 + 0.5)^2 K_diff: the back still gets light", false));
-    out.back().reference.classic_diffuse = ref::diffuse_half_lambert;
     out.push_back(classic("half_lambert_clamped", "Half-Lambert, N.L clamped", "seed 004's code",
                           "Half-Lambert of (N.L)+: the unlit side a flat 1/4", false));
-    out.back().reference.classic_diffuse = ref::diffuse_half_lambert_clamped;
     out.push_back(classic("half_lambert_normalized", "Half-Lambert, normalized", "seed 004",
                           "Half-Lambert x 3/(4 pi): integrates to 1 over the sphere", false));
-    out.back().reference.classic_diffuse = ref::diffuse_half_lambert_normalized;
     ModelSpec on = classic("oren_nayar", "Oren-Nayar", "Oren & Nayar 1994 (seed 003)",
                            "rough diffuse: brighter towards the light at grazing view", false);
     on.params.push_back(number("sigma", "sigma (rad)", closed(0.0, 10.0), 0.3,
                                "surface roughness: standard deviation of the facet angle, radians; 0 is Lambert",
                                "seed 003", true, "%.3f"));
-    on.reference.classic_diffuse = ref::diffuse_oren_nayar;
     out.push_back(std::move(on));
     ModelSpec minnaert = classic("minnaert", "Minnaert", "Minnaert 1941 (BRDF Explorer's minnaert.brdf)",
                                  "(N.L)^k (N.V)^(k-1): limb brightening (k < 1) or darkening (k > 1)", false);
     minnaert.params.push_back(number("minnaert_k", "k (limb)", closed(0.5, 1.5), 0.75,
                                      "Minnaert's exponent: 1 is Lambert, below 1 the limb brightens (the Moon)",
                                      "Minnaert 1941"));
-    minnaert.reference.classic_diffuse = ref::diffuse_minnaert;
     out.push_back(std::move(minnaert));
     return out;
 }
@@ -225,14 +202,12 @@ std::vector<ModelSpec> diffuse_models() {
 ModelSpec phong() {
     ModelSpec s = classic("phong", "Phong", "Phong 1975 (seed 001)", "Lambert + ((R.V)+)^n K_spec", true);
     s.params.push_back(shininess("exponent n on R.V: larger is a smaller, sharper highlight", "seed 001"));
-    s.reference.classic_specular = ref::specular_phong;
     return s;
 }
 
 ModelSpec blinn_phong() {
     ModelSpec s = classic("blinn_phong", "Blinn-Phong", "Blinn 1977 (seed 003)", "Lambert + ((N.H)+)^n K_spec", true);
     s.params.push_back(shininess("exponent n on N.H: larger is a smaller, sharper highlight", "seed 003"));
-    s.reference.classic_specular = ref::specular_blinn_phong;
     return s;
 }
 
@@ -277,7 +252,6 @@ ModelSpec microfacet() {
                               "index of refraction; Schlick's F0 = ((n - 1)/(n + 1))^2", "seed 003"));
     s.params.push_back(microfacet_lobes(distributions));
     s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}};
-    s.reference.classic_specular = ref::specular_microfacet;
     return s;
 }
 
@@ -296,7 +270,6 @@ ModelSpec ward() {
     s.params.push_back(number("alpha_y", "alpha_y", closed(0.001, 1.0), 0.5,
                               "roughness along the bitangent N x T", "seed 002", true));
     s.params.push_back(tangent_axis());
-    s.reference.classic_specular = ref::specular_ward;
     return s;
 }
 
@@ -305,7 +278,6 @@ ModelSpec heidrich_seidel() {
                           "Lambert + a highlight of fibres along the tangent T", true);
     s.params.push_back(shininess("exponent n of the fibre highlight", "seed 002"));
     s.params.push_back(tangent_axis());
-    s.reference.classic_specular = ref::specular_heidrich_seidel;
     return s;
 }
 

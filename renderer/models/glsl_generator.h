@@ -8,7 +8,7 @@
 //   "generated/models.glsl"    the models' files and the dispatchers
 #pragma once
 
-#include "gl/glsl_sources.h"
+#include "models/glsl_sources.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 // One reflection model, described once: its scene name, UI label, citation,
-// parameters (kind, range, default, help, slider), its GLSL shading function
-// and its C++ reference function. Everything else is derived from these
+// parameters (kind, range, default, help, slider) and its GLSL shading
+// function, whose C++ namesake in reference/ is its double twin
+// (reference/hooks.h binds them by that name). Everything else is derived from these
 // descriptions: the scene loader's validation and defaults, scene_to_json,
 // the GPU material record and its GLSL unpacking, the shader specialization
 // defines, the explorer's material panel and the presets' defaults.
@@ -10,9 +11,8 @@
 // added at run time (models/model_table.h: ModelTable::add).
 #pragma once
 
+#include "models/material.h"
 #include "models/range.h"
-#include "reference/reference.h"
-#include "scene/scene.h"
 
 #include <optional>
 #include <string>
@@ -78,15 +78,6 @@ enum class Family {
     brdf,         // hook: f(L, V, N, X, Y) of a BRDF Explorer file (run time only: brdf_file/brdf_model.h)
 };
 
-// The C++ reference hook of each family: the double twin of the GLSL hook.
-struct ReferenceHooks {
-    ref::OpaqueShadeFn* opaque = nullptr;
-    ref::TranslucentShadeFn* translucent = nullptr;
-    ref::MetalLobeSumFn* metal = nullptr;
-    ref::ClassicDiffuseFn* classic_diffuse = nullptr;
-    ref::ClassicSpecularFn* classic_specular = nullptr;  // nullptr: no specular term
-};
-
 // Floats computed on the CPU (in double) per material and packed after the
 // parameters, e.g. the Gaussian distribution's normalization per lobe. The
 // GLSL field mat.NAME is a float or vecN.
@@ -111,7 +102,6 @@ struct ModelSpec {
     std::string glsl_hook;  // its GLSL function, with the family's signature (classic: the diffuse factor)
     std::string glsl_specular;  // classic: the specular hook ("" for a diffuse-only model)
     std::vector<DerivedValue> derived;
-    ReferenceHooks reference;
     // GLSL the entry brings itself, (path, text) as the composer includes it
     // (run-time models: a .brdf file's code and its wrapper); built-in models
     // have theirs in glsl/.

@@ -22,19 +22,6 @@ std::vector<std::string> family_params(Family family) {
     return {};
 }
 
-bool has_hook(const ModelSpec& spec) {
-    switch (spec.family) {
-        case Family::opaque: return spec.reference.opaque != nullptr;
-        case Family::translucent: return spec.reference.translucent != nullptr;
-        case Family::metal: return spec.reference.metal != nullptr;
-        case Family::classic:
-            return spec.reference.classic_diffuse != nullptr &&
-                   spec.glsl_specular.empty() == (spec.reference.classic_specular == nullptr);
-        case Family::brdf: return false;  // run-time models only, without a C++ twin
-    }
-    return false;
-}
-
 bool is_identifier(const std::string& name) {
     if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
     return std::all_of(name.begin(), name.end(), [](char c) {
@@ -138,7 +125,6 @@ private:
 
 ModelTable::ModelTable() {
     for (ModelSpec& spec : builtin_models()) {
-        if (!has_hook(spec)) throw std::logic_error("built-in model \"" + spec.name + "\" has no reference hook");
         add(std::move(spec));
     }
     builtin_count_ = static_cast<int>(models_.size());

@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace m3055::scene_json {
+namespace m3055 {
 
 // Upper bound +inf is printed as "> lo" / ">= lo".
 struct Range {
@@ -19,9 +19,9 @@ struct Range {
 // [lo, hi].
 Range closed(double lo, double hi);
 
-}  // namespace m3055::scene_json
-
-namespace m3055 {
-using scene_json::closed;
-using scene_json::Range;
 }  // namespace m3055
+
+namespace m3055::scene_json {  // the loader's name for them
+using m3055::closed;
+using m3055::Range;
+}  // namespace m3055::scene_json

@@ -92,6 +92,14 @@ double ward_specular(double alpha_x, double alpha_y, double NoL, double NoV, dou
                      double HoN);
 
 // ---- Models ---------------------------------------------------------------------------
+
+// The classic models' hooks (reference/classic_models.cpp), namesakes of
+// glsl/models/classic.glsl's: the diffuse factor of each diffuse model, and
+// the specular colour of each model with a specular term.
+ClassicDiffuseFn diffuse_lambert, diffuse_half_lambert, diffuse_half_lambert_clamped,
+    diffuse_half_lambert_normalized, diffuse_oren_nayar, diffuse_minnaert;
+ClassicSpecularFn specular_phong, specular_blinn_phong, specular_microfacet, specular_ward,
+    specular_heidrich_seidel;
 // Each classic model's hook (ClassicReflectFn, reference/reference.h), named
 // NAME_reflect, is in classic_models.cpp; its table entry points at it.
 

@@ -3,6 +3,7 @@
 // light reflects per unit light scale) and the family's composer
 // shade_classic. C++ twin of glsl/models/classic.glsl, with the same names.
 #include "reference/classic.h"
+#include "reference/hooks.h"
 
 #include "models/model_spec.h"
 #include "numeric/normalization.h"
@@ -122,7 +123,7 @@ dvec3 specular_heidrich_seidel(const Material& material, const dvec3& N, const d
 // I_diff + I_spec for unit light scale: the two hooks of the material's model.
 static dvec3 classic_reflect(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
                              double NoV) {
-    const ReferenceHooks& hooks = material.model().reference;
+    const ReferenceHooks& hooks = reference_hooks(material.model());
     const double diffuse = hooks.classic_diffuse(material, NoL, NoV, glm::dot(L, V));
     dvec3 I = diffuse * material.vec3("kd");
     if (hooks.classic_specular) I += hooks.classic_specular(material, N, L, V, NoL, NoV);
@@ -130,7 +131,7 @@ static dvec3 classic_reflect(const Material& material, const dvec3& N, const dve
 }
 
 dvec3 classic_specular(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V) {
-    ClassicSpecularFn* specular = material.model().reference.classic_specular;
+    ClassicSpecularFn* specular = reference_hooks(material.model()).classic_specular;
     return specular ? specular(material, N, L, V, glm::dot(N, L), glm::dot(N, V)) : dvec3(0.0);
 }
 

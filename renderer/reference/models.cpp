@@ -4,6 +4,7 @@
 // light l enters through its direction L_l and its scale a_l c_l att spot
 // (lights.cpp); a light with N.L_l <= 0 contributes nothing (docs/spec.md#4-paper-models).
 #include "reference/reference.h"
+#include "reference/hooks.h"
 #include "reference/classic.h"
 
 #include "models/model_spec.h"
@@ -115,7 +116,7 @@ double phong_lobe_sum(const Material& material, const Light& light, const Surfac
 // The metal family's dispatcher (generated in GLSL from the model table): the model's hook.
 double metal_lobe_sum(const Material& material, const Light& light, const SurfacePoint& point, const dvec3& L,
                       double NoL, double NoV) {
-    return material.model().reference.metal(material, light, point, L, NoL, NoV);
+    return reference_hooks(material.model()).metal(material, light, point, L, NoL, NoV);
 }
 
 // The metal family: C = { d + sum_l a_l c_l lobes_l } C0 over the lights with N.L > 0.
@@ -139,7 +140,7 @@ dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights, c
     switch (model.family) {
         case Family::classic: return shade_classic(material, lights, point, global_ambient);
         case Family::metal: return shade_metal(material, lights, point);
-        case Family::opaque: return model.reference.opaque(material, lights, point);
+        case Family::opaque: return reference_hooks(model).opaque(material, lights, point);
         case Family::translucent: return shade_highlight(material, lights, point);  // as if t = 1
         case Family::brdf:  // code from a .brdf file runs on the GPU only (passes/brdf_grid.h):
             // no value, and callers that draw what they get (the explorer's polar plot) skip NaN

@@ -107,6 +107,9 @@ dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights,
 // hooks, and the metal family's sum over the lights.
 OpaqueShadeFn shade_highlight;
 TranslucentShadeFn shade_translucent;
+// The paper's metals' hooks: sum_j w_j lobe_j over Beckmann lobes (eq. 12),
+// ((N.H)+)^n_j (eq. 15) and ((R.V)+)^n_j (eq. 16).
+MetalLobeSumFn beckmann_lobe_sum, blinn_lobe_sum, phong_lobe_sum;
 dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point);
 
 // ---- Whole image -------------------------------------------------------------

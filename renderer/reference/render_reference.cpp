@@ -2,6 +2,7 @@
 // nearest opaque front face (or the background), then the translucent front
 // faces in front of it composited back to front (docs/spec.md#42-translucent, Fig. 9).
 #include "reference/reference.h"
+#include "reference/hooks.h"
 
 #include "models/model_spec.h"
 
@@ -104,7 +105,7 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
         const Object& object = scene.objects[it->object];
         if (!is_translucent(object.material) || !(it->t < t_opaque)) continue;
-        const TranslucentShade shade = object.material.model().reference.translucent(
+        const TranslucentShade shade = reference_hooks(object.material.model()).translucent(
             object.material, scene.lights, surface_point(object, ray, *it));
         color = shade.color + shade.transmittance * color;
     }

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "scene/json_node.h"
-#include "scene/material.h"
+#include "models/material.h"
 
 #include <string>
 

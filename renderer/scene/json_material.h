@@ -4,7 +4,7 @@
 #pragma once
 
 #include "scene/json_node.h"
-#include "scene/material.h"
+#include "models/material.h"
 
 namespace m3055::scene_json {
 

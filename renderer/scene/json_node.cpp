@@ -79,19 +79,6 @@ std::string json_problem(const std::string& what) {
     return text::one_line(message, 200);
 }
 
-bool Range::contains(double x) const {
-    const bool above = lo_open ? x > lo : x >= lo;
-    const bool below = hi_open ? x < hi : x <= hi;
-    return above && below;
-}
-
-std::string Range::text() const {
-    if (std::isinf(hi)) return (lo_open ? "> " : ">= ") + format_number(lo);
-    return std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " +
-           format_number(hi) + (hi_open ? ")" : "]");
-}
-
-Range closed(double lo, double hi) { return Range{lo, hi}; }
 const Range kUnit = closed(0.0, 1.0);
 const Range kCoordinate = closed(-1e6, 1e6);
 

@@ -1,5 +1,5 @@
 // Scene file text -> JSON document, with errors in the loader's one-line form.
-// Also used for batch manifests (io/manifest.h): both are untrusted files.
+// Also used for batch manifests (scene/manifest.h): both are untrusted files.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #include "scene/json_shapes.h"
 
-#include "geometry/mesh.h"
+#include "scene/shape_limits.h"
 
 namespace m3055::scene_json {
 
@@ -85,7 +85,7 @@ void read_shape(const Node& node, Object& object) {
         }
     }
     if (node.has("segments"))
-        object.segments = node.child("segments").whole_in(geometry::kMinSegments, geometry::kMaxSegments);
+        object.segments = node.child("segments").whole_in(kMinSegments, kMaxSegments);
 }
 
 json shape_json(const Object& object) {

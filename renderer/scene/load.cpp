@@ -2,7 +2,7 @@
 // scene_json::Node so that each error is one line "SOURCE: json.path: problem".
 #include "scene/load.h"
 
-#include "geometry/mesh.h"
+#include "scene/shape_limits.h"
 #include "io/input_file.h"
 #include "scene/json_brdf.h"
 
@@ -225,10 +225,10 @@ Scene scene_from_json(const json& doc, const std::string& source) {
     for (std::size_t i = 0; i < count; ++i) {
         scene.objects.push_back(read_object(objects.at(i)));
         // Bounded so that no scene file can exhaust memory with meshes.
-        triangles += geometry::triangle_count(scene.objects.back());
-        if (triangles > geometry::kMaxSceneTriangles)
+        triangles += triangle_count(scene.objects.back());
+        if (triangles > kMaxSceneTriangles)
             objects.at(i).fail("the scene's meshes would have more than " +
-                               std::to_string(geometry::kMaxSceneTriangles) + " triangles (fewer segments?)");
+                               std::to_string(kMaxSceneTriangles) + " triangles (fewer segments?)");
     }
     return scene;
 }

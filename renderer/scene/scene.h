@@ -3,7 +3,7 @@
 // (directions are unit vectors, ranges are checked); renderers trust them.
 #pragma once
 
-#include "scene/material.h"
+#include "models/material.h"  // Material, Lobe, LobeKind
 
 #include <glm/vec3.hpp>
 
@@ -35,10 +35,6 @@ struct Camera {
 };
 
 enum class LightType { directional, point, spot };
-
-// Which models a light's own lobes are for: Beckmann lobes {"w", "m"} override
-// the lobes of `metal`; exponent lobes {"w", "n"} those of `metal_blinn`/`metal_phong`.
-enum class LobeKind { beckmann, exponent };
 
 struct Light {
     // Optional, shown in the explorer and kept on save: "key", "fill", "back"
@@ -97,7 +93,7 @@ struct Scene {
     dvec3 ambient{0.0, 0.0, 0.0};  // L_glob: the lecture's global ambient (classic models)
 };
 
-// Limits the loader enforces (documented in the README). kMaxLobes: scene/material.h.
+// Limits the loader enforces (documented in the README). kMaxLobes: models/material.h.
 inline constexpr int kMaxLights = 16;
 inline constexpr int kMaxDisplaySize = 8192;
 

@@ -1,4 +1,4 @@
-#include "renderer.h"
+#include "frame/renderer.h"
 
 #include "geometry/mesh.h"
 #include "gl/program.h"
@@ -10,7 +10,7 @@
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
-#include "scene/material.h"
+#include "models/material.h"
 #include "scene/presets.h"
 
 #include <glm/geometric.hpp>

@@ -34,6 +34,11 @@ struct Lobe {
     double m = 0.0;
 };
 
+// Which models a light's own lobes are for: Beckmann lobes {"w", "m"} override
+// the lobes of `metal`; exponent lobes {"w", "n"} those of `metal_blinn`/`metal_phong`.
+// (A lobe concept, here beside Lobe: the model table's entries name it.)
+enum class LobeKind { beckmann, exponent };
+
 // 0 to kMaxLobes lobes without a heap allocation (what a lobe-list parameter
 // holds; read per light per pixel by the CPU reference).
 struct LobeList {

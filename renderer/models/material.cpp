@@ -1,4 +1,4 @@
-#include "scene/material.h"
+#include "models/material.h"
 
 #include "models/model_table.h"
 #include "models/model_spec.h"

@@ -1,4 +1,4 @@
-#include "io/manifest.h"
+#include "scene/manifest.h"
 
 #include "io/input_file.h"
 #include "io/message_text.h"
