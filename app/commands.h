@@ -14,6 +14,7 @@ void add_compare_command(CLI::App& app);  // app/cmd_compare.cpp (issue 14)
 void add_grade_command(CLI::App& app);    // app/cmd_grade.cpp (issue 14)
 void add_brdf_check_command(CLI::App& app);  // app/cmd_brdf_check.cpp
 void add_plot_command(CLI::App& app);        // app/cmd_plot.cpp
+void add_models_command(CLI::App& app);      // app/cmd_models.cpp
 
 // Plain `m3055` (app/cmd_explore.cpp): the explorer when this build has one and
 // $DISPLAY is set; otherwise the usage and one line saying why, kExitUsage.

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     m3055::add_grade_command(app);
     m3055::add_brdf_check_command(app);
     m3055::add_plot_command(app);
+    m3055::add_models_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& error) {

@@ -8,6 +8,7 @@
 #include "models/model_table.h"
 #include "passes/brdf_grid.h"
 #include "reference/reference.h"
+#include "material_support.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -23,8 +24,7 @@ TEST(BrdfGrid, GpuIsTheCpuReferenceBrdfForBuiltInModels) {
     const auto context = HeadlessContext::create(Backend::automatic);
     BrdfGrid grid(context->gl());
     const std::vector<dvec3> dirs = check_directions(6, 8);
-    for (const char* name : {"lambert", "oren_nayar", "minnaert", "phong", "blinn_phong", "microfacet", "ward",
-                             "heidrich_seidel", "half_lambert"}) {
+    for (const std::string& name : test::builtin_models_of(Family::classic)) {
         const Material material = Material::of(name);
         const std::vector<float> f = grid.evaluate(material, dirs, dirs);
         Light light;

@@ -7,7 +7,7 @@
 #include "gpu_compare.h"
 #include "models/glsl_generator.h"
 #include "models/model_table.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/presets.h"
 #include "models/model_spec.h"
 #include "reference/reference.h"

@@ -4,7 +4,7 @@
 #include "gl/context.h"
 #include "grading/grade.h"
 #include "grading/grade_outputs.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/load.h"
 #include "test_support.h"
 

@@ -5,7 +5,7 @@
 #include "analysis/plane_curve_gpu.h"
 #include "brdf_file/brdf_model.h"
 #include "gl/context.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 #include "scene/presets.h"
 #include "test_support.h"
 

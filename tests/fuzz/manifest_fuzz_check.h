@@ -11,7 +11,7 @@
 #pragma once
 
 #include "scene_fuzz_check.h"
-#include "io/manifest.h"
+#include "scene/manifest.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
 

@@ -3,7 +3,7 @@
 #include "gl/context.h"
 #include "image/quantize.h"
 #include "reference/reference.h"
-#include "renderer.h"
+#include "frame/renderer.h"
 
 #include <glm/geometric.hpp>
 

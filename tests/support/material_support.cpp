@@ -1,5 +1,7 @@
 #include "material_support.h"
 
+#include "models/model_table.h"
+
 #include "models/model_spec.h"
 
 #include <cstdio>
@@ -57,6 +59,14 @@ std::string describe(const Material& material) {
     std::string text = material.model_name();
     for (const ParamSpec& param : material.model().params) text += " " + param.name + "=" + value_text(material, param);
     return text;
+}
+
+std::vector<std::string> builtin_models_of(Family family) {
+    std::vector<std::string> names;
+    const ModelTable& table = model_table();
+    for (int id = 0; id < table.builtin_count(); ++id)
+        if (table.at(id).family == family) names.push_back(table.at(id).name);
+    return names;
 }
 
 }  // namespace m3055::test

@@ -3,11 +3,13 @@
 // including those a model added later brings.
 #pragma once
 
-#include "scene/material.h"
+#include "models/material.h"
+#include "models/model_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace m3055::test {
 
@@ -19,5 +21,10 @@ namespace m3055::test {
 // One line for failure messages: the model's name, then every parameter,
 // e.g. "metal color=(0.9,0.6,0.4) d=0.05 lobes=(0.013,0.2)(0.1,0.4)".
 std::string describe(const Material& material);
+
+// The built-in models of `family`, by name in the table's order: tests that
+// go through "every classic model" take their list from here, so a model
+// added to the table (docs/adding-a-model.md) is covered without touching them.
+std::vector<std::string> builtin_models_of(Family family);
 
 }  // namespace m3055::test
