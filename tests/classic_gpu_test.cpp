@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include <functional>
+#include <ostream>
 
 namespace m3055 {
 namespace {
@@ -169,6 +170,8 @@ struct Case {
     std::string name;
     std::function<Scene()> make;
 };
+// Printed by its name (not its bytes) in test names and failure messages.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 std::vector<Case> all_cases() {
     std::vector<Case> cases;

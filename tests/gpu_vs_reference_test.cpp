@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <functional>
+#include <ostream>
 
 namespace m3055 {
 namespace {
@@ -29,6 +30,8 @@ struct Case {
     std::string name;
     std::function<Scene()> make;
 };
+// Printed by its name (not its bytes) in test names and failure messages.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 Material highlight(double m, double w = 1.0, double d = 0.5, dvec3 color = {0.8, 0.2, 0.2}) {
     Material material = Material::of("highlight");
