@@ -220,7 +220,7 @@ TEST_F(Explorer, ScriptErrorsNameTheLineAndFailTheRun) {
     EXPECT_NE(run.err.find("script.txt:3: unknown command 'fly'"), std::string::npos) << run.err;
 }
 
-// The Objects panel's shapes (app/explore/shape_editor.h): add each shape,
+// The Objects panel's shapes (explore/shapes.h): add each shape,
 // change a sphere's shape; the saved scene loads and renders as the window shows it.
 TEST_F(Explorer, AddsEveryShapeAndChangesAShape) {
     TempDir dir;
