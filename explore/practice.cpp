@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -76,16 +77,19 @@ double Practice::settle_left(const PracticeStatus& status, double now) const {
     return std::max(0.0, changed_at_ + kSettleSeconds - now);
 }
 
+std::optional<grading::Grade> Practice::refusal(const Scene& scene) const {
+    // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
+    const int brdf_object = allow_brdf_ ? -1 : first_brdf_object(scene);
+    if (brdf_object < 0) return std::nullopt;
+    return grading::broken_grade(assignment_, "", "objects[" + std::to_string(brdf_object) + "].material.file: " +
+                                                      scene_json::brdf_not_allowed_reason());
+}
+
 void Practice::regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const {
     const auto start = std::chrono::steady_clock::now();
     grading::Grade grade;
     try {
-        // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
-        const int brdf_object = allow_brdf_ ? -1 : first_brdf_object(scene);
-        if (brdf_object >= 0)
-            grade = grading::broken_grade(assignment_, "", "objects[" + std::to_string(brdf_object) +
-                                                               "].material.file: " +
-                                                               scene_json::brdf_not_allowed_reason());
+        if (std::optional<grading::Grade> refused = refusal(scene)) grade = std::move(*refused);
         else grade = timed_grade(assignment_, scene, renderer, reference_);
     } catch (const std::exception& e) {
         grade = grading::broken_grade(assignment_, "", text::one_line(e.what()));

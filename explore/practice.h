@@ -9,11 +9,13 @@
 #include "explore/practice_status.h"
 #include "explore/state.h"
 #include "grading/assignment.h"
+#include "grading/grade.h"
 #include "grading/level_compare.h"
 #include "renderer.h"
 #include "scene/scene.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace m3055::explore {
@@ -39,6 +41,9 @@ public:
     // `scene`), under the assignment's time budget as `grade` has it; the
     // result and its time into `status`.
     void regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const;
+    // The grade of a scene `grade` refuses before rendering it (a .brdf
+    // material without allow_brdf: 0 with grade's reason); none otherwise.
+    std::optional<grading::Grade> refusal(const Scene& scene) const;
 
     // The reference as shown beside the student's display (the PNG, the
     // render, a PFM's display; rows top to bottom), and its label.
