@@ -19,11 +19,6 @@
 #include <utility>
 #include <vector>
 
-namespace m3055 {
-class BrdfViews;
-class PlaneCurves;
-}
-
 namespace m3055::explore {
 
 struct ExplorerState {
@@ -86,7 +81,7 @@ struct ExplorerState {
     // .brdf files (explore/brdf_files.h): File > Open BRDF's path field, the
     // last parse or GLSL error (shown in the Material section), each watched
     // file's "mtime size" and the next poll time. The frame loop sets the
-    // GLSL check (a GL compile; empty: none) and the polar plot's curves.
+    // GLSL check (a GL compile; empty: none).
     std::string brdf_path;
     bool open_brdf_requested = false;
     std::string brdf_error;
@@ -94,13 +89,11 @@ struct ExplorerState {
     std::map<std::string, std::string> brdf_stamps;
     double brdf_next_poll = 0.0;
     std::function<std::string(const Material&)> brdf_compile_check;
-    PlaneCurves* plane_curves = nullptr;
-    // The "BRDF views" window (View menu): shown?, its slice's log colour, the
-    // lobe's turn (radians), and the frame loop's cache of the views.
+    // The "BRDF views" window (View menu): shown?, its slice's log colour and
+    // the lobe's turn (radians).
     bool show_brdf_views = false;
     bool views_log = true;
     float lobe_yaw = 0.6f, lobe_pitch = 0.5f;
-    BrdfViews* brdf_views = nullptr;
     // --assignment: the live grade shown in the Assignment section (practice.h).
     PracticeStatus practice;
 

@@ -138,9 +138,8 @@ public:
             }
             // .brdf files: the polar plot's GPU curves and the GLSL check of a (re)loaded file.
             plane_curves_ = std::make_unique<PlaneCurves>(gl);
-            state_.plane_curves = plane_curves_.get();
+            info_.plane_curves = plane_curves_.get();
             brdf_views_ = std::make_unique<BrdfViews>(gl);
-            state_.brdf_views = brdf_views_.get();
             state_.brdf_compile_check = [&gl](const Material& m) { return brdf_compile_error(gl, m); };
         } catch (const std::exception& e) {
             state_.error = e.what();
@@ -156,10 +155,9 @@ public:
         compare_.reset();  // GL objects go while the context is still current
         reference_.reset();
         practice_.reset();
-        state_.plane_curves = nullptr;
+        info_.plane_curves = nullptr;
         state_.brdf_compile_check = nullptr;
         plane_curves_.reset();
-        state_.brdf_views = nullptr;
         brdf_views_.reset();
         renderer_b_.reset();
         renderer_a_.reset();
@@ -245,7 +243,7 @@ public:
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             info_.profile_b = profile_of_b();
             draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
-            draw_brdf_views(state_);
+            draw_brdf_views(state_, brdf_views_.get());
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;

@@ -137,8 +137,8 @@ void lobe_view(ExplorerState& state, const Lobe3d& lobe) {
 
 }  // namespace
 
-void draw_brdf_views(ExplorerState& state) {
-    if (!state.show_brdf_views || !state.brdf_views) return;
+void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache) {
+    if (!state.show_brdf_views || !views_cache) return;
     const Material* material = selected_material(state);
     const ImVec2 screen = ImGui::GetIO().DisplaySize;  // top right, as much as fits (1280 x 720 too)
     const ImVec2 size(std::min(470.0f, screen.x * 0.4f), std::min(540.0f, screen.y - 60.0f));
@@ -150,7 +150,7 @@ void draw_brdf_views(ExplorerState& state) {
     }
     ImGui::Text("object %d (%s)", state.selected_object, material->model().label.c_str());
     try {
-        BrdfViews& views = *state.brdf_views;
+        BrdfViews& views = *views_cache;
         if (ImGui::BeginTabBar("views")) {
             if (ImGui::BeginTabItem("theta_h / theta_d")) {
                 ImGui::Checkbox("log colour", &state.views_log);

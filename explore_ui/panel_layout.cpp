@@ -117,7 +117,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     const float plots_w = std::max(200.0f, room.x - stats_w - 2.0f * gap);
 
     ImGui::BeginGroup();  // at least the width of its header's three controls
-    plot_section(state, std::max(plots_w * 0.55f, 320.0f), room.y);
+    plot_section(state, info.plane_curves, std::max(plots_w * 0.55f, 320.0f), room.y);
     ImGui::EndGroup();
 
     ImGui::SameLine(0.0f, gap);

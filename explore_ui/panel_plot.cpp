@@ -36,7 +36,7 @@ void light_combo(ExplorerState& state) {
 
 // The scale combo; model_max's top is the model's largest value (plane_curve.h),
 // recomputed only when the material or the light changes, not with the angle.
-double scale_combo(ExplorerState& state, const Material& material, const Light& light) {
+double scale_combo(ExplorerState& state, PlaneCurves* curves, const Material& material, const Light& light) {
     int scale = static_cast<int>(state.plot_scale);
     ImGui::SetNextItemWidth(100.0f);
     if (ImGui::Combo("##scale", &scale, "fixed\0model max\0log\0")) {
@@ -53,7 +53,7 @@ double scale_combo(ExplorerState& state, const Material& material, const Light& 
             cached_light.color != light.color || cached_light.lobes.size() != light.lobes.size()) {
             cached_material = material;
             cached_light = light;
-            cached_top = std::max(1e-6, state.plane_curves ? state.plane_curves->model_max(material, light, dvec3(0.0))
+            cached_top = std::max(1e-6, curves ? curves->model_max(material, light, dvec3(0.0))
                                                            : model_max(material, light, dvec3(0.0)));
         }
         return cached_top;
@@ -67,7 +67,7 @@ double scale_combo(ExplorerState& state, const Material& material, const Light& 
 
 }  // namespace
 
-void plot_section(ExplorerState& state, float width, float height) {
+void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float height) {
     const Material* material = selected_material(state);
     if (!material || state.scene.lights.empty()) {
         ImGui::TextUnformatted("(no light: nothing to plot)");
@@ -77,11 +77,11 @@ void plot_section(ExplorerState& state, float width, float height) {
     light_combo(state);
     const Light& light = state.scene.lights[std::size_t(state.plotted_light)];
     ImGui::SameLine();
-    const double top = scale_combo(state, *material, light);
+    const double top = scale_combo(state, curves, *material, light);
     const double incidence = incidence_at_target(light, state.scene.camera);
     // A .brdf model has no CPU reference: PlaneCurves evaluates it on the GPU.
     auto curve_of = [&](const Material& m) {
-        return state.plane_curves ? state.plane_curves->curve(m, light, incidence, state.scene.background)
+        return curves ? curves->curve(m, light, incidence, state.scene.background)
                                   : plane_curve(m, light, incidence, state.scene.background);
     };
     const PlaneCurve curve = curve_of(*material);

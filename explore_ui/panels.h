@@ -11,6 +11,11 @@
 
 #include <string>
 
+namespace m3055 {
+class BrdfViews;
+class PlaneCurves;
+}
+
 namespace m3055::explore {
 
 // What the panels show about the running program and the window.
@@ -29,6 +34,7 @@ struct FrameInfo {
     const RowProfile* profile = nullptr;        // A's levels on the last hovered row (none yet: nullptr)
     const RowProfile* profile_b = nullptr;      // B's on the same row in the A/B split (else nullptr)
     std::string compare_count;                  // the A/B split's "N of M pixels on another level", or ""
+    PlaneCurves* plane_curves = nullptr;        // the polar plot's curves on the GPU (null: the CPU's)
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.
@@ -47,7 +53,7 @@ void draw_dialogs(ExplorerState& state);
 void open_brdf_dialog(ExplorerState& state);
 void brdf_material_note(const ExplorerState& state, const Material& material);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
-void draw_brdf_views(ExplorerState& state);
+void draw_brdf_views(ExplorerState& state, BrdfViews* views);
 
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);
@@ -62,6 +68,7 @@ void assignment_section(ExplorerState& state);
 // The Lights panel's top-down light plot and key-to-fill ratio (a drag turns a light: edit_light).
 void light_plot(ExplorerState& state);
 // The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.
-void plot_section(ExplorerState& state, float width, float height);
+// `curves`: the GPU's curves (.brdf models need them), else the CPU reference's.
+void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float height);
 
 }  // namespace m3055::explore
