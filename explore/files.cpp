@@ -100,4 +100,40 @@ std::string next_screenshot_path(const ExplorerState& state) {
     }
 }
 
+namespace {
+
+// PATH.png -> PATH.json (a path without an extension gets one).
+std::string json_beside(const std::string& png_path) {
+    const auto dot = png_path.find_last_of('.');
+    const auto slash = png_path.find_last_of('/');
+    const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return (has_extension ? png_path.substr(0, dot) : png_path) + ".json";
+}
+
+}  // namespace
+
+// The screenshot: exactly what `m3055 render` writes for the saved scene (the
+// same Renderer, the same read_display and write_png), and the scene beside it.
+// A script's `screenshot PATH` names the file; F12 takes the next free
+// NAME-0001.png in the chosen folder, so nothing is overwritten.
+void take_screenshot(ExplorerState& state, Renderer& renderer) {
+    const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
+    state.screenshot_path.clear();
+    try {
+        // The screenshot waits for the specialized program (as `m3055 render` uses).
+        const bool deferring = renderer.defers_compiles();
+        renderer.set_defer_compiles(false);
+        renderer.render(state.scene);
+        renderer.set_defer_compiles(deferring);
+        write_png(png, renderer.read_display());
+        const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
+        write_file_atomic(json, text.data(), text.size());
+        std::error_code ec;
+        const std::string full = std::filesystem::absolute(png, ec).string();
+        state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);
+    } catch (const std::exception& e) {
+        state.error = e.what();
+    }
+}
+
 }  // namespace m3055::explore

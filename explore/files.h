@@ -1,10 +1,11 @@
 // The explorer's files: starting from a scene, loading a scene file or a
 // figure preset (each one undo step), saving (the scene's own file, or Save
-// As), and the next free screenshot name. Errors go to state.error (and a
+// As), and screenshots (the next free name; the PNG and its scene JSON). Errors go to state.error (and a
 // failed load to state.load_error); the current scene stays.
 #pragma once
 
 #include "explore/state.h"
+#include "renderer.h"
 
 #include <string>
 
@@ -30,5 +31,10 @@ void save_or_ask(ExplorerState& state);
 // F12: the next free DIR/NAME-0001.png (NAME: the scene file's stem, or "m3055"),
 // neither it nor its .json existing yet.
 std::string next_screenshot_path(const ExplorerState& state);
+// Writes the screenshot (state.screenshot_path once, else the next free
+// path) with `renderer`, which then shows the scene with its specialized
+// program: exactly the PNG `m3055 render` writes for the JSON written beside
+// it. The full paths go to state.status, an error to state.error.
+void take_screenshot(ExplorerState& state, Renderer& renderer);
 
 }  // namespace m3055::explore

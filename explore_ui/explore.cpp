@@ -14,6 +14,7 @@
 #include "explore/practice.h"
 #include "explore/readouts.h"
 #include "explore/script.h"
+#include "explore/start.h"
 #include "explore/state.h"
 #include "explore/undo.h"
 #include "explore_ui/compare_view.h"
@@ -54,37 +55,6 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string json_beside(const std::string& png_path) {
-    const auto dot = png_path.find_last_of('.');
-    const auto slash = png_path.find_last_of('/');
-    const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
-    return (has_extension ? png_path.substr(0, dot) : png_path) + ".json";
-}
-
-// The screenshot: exactly what `m3055 render` writes for the saved scene (the
-// same Renderer, the same read_display and write_png), and the scene beside it.
-// A script's `screenshot PATH` names the file; F12 takes the next free
-// NAME-0001.png in the chosen folder, so nothing is overwritten.
-void take_screenshot(ExplorerState& state, Renderer& renderer) {
-    const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
-    state.screenshot_path.clear();
-    try {
-        // The screenshot waits for the specialized program (as `m3055 render` uses).
-        const bool deferring = renderer.defers_compiles();
-        renderer.set_defer_compiles(false);
-        renderer.render(state.scene);
-        renderer.set_defer_compiles(deferring);
-        write_png(png, renderer.read_display());
-        const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
-        write_file_atomic(json, text.data(), text.size());
-        std::error_code ec;
-        const std::string full = std::filesystem::absolute(png, ec).string();
-        state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);
-    } catch (const std::exception& e) {
-        state.error = e.what();
-    }
-}
-
 void write_stats(const std::string& path, long frames, long renders, const Script* script) {
     nlohmann::json stats = {{"frames", frames}, {"renders", renders}};
     stats["idle"] = nlohmann::json::array();
@@ -96,29 +66,6 @@ void write_stats(const std::string& path, long frames, long renders, const Scrip
     }
     const std::string text = stats.dump(2) + "\n";
     write_file_atomic(path, text.data(), text.size());
-}
-
-// `explore --assignment A.json NEW.json` with no NEW.json yet: a student's
-// first practice; the assignment's start scene is the scene, saved as NEW.json.
-bool new_submission(const ExploreOptions& options) {
-    return !options.assignment_path.empty() && !options.scene_path.empty() &&
-           !std::filesystem::exists(options.scene_path);
-}
-
-// The starting scene: --scene, or the spec example. False (message printed) on a bad file.
-bool load_start_scene(ExplorerState& state, const ExploreOptions& options) {
-    if (options.scene_path.empty() || new_submission(options)) {
-        set_scene(state, default_scene(), "spec example");
-        return true;
-    }
-    try {
-        set_scene(state, load_scene_file(options.scene_path), options.scene_path);
-        state.scene_file = options.scene_path;
-        return true;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return false;
-    }
 }
 
 // One running explorer: the state, the script, the renderers, and the frame.
@@ -521,22 +468,13 @@ private:
 int run_explorer(const ExploreOptions& options) {
     // ---- The starting scene and script (before any window, so errors are quick) ----
     ExplorerState state;
-    if (!load_start_scene(state, options)) return 1;
     std::optional<grading::Assignment> assignment;
     try {
-        if (!options.assignment_path.empty()) {
-            const bool fresh = new_submission(options);
-            assignment = open_assignment(state, options.assignment_path, !options.scene_path.empty() && !fresh);
-            if (fresh) {  // Ctrl+S writes the named file: the one the student will submit
-                state.scene_file = state.save_path = options.scene_path;
-                state.status = "new submission: the assignment's start scene; Ctrl+S writes " + options.scene_path;
-            }
-        }
+        assignment = start_scene(state, options.scene_path, options.assignment_path);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;
     }
-    start_history(state);
     std::optional<Script> script;
     if (!options.script_path.empty()) {
         try {

@@ -3,6 +3,7 @@
 // is one undo step, and screenshots never overwrite.
 #include "explore/files.h"
 #include "explore/operations.h"
+#include "explore/start.h"
 #include "explore/undo.h"
 #include "scene/load.h"
 #include "scene/presets.h"
@@ -105,6 +106,31 @@ TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {
     EXPECT_EQ(next_screenshot_path(state), (dir / "m3055-0003.png").string());
     ASSERT_TRUE(save_scene(state, (dir / "lesson.json").string()));
     EXPECT_EQ(next_screenshot_path(state), (dir / "lesson-0001.png").string());
+}
+
+TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
+    const fs::path dir = fresh_folder("explore_files_start");
+    ExplorerState plain;
+    EXPECT_FALSE(start_scene(plain, "", ""));
+    EXPECT_EQ(plain.scene_name, "spec example");
+    EXPECT_EQ(scene_to_json(plain.scene), scene_to_json(default_scene()));
+    EXPECT_FALSE(unsaved(plain));
+    EXPECT_FALSE(plain.history.can_undo());
+
+    ExplorerState saved = started();
+    ASSERT_TRUE(load_figure(saved, "fig09"));
+    const std::string file = (dir / "nine.json").string();
+    ASSERT_TRUE(save_scene(saved, file));
+    ExplorerState named;
+    EXPECT_FALSE(start_scene(named, file, ""));
+    EXPECT_EQ(named.scene_file, file);
+    EXPECT_EQ(named.scene_name, file);
+    EXPECT_EQ(scene_to_json(named.scene), scene_to_json(saved.scene));
+    EXPECT_FALSE(unsaved(named));
+
+    ExplorerState missing;
+    EXPECT_THROW(start_scene(missing, (dir / "none.json").string(), ""), std::exception)
+        << "without an assignment, a scene file must exist";
 }
 
 TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
