@@ -49,15 +49,21 @@ void note_edit(ExplorerState& state, const std::string& what, const std::string&
 
 // ---- Materials --------------------------------------------------------------------------
 
-void edit_material(ExplorerState& state, const Material& edited) {
+void edit_material(ExplorerState& state, const Material& edited, const std::string& action) {
     if (!selected_material(state)) return;
+    Material& material = state.scene.objects[std::size_t(state.selected_object)].material;
+    if (!action.empty()) {
+        material = edited;
+        return note_edit(state, action);
+    }
     Scene scene = state.scene;
     scene.objects[std::size_t(state.selected_object)].material = edited;
     take_scene(state, std::move(scene));
 }
 
-void edit_material_b(ExplorerState& state, const Material& edited) {
-    note(state, describe_change(state.material_b, edited));
+void edit_material_b(ExplorerState& state, const Material& edited, const std::string& action) {
+    if (!action.empty()) note_edit(state, "B " + action);
+    else note(state, describe_change(state.material_b, edited));
     state.material_b = edited;
 }
 
@@ -77,8 +83,7 @@ bool rescale_weights_to_eq14(ExplorerState& state) {
     if (!material) return false;
     Material rescaled = *material;
     if (!rescale_to_eq14(rescaled)) return false;
-    state.scene.objects[std::size_t(state.selected_object)].material = rescaled;
-    note_edit(state, "rescale weights to eq. 14");
+    edit_material(state, rescaled, kEq14Action);
     return true;
 }
 

@@ -28,15 +28,18 @@ void note_edit(ExplorerState& state, const std::string& what, const std::string&
 
 // ---- Materials --------------------------------------------------------------------------
 // The selected object's material becomes `edited` (a model switch is named
-// "model X -> Y", one value "objects[I].material.NAME FROM -> TO").
-void edit_material(ExplorerState& state, const Material& edited);
+// "model X -> Y", one value "objects[I].material.NAME FROM -> TO"; `action`,
+// when given, names it instead: a button's "rescale weights to eq. 14").
+void edit_material(ExplorerState& state, const Material& edited, const std::string& action = "");
 // The A/B compare's material B (labels start with "B ").
-void edit_material_b(ExplorerState& state, const Material& edited);
+void edit_material_b(ExplorerState& state, const Material& edited, const std::string& action = "");
 // The selected object's / B's model by name (values with the same name and
 // meaning are kept: with_model); std::runtime_error for a name not in the table.
 void set_model(ExplorerState& state, const std::string& model_name);
 void set_model_b(ExplorerState& state, const std::string& model_name);
-// The metal's "Rescale weights to eq. 14"; false (nothing changed) when not possible.
+// The metal's "Rescale weights to eq. 14" on the selected object's material
+// (kEq14Action); false (nothing changed) when not possible.
+inline constexpr const char* kEq14Action = "rescale weights to eq. 14";
 bool rescale_weights_to_eq14(ExplorerState& state);
 
 // ---- Lights -----------------------------------------------------------------------------

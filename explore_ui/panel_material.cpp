@@ -103,7 +103,8 @@ bool param_widget(Material& material, const ParamSpec& param) {
     return changed;
 }
 
-// The metals' eq. 14: the highlight centre is C0 when d + D(0) = 1.
+// The metals' eq. 14: the highlight centre is C0 when d + D(0) = 1. True
+// when the button rescaled the weights.
 bool eq14_readout(Material& material) {
     const bool beckmann = material.model().param("lobes").form_for(material).key == "m";
     const double peak = highlight_peak(material);
@@ -122,9 +123,10 @@ bool eq14_readout(Material& material) {
 
 }  // namespace
 
-// Edits `material` (a copy: the caller hands it to an operation). Used by
-// the material section and by the compare section's material B.
-bool material_editor(Material& material) {
+// Edits `material` (a copy: the caller hands it to an operation, with
+// `action` naming a button's edit, else ""). Used by the material section and
+// by the compare section's material B.
+bool material_editor(Material& material, std::string& action) {
     bool changed = false;
     if (ImGui::BeginCombo("model", material.model().label.c_str())) {
         for (const ModelSpec* model : all_models()) {
@@ -144,7 +146,10 @@ bool material_editor(Material& material) {
         changed |= param_widget(material, param);
         ImGui::PopID();
     }
-    if (material.model().family == Family::metal) changed |= eq14_readout(material);
+    if (material.model().family == Family::metal && eq14_readout(material)) {
+        action = kEq14Action;
+        changed = true;
+    }
     return changed;
 }
 
@@ -155,7 +160,8 @@ void material_section(ExplorerState& state) {
                 state.scene.objects.size());
     brdf_material_note(state, *material);
     Material edited = *material;
-    if (material_editor(edited)) edit_material(state, edited);
+    std::string action;
+    if (material_editor(edited, action)) edit_material(state, edited, action);
 }
 
 }  // namespace m3055::explore

@@ -14,7 +14,7 @@
 
 namespace m3055::explore {
 
-bool material_editor(Material& material);  // panel_material.cpp
+bool material_editor(Material& material, std::string& action);  // panel_material.cpp
 
 void display_section(ExplorerState& state, const FrameInfo& info) {
     Display display = state.scene.display;  // edited here, taken by edit_display
@@ -143,7 +143,8 @@ void compare_section(ExplorerState& state) {
     tooltip("The only thing that copies A into B: switching the split on or off keeps B as it is.");
     ImGui::PushID("material_b");
     Material edited = state.material_b;
-    if (material_editor(edited)) edit_material_b(state, edited);
+    std::string action;
+    if (material_editor(edited, action)) edit_material_b(state, edited, action);
     ImGui::PopID();
 }
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -131,6 +132,18 @@ TEST(ExploreUndo, NamedActionsSayTheirName) {
     set_scene_value(state, "objects[0].material.w", "0.25");
     commit_edits(state);
     EXPECT_EQ(undo_label(state), "objects[0].material.w 1 -> 0.25");
+}
+
+TEST(ExploreUndo, Eq14RescaleIsNamedAfterItsButton) {
+    ExplorerState state = started();
+    set_model(state, "metal");
+    set_number(state, "d", 0.2);
+    commit_edits(state);
+    ASSERT_GT(std::abs(highlight_peak(*selected_material(state)) - 1.0), 1e-3) << "eq. 14 must not hold yet";
+    ASSERT_TRUE(rescale_weights_to_eq14(state));
+    commit_edits(state);
+    EXPECT_EQ(undo_label(state), "rescale weights to eq. 14");
+    EXPECT_NEAR(highlight_peak(*selected_material(state)), 1.0, 1e-9);
 }
 
 TEST(ExploreUndo, AnEditThatChangesNothingIsNoStep) {
