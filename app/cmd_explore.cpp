@@ -1,10 +1,10 @@
-// `m3055 explore`: the interactive explorer (app/explore/), and plain `m3055`.
+// `m3055 explore`: the interactive explorer (explore/ and explore_ui/), and plain `m3055`.
 // Built with -DM3055_BUILD_EXPLORER=OFF (no GLFW, no ImGui), the subcommand is
 // still there so that `m3055 explore ...` says in one line why it cannot open.
 #include "commands.h"
 
 #ifdef M3055_HAVE_EXPLORER
-#include "explore/explore.h"
+#include "explore_ui/explore.h"
 #endif
 
 #include <CLI/CLI.hpp>
@@ -34,7 +34,7 @@ void add_explore_command(CLI::App& app) {
                       "With --assignment: grade .brdf materials as m3055 grade --allow-brdf does (without it they "
                       "score 0, as grade gives them)");
     explore->add_option("--script", options->script_path,
-                        "Text file of UI actions, one per frame (see app/explore/script.h)")
+                        "Text file of UI actions, one per frame (see explore/script.h)")
         ->check(CLI::ExistingFile);
     explore->add_flag("--exit-after-script", options->exit_after_script,
                       "Quit when the script has run (and the window capture is written)");

@@ -1,6 +1,6 @@
 # Generates a C++ source holding every scenes/*.json file as a string, so the
-# explorer's figure presets need no files at run time. Invoked by
-# app/CMakeLists.txt as
+# explorer's figure presets need no files at run time. Invoked by the
+# top-level CMakeLists.txt (for m3055_explore) as
 #   cmake -DSCENES_DIR=... -DOUTPUT=... -P embed_scenes.cmake
 file(GLOB files RELATIVE "${SCENES_DIR}" "${SCENES_DIR}/*.json")
 list(SORT files)

@@ -5,7 +5,7 @@
 // nothing, ticking the A/B split keeps B, Esc with unsaved edits does not
 // quit, and at 1280 x 720 the whole display is on screen.
 //
-// Widget positions: the side panel's layout is fixed (app/explore/display_view.cpp
+// Widget positions: the side panel's layout is fixed (explore/layout.cpp
 // layout_for, panel_layout.cpp); the positions below are in window
 // coordinates for the default 1500 x 940 window and the spec example. Every
 // test first checks that its action changed what it should, so a moved
@@ -383,7 +383,7 @@ TEST_F(ExplorerInput, SplitOnKeepsB) {
     });
     ASSERT_GT(a.scale, 0) << "A is still the scene";
     const int w = expected.width * a.scale, h = expected.height * a.scale;
-    const int bx = a.x + w + 8 * 1;  // kCompareGap (app/explore/display_view.h) at framebuffer scale 1
+    const int bx = a.x + w + 8 * 1;  // kCompareGap (explore/layout.h) at framebuffer scale 1
     ASSERT_LE(bx + w, split.width) << "the split shows two panes";
     EXPECT_GT(differing_pixels(crop(split, bx, a.y, w, h), crop(split, a.x, a.y, w, h)), 1000)
         << "B (metal_blinn) differs from A: the split did not copy A into B";

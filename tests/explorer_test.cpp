@@ -220,7 +220,7 @@ TEST_F(Explorer, ScriptErrorsNameTheLineAndFailTheRun) {
     EXPECT_NE(run.err.find("script.txt:3: unknown command 'fly'"), std::string::npos) << run.err;
 }
 
-// The Objects panel's shapes (app/explore/shape_editor.h): add each shape,
+// The Objects panel's shapes (explore/shapes.h): add each shape,
 // change a sphere's shape; the saved scene loads and renders as the window shows it.
 TEST_F(Explorer, AddsEveryShapeAndChangesAShape) {
     TempDir dir;
@@ -267,59 +267,9 @@ TEST_F(Explorer, BadStartingSceneIsAOneLineErrorNotACrash) {
     EXPECT_NE(run.err.find("bad.json"), std::string::npos) << run.err;
 }
 
-// Issue 12: undo/redo keeps at least 200 steps, each named after what it
-// changed; loads and presets are steps too.
-TEST_F(Explorer, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
-    TempDir dir;
-    std::string script = "figure fig05\nprint_state\n";
-    for (int i = 1; i <= 250; ++i) script += "set objects[0].material.m " + std::to_string(i) + "\n";
-    script += "print_state\n";
-    for (int i = 0; i < 210; ++i) script += "undo\n";
-    script += "save after_undo.json\nredo\nsave after_redo.json\nlight_preset three_point_white\nprint_state\nundo\n"
-              "save preset_undone.json\nfigure fig06\nundo\nprint_state\n";
-    test::write_text(dir.file("script.txt"), script);
-    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.out.find("undo=figure preset fig05\t"), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("undo=objects[0].material.m\tredo=\tsteps=251"), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("undo=light preset\t"), std::string::npos) << run.out;
-    auto m_of = [&](const std::string& file) {
-        return load_scene_file(dir.file(file)).objects[0].material.number("m");
-    };
-    EXPECT_EQ(m_of("after_undo.json"), 40.0) << "250 steps, 210 undone";
-    EXPECT_EQ(m_of("after_redo.json"), 41.0);
-    EXPECT_EQ(load_scene_file(dir.file("preset_undone.json")).lights.size(),
-              load_scene_file(dir.file("after_redo.json")).lights.size());
-    // The last undo took back the Fig. 6 preset: the scene is fig05 with m = 41 again.
-    EXPECT_NE(run.out.rfind("redo=figure preset fig06"), std::string::npos) << run.out;
-}
-
-// A number typed with unsaved edits does not replace the scene; Ctrl+digit
-// does, undoably. The title names the scene and marks unsaved edits.
-TEST_F(Explorer, DigitKeysDoNotReplaceAnEditedScene) {
-    TempDir dir;
-    test::write_text(dir.file("scene.json"), test::read_text(test::source_path("scenes/spec_example.json")));
-    std::string script = "print_state\nset objects[0].material.m 33\nprint_state\nkey 0\nkey 6\nprint_state\n"
-                         "key ctrl+2\nprint_state\nkey ctrl+z\nkey ctrl+s\nprint_state\n";
-    test::write_text(dir.file("script.txt"), script);
-    const ExplorerRun run =
-        run_explorer(dir.path(), {"--scene", dir.file("scene.json"), "--script", dir.file("script.txt"),
-                                  "--exit-after-script"});
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    const std::string name = dir.file("scene.json");
-    std::istringstream lines(run.out);
-    std::vector<std::string> states;
-    for (std::string line; std::getline(lines, line);)
-        if (line.rfind("state ", 0) == 0) states.push_back(line);
-    ASSERT_EQ(states.size(), 5u) << run.out;
-    EXPECT_EQ(states[0].find("state title=" + name + "\t"), 0u) << states[0];
-    EXPECT_EQ(states[1].find("state title=" + name + " * (unsaved edits)\t"), 0u) << states[1];
-    EXPECT_EQ(states[2], states[1]) << "0 and 6 typed with unsaved edits changed nothing";
-    EXPECT_EQ(states[3].find("state title=scenes/fig06.json\tundo=figure preset fig06"), 0u) << states[3];
-    // Ctrl+Z took the preset back, Ctrl+S wrote the scene to its own file.
-    EXPECT_EQ(states[4].find("state title=scene.json\t"), 0u) << states[4];
-    EXPECT_EQ(load_scene_file(name).objects[0].material.number("m"), 33.0);
-}
+// Undo/redo (250 named steps), digit keys against unsaved edits and Ctrl+digit
+// are unit tests of the explorer's logic without a window:
+// tests/explore_undo_test.cpp and tests/explore_keys_test.cpp.
 
 // F12 writes the next free NAME-0001.png (+ JSON) in the chosen folder and
 // never overwrites; the PNG is what `m3055 render` writes for the JSON.

@@ -1,7 +1,7 @@
-// The explorer's logarithmic sliders (app/explore/slider_scale.h): position
+// The explorer's logarithmic sliders (explore/slider_scale.h): position
 // and value are inverses, every decade gets the same room, and the text keeps
 // three significant digits (issue 12: a weight of 4.5e-5 read "0.0000").
-#include "../app/explore/slider_scale.h"
+#include "explore/slider_scale.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,10 @@
 #include "latency.h"
 
 #include "timing.h"
+#include "explore/display_renderers.h"
+#include "explore/files.h"
+#include "explore/operations.h"
+#include "explore/undo.h"
 #include "models/model_table.h"
 #include "frame/renderer.h"
 #include "models/material.h"
@@ -17,36 +21,44 @@ namespace m3055::bench {
 
 namespace {
 
-using Edit = std::function<void(Scene&)>;
+using Edit = std::function<void(explore::ExplorerState&)>;
 
 // The session: what a student does in the explorer, one edit a step, at the
-// default 512 x 320 x 5 bits.
+// default 512 x 320 x 5 bits, through the explorer's own operations
+// (explore/operations.h: what the panels call).
 std::vector<Edit> session() {
+    using namespace explore;
     std::vector<Edit> steps;
     for (const ModelSpec& model : model_table().models())
-        steps.push_back([&model](Scene& s) { s.objects[0].material = with_model(s.objects[0].material, model); });
-    steps.push_back([](Scene& s) { s.objects[0].material = Material::of("highlight"); });
+        steps.push_back([name = model.name](ExplorerState& s) { set_model(s, name); });
+    steps.push_back([](ExplorerState& s) { edit_material(s, Material::of("highlight")); });
     for (LightType type : {LightType::point, LightType::spot, LightType::directional}) {
-        steps.push_back([type](Scene& s) {
-            Light& light = s.lights[0];
+        steps.push_back([type](ExplorerState& s) {
+            Light light = s.scene.lights[0];
             light.type = type;
             light.position = {2.0, 2.0, 3.0};
             light.spot_direction = {-2.0, -2.0, -3.0};
+            edit_light(s, 0, light);
         });
     }
-    for (LightPreset preset : kAllLightPresets) steps.push_back([preset](Scene& s) { s.lights = light_preset(preset); });
+    for (LightPreset preset : kAllLightPresets)
+        steps.push_back([preset](ExplorerState& s) { apply_light_preset(s, preset); });
     for (int i = 1; i <= 3; ++i) {
-        steps.push_back([i](Scene& s) {
-            Object sphere = s.objects[0];
-            sphere.center = {2.2 * i, 0.0, 0.0};
-            sphere.radius = 0.8;
-            if (i == 2) sphere.material = Material::of("translucent");
-            if (i == 3) sphere.material = Material::of("metal");
-            s.objects.push_back(sphere);
+        steps.push_back([i](ExplorerState& s) {  // "+ add sphere", then its model
+            s.selected_object = 0;
+            add_object(s, Shape::sphere);
+            if (i == 2) edit_material(s, Material::of("translucent"));
+            if (i == 3) edit_material(s, Material::of("metal"));
         });
     }
-    for (int i = 0; i < 50; ++i)  // a slider dragged: m (eq. 4) from 2 to 100
-        steps.push_back([i](Scene& s) { s.objects[0].material.set_number("m", 2.0 + 98.0 * i / 49.0); });
+    for (int i = 0; i < 50; ++i) {  // a slider dragged: m (eq. 4) from 2 to 100
+        steps.push_back([i](ExplorerState& s) {
+            s.selected_object = 0;
+            Material m = s.scene.objects[0].material;
+            m.set_number("m", 2.0 + 98.0 * i / 49.0);
+            edit_material(s, m);
+        });
+    }
     return steps;
 }
 
@@ -57,34 +69,38 @@ double percentile(std::vector<double> samples, double p) {
     return samples[lo] + (samples[hi] - samples[lo]) * (at - double(lo));
 }
 
+// The explorer's frame, timed: the edit, then A drawn (explore/display_renderers.h
+// render_displays, B only in the split) and finished. Between steps, the
+// explorer's idle rule (render_specialized_when_idle) as the explorer runs it
+// after kIdleBeforeCompile s without input.
 LatencyStats run_session(const GlApi& gl, bool defer) {
-    Renderer renderer(gl);
-    renderer.set_defer_compiles(defer);
-    Scene scene = default_scene();
-    // Start-up (not a step): the first scene's programs, and the general ones.
-    if (defer) renderer.warm_up_general_programs();
-    renderer.render(scene);
-    if (defer) renderer.render_specialized(scene);
+    Renderer a(gl), b(gl);  // B stays idle: the session has no A/B split
+    if (defer) explore::defer_compiles(a);
+    explore::ExplorerState state;  // as `m3055 explore` starts
+    explore::set_scene(state, default_scene(), "spec example");
+    explore::start_history(state);
+    // Start-up (not a step): the first scene's programs.
+    explore::render_displays(state, a, b);
+    if (defer) explore::render_specialized_when_idle(state, a, b);
     gl.Finish();
     LatencyStats stats;
     std::vector<double> samples;
     for (const Edit& edit : session()) {
-        const std::size_t programs = renderer.compiled_programs();
+        const std::size_t programs = a.compiled_programs();
         samples.push_back(time_ms([&]() {
-            edit(scene);
-            renderer.render(scene);
+            edit(state);
+            explore::render_displays(state, a, b);
             gl.Finish();
         }));
-        stats.compiles_in_steps += int(renderer.compiled_programs() - programs);
-        // The pause before the next input: the explorer draws the scene with
-        // its specialized programs then (app/explore/explore.cpp compile_when_idle).
-        if (renderer.deferred_programs() > 0) {
-            const std::size_t before = renderer.compiled_programs();
+        stats.compiles_in_steps += int(a.compiled_programs() - programs);
+        explore::commit_edits(state);  // the step ends (untimed: the frame loop does it after drawing)
+        if (explore::deferred_programs(a, b) > 0) {
+            const std::size_t before = a.compiled_programs();
             const double ms = time_ms([&]() {
-                renderer.render_specialized(scene);
+                explore::render_specialized_when_idle(state, a, b);
                 gl.Finish();
             });
-            stats.compiles_when_idle += int(renderer.compiled_programs() - before);
+            stats.compiles_when_idle += int(a.compiled_programs() - before);
             stats.max_idle_compile_ms = std::max(stats.max_idle_compile_ms, ms);
         }
     }

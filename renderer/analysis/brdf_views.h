@@ -3,7 +3,7 @@
 // slice (Burley 2012), the directional albedo against the view angle, and the
 // 3D lobe of f (N.L) for one incident direction. `m3055 plot` writes them as
 // gnuplot scripts (app/plot_views.cpp); the explorer draws them in its "BRDF
-// views" window (app/explore/panel_brdf_views.cpp). No ImGui, no gnuplot here.
+// views" window (app/explore_ui/panel_brdf_views.cpp). No ImGui, no gnuplot here.
 #pragma once
 
 #include "passes/brdf_grid.h"

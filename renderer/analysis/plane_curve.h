@@ -1,7 +1,7 @@
 // The explorer's polar plot, as numbers: a material's value for every view
 // direction in the plane of a light and the normal N, for that light alone as
 // a directional light at `incidence_deg` from N. ImGui-free (tests check it;
-// app/explore/polar_plot.cpp draws it).
+// app/explore_ui/polar_plot.cpp draws it).
 //
 // - A light behind the surface (incidence > 90 deg) lights nothing: the curve
 //   is zero and light_behind says so (there is no clamp to 90 deg).

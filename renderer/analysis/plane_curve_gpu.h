@@ -1,7 +1,7 @@
 // The explorer's polar-plot numbers for any model. Built-in models have a CPU
 // reference (plane_curve.h); a .brdf file's model is GLSL only, so its curve
 // is evaluated on the GPU by the grid pass (passes/brdf_grid.h) that `m3055
-// plot` and brdf-check use. No ImGui here: app/explore/panel_plot.cpp draws it.
+// plot` and brdf-check use. No ImGui here: app/explore_ui/panel_plot.cpp draws it.
 #pragma once
 
 #include "analysis/plane_curve.h"

@@ -1,0 +1,96 @@
+// The Lights panel's top-down light plot (three-point lighting): the subject
+// in the middle, each light an arrow pointing at it from its azimuth, named
+// (key / fill / back when a three-point preset made them); dragging an arrow
+// turns that light in azimuth (its elevation and distance are kept). Under it
+// the key-to-fill ratio at the subject's centre, from renderer/analysis/
+// lighting_ratio.h (the function grading uses), updated live.
+#include "explore_ui/panels.h"
+
+#include "analysis/lighting_ratio.h"
+#include "explore_ui/widgets.h"
+#include "scene/light_direction.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <string>
+
+namespace m3055::explore {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// Seen from above (+y): +x right, +z (towards the default camera) down.
+ImVec2 plan_direction(const Light& light, const dvec3& subject) {
+    const dvec3 d = light.type == LightType::directional ? light.direction : light.position - subject;
+    const double length = std::hypot(d.x, d.z);
+    if (length < 1e-9) return ImVec2(0.0f, 0.0f);  // straight above or below
+    return ImVec2(static_cast<float>(d.x / length), static_cast<float>(d.z / length));
+}
+
+// Turns the light about the vertical through the subject to `azimuth_deg`.
+void set_azimuth(Light& light, const dvec3& subject, double azimuth_deg) {
+    if (light.type == LightType::directional) {
+        Angles angles = angles_from_direction(light.direction);
+        angles.azimuth_deg = azimuth_deg;
+        light.direction = direction_from_angles(angles);
+        return;
+    }
+    const dvec3 offset = light.position - subject;
+    const double radius = std::hypot(offset.x, offset.z);
+    light.position = subject + dvec3(radius * std::sin(azimuth_deg * kDeg), offset.y, radius * std::cos(azimuth_deg * kDeg));
+}
+
+}  // namespace
+
+void light_plot(ExplorerState& state) {
+    static int dragged = -1;
+    const auto& lights = state.scene.lights;
+    const dvec3 subject = subject_centre(state.scene);
+    const float size = 150.0f, reach = size * 0.5f - 14.0f;
+    const ImVec2 corner = ImGui::GetCursorScreenPos();
+    const ImVec2 centre(corner.x + size * 0.5f, corner.y + size * 0.5f);
+    ImGui::InvisibleButton("##light plot", ImVec2(size, size));
+    tooltip("Seen from above, the camera at the bottom. Drag an arrow to turn its light about the subject.");
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRect(corner, ImVec2(corner.x + size, corner.y + size), IM_COL32(255, 255, 255, 40));
+    draw->AddCircleFilled(centre, 9.0f, IM_COL32(170, 170, 170, 255));
+    draw->AddText(ImVec2(centre.x - 18, corner.y + size - 16), IM_COL32(255, 255, 255, 110), "camera");
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    if (ImGui::IsItemActivated()) {  // the arrow nearest the press
+        float best = 1e9f;
+        for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+            const ImVec2 d = plan_direction(lights[std::size_t(i)], subject);
+            const float dx = centre.x + d.x * reach - mouse.x, dy = centre.y + d.y * reach - mouse.y;
+            if (dx * dx + dy * dy < best) best = dx * dx + dy * dy, dragged = i;
+        }
+    }
+    if (ImGui::IsItemActive() && dragged >= 0 && dragged < static_cast<int>(lights.size()) &&
+        (mouse.x != centre.x || mouse.y != centre.y)) {
+        Light turned = lights[std::size_t(dragged)];
+        set_azimuth(turned, subject, std::atan2(mouse.x - centre.x, mouse.y - centre.y) / kDeg);
+        if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f)
+            edit_light(state, dragged, turned);
+    }
+    if (!ImGui::IsItemActive()) dragged = -1;
+    for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+        const Light& light = lights[std::size_t(i)];
+        const ImVec2 d = plan_direction(light, subject);
+        const ImVec2 tail(centre.x + d.x * reach, centre.y + d.y * reach), head(centre.x + d.x * 14.0f, centre.y + d.y * 14.0f);
+        const ImU32 colour = !light.enabled ? IM_COL32(120, 120, 120, 255)
+                             : i == dragged ? IM_COL32(255, 255, 255, 255)
+                                            : IM_COL32(255, 220, 60, 255);
+        draw->AddLine(tail, head, colour, 2.0f);
+        draw->AddTriangleFilled(head, ImVec2(head.x + d.x * 7 - d.y * 4, head.y + d.y * 7 + d.x * 4),
+                                ImVec2(head.x + d.x * 7 + d.y * 4, head.y + d.y * 7 - d.x * 4), colour);
+        const std::string label = light.name.empty() ? std::to_string(i) : light.name;
+        draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
+    }
+    const KeyFillRatio ratio = key_to_fill_ratio(state.scene);
+    ImGui::Text("key-to-fill at the subject: %s", ratio.text().c_str());
+    tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
+            "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
+}
+
+}  // namespace m3055::explore

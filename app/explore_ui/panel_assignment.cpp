@@ -1,0 +1,61 @@
+// The side panel's Assignment section (`m3055 explore --assignment`): the
+// live score and the reasons `m3055 grade` would give the scene as it is now
+// (practice.h computes them with grading::grade_one), and how to submit it.
+#include "explore_ui/panels.h"
+
+#include "explore_ui/widgets.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace m3055::explore {
+
+namespace {
+
+const ImVec4 kGood(0.45f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.45f, 0.45f, 1.0f), kStale(0.6f, 0.6f, 0.6f, 1.0f);
+
+void score_line(const PracticeStatus& p) {
+    if (!p.graded) {
+        ImGui::TextColored(kStale, "grading ...");
+        return;
+    }
+    const ImVec4 colour = p.pending ? kStale : p.passed ? kGood : kBad;
+    ImGui::TextColored(colour, "Score %g / %g  %s (pass at %g)", p.score, p.max, p.passed ? "PASS" : "FAIL",
+                       p.pass_score);
+    if (p.pending) ImGui::TextColored(kStale, "edited: regraded when the edit settles");
+    else ImGui::TextDisabled("graded in %.0f ms (render, compare, rules)", p.grade_ms);
+}
+
+// Every check with its points; a failed one in red with the reason `grade` writes.
+void check_rows(const PracticeStatus& p) {
+    for (const grading::Check& c : p.checks) {
+        ImGui::TextColored(c.ok ? kGood : kBad, "%s %g/%g", c.ok ? "ok  " : "FAIL", c.earned, c.points);
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", c.label.c_str());
+        if (!c.ok || ImGui::IsItemHovered()) {
+            ImGui::Indent();
+            ImGui::PushStyleColor(ImGuiCol_Text, c.ok ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled) : kBad);
+            ImGui::TextWrapped("%s", c.reason.c_str());
+            ImGui::PopStyleColor();
+            ImGui::Unindent();
+        }
+    }
+    // A reason that is no check's (the time budget) stands alone.
+    if (p.checks.empty())
+        for (const std::string& reason : p.reasons) ImGui::TextColored(kBad, "%s", reason.c_str());
+}
+
+}  // namespace
+
+void assignment_section(ExplorerState& state) {
+    const PracticeStatus& p = state.practice;
+    ImGui::TextWrapped("%s", p.title.c_str());
+    ImGui::TextDisabled("left: your scene; right: the reference (%s)", p.reference.c_str());
+    score_line(p);
+    check_rows(p);
+    hint("The score and reasons m3055 grade gives this scene (the same code). Save (Ctrl+S, File > Save As) "
+         "writes the scene you submit.");
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,66 @@
+// The .brdf parts of the UI: File > Open BRDF's dialog (a path field, as Save
+// As's) and the Material section's note on the selected object's file: which
+// file, that it is watched, and the last parse or GLSL error in red (the
+// file's own line), while the last good version keeps rendering.
+#include "explore_ui/panels.h"
+
+#include "brdf_file/brdf_model.h"
+#include "explore/brdf_files.h"
+#include "explore_ui/widgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace m3055::explore {
+
+namespace {
+const ImVec4 kRed(1, 0.43f, 0.43f, 1);
+}
+
+void open_brdf_dialog(ExplorerState& state) {
+    if (state.open_brdf_requested) {
+        state.open_brdf_requested = false;
+        state.brdf_error.clear();
+        ImGui::OpenPopup("Open BRDF");
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Open BRDF", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    ImGui::Text("A BRDF Explorer .brdf file for object %d (its sliders come from the file).", state.selected_object);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(420.0f);
+    const bool enter = ImGui::InputText("file", &state.brdf_path, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (!state.brdf_error.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+        ImGui::TextColored(kRed, "%s", state.brdf_error.c_str());
+        ImGui::PopTextWrapPos();
+    }
+    if (ImGui::Button("Open") || enter) {
+        if (open_brdf(state, state.brdf_path)) ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    const bool escape = !ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+    if (ImGui::Button("Cancel") || escape) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+}
+
+void brdf_material_note(const ExplorerState& state, const Material& material) {
+    const BrdfModel* model = find_brdf_model(material.model());
+    if (model) {
+        ImGui::PushTextWrapPos(0.0f);  // a long path wraps instead of running off the panel
+        ImGui::TextDisabled("file %s (watched: saving it reloads, values kept)", model->path.c_str());
+        ImGui::PopTextWrapPos();
+        tooltip("Edit the .brdf in any editor and save: it is re-read and recompiled within half a second.");
+    }
+    if (state.brdf_error.empty()) return;
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kRed, "%s", state.brdf_error.c_str());
+    ImGui::PopTextWrapPos();
+    // The error may be about a file another object (or an undone step) uses:
+    // say whose it is rather than seem to blame the selected material.
+    if (model && model->path == state.brdf_error_path) ImGui::TextDisabled("(showing the last version that compiled)");
+    else ImGui::TextDisabled("(not the selected object's material: %s)", state.brdf_error_path.c_str());
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,136 @@
+// The two fixed windows and the order of the side panel's sections.
+#include "explore_ui/panels.h"
+
+#include "explore_ui/profile_plot.h"
+#include "explore_ui/widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+namespace m3055::explore {
+
+namespace {
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+}
+
+// A section's header: open at first when `open_at_start`; a script's
+// `section NAME open|closed` opens or closes it as a click would.
+bool header(const ExplorerState& state, const char* label, bool open_at_start) {
+    const auto request = state.section_requests.find(label);
+    if (request != state.section_requests.end()) ImGui::SetNextItemOpen(request->second, ImGuiCond_Always);
+    else if (open_at_start) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    return ImGui::CollapsingHeader(label);
+}
+
+void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+                     float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("M3055 material explorer", nullptr, kFixed | ImGuiWindowFlags_MenuBar);
+    draw_menu_bar(state);
+    ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
+
+    if (!state.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
+        ImGui::TextWrapped("Error: %s", state.error.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) state.error.clear();
+        tooltip("Hides this message (it changes nothing in the scene).");
+        ImGui::Separator();
+    }
+
+    if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
+    if (header(state, "Display", true)) display_section(state, info);
+    if (header(state, "Material", true)) material_section(state);
+    if (header(state, "Lights", true)) lights_section(state);
+    if (header(state, "Objects and figure presets", false)) objects_section(state);
+    if (header(state, "Camera", false)) camera_section(state);
+    if (header(state, "A/B compare", false)) compare_section(state);
+    if (header(state, "File", true)) file_section(state);
+    state.section_requests.clear();
+
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
+// Per channel, how many pixels show each of the 2^bits levels, and how many levels are used.
+void level_histogram_view(const LevelHistogram& h, int bits) {
+    const int levels = 1 << bits;
+    ImGui::TextWrapped("levels used: R %d, G %d, B %d of %d", h.used[0], h.used[1], h.used[2], levels);
+    const ImVec4 colours[3] = {ImVec4(1, 0.35f, 0.35f, 1), ImVec4(0.35f, 0.9f, 0.35f, 1), ImVec4(0.4f, 0.55f, 1, 1)};
+    for (int c = 0; c < 3; ++c) {
+        // Square roots: the background's level would flatten every other bar.
+        std::vector<float> bars(h.counts[std::size_t(c)].size());
+        for (std::size_t i = 0; i < bars.size(); ++i) bars[i] = std::sqrt(float(h.counts[std::size_t(c)][i]));
+        ImGui::PushStyleColor(ImGuiCol_PlotHistogram, colours[c]);
+        ImGui::PushID(c);
+        ImGui::PlotHistogram("##levels", bars.data(), static_cast<int>(bars.size()), 0, nullptr, 0.0f, FLT_MAX,
+                             ImVec2(std::min(ImGui::GetContentRegionAvail().x, 320.0f), 16.0f));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("pixels per display level (0 ... %d), square-root scale", levels - 1);
+        ImGui::PopID();
+        ImGui::PopStyleColor();
+    }
+}
+
+// The strip's right column: timings, the display's scale, the A/B count, the
+// level histogram, the last message; scrolls on its own when the strip is low.
+void stats_column(const ExplorerState& state, const FrameInfo& info) {
+    const Display& d = state.scene.display;
+    // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
+    ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
+    ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
+    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, shown %d x", d.width, d.height, d.bits, info.scale);
+    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, shrunk", d.width, d.height, d.bits);
+    tooltip("The display's size and bits, and its magnification: whole pixels, nearest-neighbour; shrunk (not "
+            "whole pixels) when even 1:1 does not fit.");
+    if (!info.compare_count.empty()) {
+        ImGui::TextWrapped("A/B: %s", info.compare_count.c_str());
+        tooltip("Pixels of B whose display level differs from A's in any channel (the count `m3055 compare` "
+                "gives for the two PNGs).");
+    }
+    if (info.histogram) level_histogram_view(*info.histogram, d.bits);
+    // The last message (saved, screenshot, loaded: with the full path) where it is seen.
+    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+    if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
+        ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
+        ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
+        ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
+        ImGui::TreePop();
+    }
+}
+
+// Three columns sized from the room there is (1280 x 720 included): the polar
+// plot, the scanline profile, the statistics.
+void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+                       float width, float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("Plane of incidence", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const float gap = 16.0f, stats_w = std::clamp(room.x * 0.28f, 220.0f, 330.0f);
+    const float plots_w = std::max(200.0f, room.x - stats_w - 2.0f * gap);
+
+    ImGui::BeginGroup();  // at least the width of its header's three controls
+    plot_section(state, info.plane_curves, std::max(plots_w * 0.55f, 320.0f), room.y);
+    ImGui::EndGroup();
+
+    ImGui::SameLine(0.0f, gap);
+    ImGui::BeginGroup();  // what the polar plot left, less the statistics
+    const float profile_w = std::max(120.0f, ImGui::GetContentRegionAvail().x - stats_w - gap);
+    profile_plot(info.profile, info.profile_b, profile_w, room.y - 2.0f * ImGui::GetTextLineHeightWithSpacing());
+    ImGui::EndGroup();
+
+    ImGui::SameLine(0.0f, gap);
+    ImGui::BeginChild("stats", ImVec2(0.0f, room.y));
+    stats_column(state, info);
+    ImGui::EndChild();
+    ImGui::End();
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,143 @@
+// Lights section: presets, then one collapsible block per light.
+#include "explore_ui/panels.h"
+
+#include "explore_ui/light_widgets.h"
+#include "explore_ui/widgets.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <string>
+
+namespace m3055::explore {
+
+namespace {
+
+const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term)";
+
+// The scene format's light "name": what is typed is kept to what the format allows (state.h).
+bool name_field(Light& light) {
+    std::string name = light.name;
+    if (!ImGui::InputText("name", &name)) return false;
+    light.name = valid_light_name(name);
+    return true;
+}
+
+// Edits `light` (a copy of light `index`; `material` the selected object's, for the metals' own lobes).
+bool light_editor(Light& light, int index, const Material* material) {
+    bool changed = name_field(light);
+    tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
+            "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
+    changed |= ImGui::Checkbox("enabled", &light.enabled);
+    tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
+    ImGui::SameLine();
+    int type = static_cast<int>(light.type);
+    ImGui::SetNextItemWidth(120);
+    const bool type_changed = ImGui::Combo("type", &type, "directional\0point\0spot\0");
+    tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation)");
+    if (type_changed) {
+        light.type = static_cast<LightType>(type);
+        changed = true;
+    }
+    static double azimuth_memory[kMaxLights] = {};
+    if (light.type == LightType::directional) {
+        changed |= light_sphere_widget("##sphere", &light.direction, 38.0f);
+        ImGui::SameLine();
+        ImGui::BeginGroup();
+        ImGui::PushItemWidth(150);
+        changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        tooltip(kIntensityHelp);
+        ImGui::PopItemWidth();
+        ImGui::EndGroup();
+    } else {
+        double p[3] = {light.position.x, light.position.y, light.position.z};
+        if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+            light.position = {p[0], p[1], p[2]};
+            changed = true;
+        }
+        tooltip("where the light is, in scene units (docs/spec.md section 7)");
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        tooltip(kIntensityHelp);
+        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0);
+        tooltip("constant term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (the lecture's equation, spec section 4)");
+        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0);
+        tooltip("linear term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
+        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0);
+        tooltip("quadratic term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
+        if (light.type == LightType::spot) {
+            ImGui::TextUnformatted("spot direction:");
+            changed |= light_sphere_widget("##spot", &light.spot_direction, 30.0f);
+            changed |= slider_double("spot exponent", &light.spot_exponent, 0.0, 1000.0, "%.1f", true);
+            tooltip("the spot's falloff (cos of the angle to its axis)^exponent, in [0, 1000] (spec section 4; logarithmic)");
+        }
+    }
+    changed |= color_edit("colour c", &light.color);
+    tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
+
+    // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
+    if (material && material->model().light_lobes) {
+        const LobeKind kind = *material->model().light_lobes;
+        bool own = !light.lobes.empty() && light.lobe_kind == kind;
+        if (ImGui::Checkbox("own lobes (replace the material's for this light)", &own)) {
+            light.lobes = own ? material->lobes().to_vector() : std::vector<Lobe>{};
+            light.lobe_kind = kind;
+            changed = true;
+        }
+        tooltip("On: this light uses its own lobes instead of the material's (as in the paper's Fig. 11); "
+                "off: the material's.");
+        const LobeForm& form = material->model().param("lobes").form_for(*material);
+        if (own) changed |= lobe_editor("light_lobes", &light.lobes, form, 1);
+    }
+    return changed;
+}
+
+}  // namespace
+
+void lights_section(ExplorerState& state) {
+    ImGui::TextUnformatted("presets:");
+    int column = 0;
+    for (LightPreset preset : kAllLightPresets) {
+        if (column++ % 2) ImGui::SameLine();
+        if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
+            apply_light_preset(state, preset);
+        }
+        tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
+    }
+    auto& lights = state.scene.lights;
+    for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
+        ImGui::PushID(i);
+        const std::string title = "light " + std::to_string(i) +
+                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") + " (" +
+                                  to_string(lights[i].type) +
+                                  (lights[i].enabled ? "" : ", off") + ")###light";
+        ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
+        const bool open = ImGui::TreeNode(title.c_str());
+        if (ImGui::IsItemClicked()) state.selected_light = i;
+        ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
+        const bool removed = ImGui::SmallButton("remove");
+        tooltip("Removes this light (undoable).");
+        if (open) {
+            Light edited = lights[std::size_t(i)];
+            if (!removed && light_editor(edited, i, selected_material(state))) {
+                edit_light(state, i, edited);
+                state.selected_light = i;
+            }
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+        if (removed) {
+            remove_light(state, i);
+            break;
+        }
+    }
+    ImGui::BeginDisabled(static_cast<int>(lights.size()) >= kMaxExplorerLights);
+    if (ImGui::Button("+ add light")) add_light(state);
+    tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
+    if (!lights.empty()) light_plot(state);
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,74 @@
+// The explorer's ImGui windows. Each function draws one part of the UI and
+// edits the scene through explore/operations.h (a widget edits a copy, the
+// operation takes it and names the undo step) and explore/files.h.
+#pragma once
+
+#include "analysis/pixel_probe.h"
+#include "explore/files.h"
+#include "explore/operations.h"
+#include "explore/state.h"
+#include "explore/undo.h"
+
+#include <string>
+
+namespace m3055 {
+class BrdfViews;
+class PlaneCurves;
+}
+
+namespace m3055::explore {
+
+// What the panels show about the running program and the window.
+struct FrameInfo {
+    double frame_ms = 0.0;    // CPU time of the last UI frame (without waiting)
+    double render_ms = 0.0;   // the last scene render (GPU finished), both halves in compare
+    long frames = 0;          // UI frames drawn so far
+    long renders = 0;         // scene renders so far
+    std::string gl_renderer;  // GL_RENDERER of the window's context
+    std::string gl_version;   // GL_VERSION
+    std::string window_system;  // glfwGetVersionString()
+    int free_width = 0;       // pixels available for the display (for the "modern" preset)
+    int free_height = 0;
+    int scale = 1;            // whole-pixel magnification of the display
+    const LevelHistogram* histogram = nullptr;  // of A's display, this frame
+    const RowProfile* profile = nullptr;        // A's levels on the last hovered row (none yet: nullptr)
+    const RowProfile* profile_b = nullptr;      // B's on the same row in the A/B split (else nullptr)
+    std::string compare_count;                  // the A/B split's "N of M pixels on another level", or ""
+    PlaneCurves* plane_curves = nullptr;        // the polar plot's curves on the GPU (null: the CPU's)
+};
+
+// Left column: display, material, lights, objects and figures, camera, compare, file.
+void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+                     float height);
+// Bottom strip: the polar plot of the selected material and the frame statistics.
+void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+                       float width, float height);
+
+// The side panel's menu bar (File, Edit: undo/redo by name) and the modal
+// dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
+void draw_menu_bar(ExplorerState& state);
+void draw_dialogs(ExplorerState& state);
+// File > Open BRDF's dialog, and the Material section's note on a .brdf
+// material (its file, the last error in red): panel_brdf.cpp.
+void open_brdf_dialog(ExplorerState& state);
+void brdf_material_note(const ExplorerState& state, const Material& material);
+// The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
+void draw_brdf_views(ExplorerState& state, BrdfViews* views);
+
+// Sections of the side panel (one file each).
+void display_section(ExplorerState& state, const FrameInfo& info);
+void material_section(ExplorerState& state);
+void lights_section(ExplorerState& state);
+void objects_section(ExplorerState& state);
+void camera_section(ExplorerState& state);
+void compare_section(ExplorerState& state);
+void file_section(ExplorerState& state);
+// --assignment: the live score and reasons (panel_assignment.cpp).
+void assignment_section(ExplorerState& state);
+// The Lights panel's top-down light plot and key-to-fill ratio (a drag turns a light: edit_light).
+void light_plot(ExplorerState& state);
+// The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.
+// `curves`: the GPU's curves (.brdf models need them), else the CPU reference's.
+void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float height);
+
+}  // namespace m3055::explore

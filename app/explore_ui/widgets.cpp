@@ -1,0 +1,156 @@
+#include "explore_ui/widgets.h"
+
+#include "explore/slider_scale.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+
+namespace m3055::explore {
+
+namespace {
+
+// "w %.4f" -> {"w ", ""}: the text around the printf conversion of a format.
+std::pair<std::string, std::string> around_conversion(const std::string& format) {
+    const auto percent = format.find('%');
+    if (percent == std::string::npos) return {format, ""};
+    const auto conversion = format.find_first_of("fFeEgGd", percent);
+    if (conversion == std::string::npos) return {format.substr(0, percent), ""};
+    return {format.substr(0, percent), format.substr(conversion + 1)};
+}
+
+// ImGui shows a format without a conversion as plain text; a '%' in it must be doubled.
+std::string literal_format(const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '%' ? std::string("%%") : std::string(1, c);
+    return out;
+}
+
+// Ctrl+click on a logarithmic slider types the value itself (not the slider's
+// position): the item being typed into, if any.
+ImGuiID typing_id = 0;
+bool typing_focus = false;  // give the field the keyboard in its first frame
+
+// A slider over the position (slider_scale.h) that shows the value with three
+// significant digits; Ctrl+click types the value.
+bool log_slider(const char* label, double* value, double lo, double hi, const char* format) {
+    const ImGuiID id = ImGui::GetID(label);
+    if (typing_id == id) {
+        if (typing_focus) ImGui::SetKeyboardFocusHere();
+        typing_focus = false;
+        double typed = *value;
+        const std::string field = std::string(label) + "##typed";  // an ID of its own, the same label
+        const bool entered = ImGui::InputDouble(field.c_str(), &typed, 0.0, 0.0, "%.6g",
+                                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+        if (entered || ImGui::IsItemDeactivated()) typing_id = 0;
+        if (!entered) return false;
+        *value = std::clamp(typed, lo, hi);
+        return true;
+    }
+    const auto [before, after] = around_conversion(format);
+    const std::string shown = literal_format(before + significant_text(*value) + after);
+    float position = static_cast<float>(log_slider_position(*value, lo, hi));
+    const bool moved = ImGui::SliderFloat(label, &position, 0.0f, 1.0f, shown.c_str(),
+                                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    if (ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::GetIO().KeyCtrl) {
+        typing_id = id;  // and the click does not move the value
+        typing_focus = true;
+        return false;
+    }
+    if (!moved) return false;
+    *value = log_slider_value(position, lo, hi);
+    return true;
+}
+
+}  // namespace
+
+bool slider_double(const char* label, double* value, double lo, double hi, const char* format,
+                   bool logarithmic) {
+    if (logarithmic) return log_slider(label, value, lo, hi, format);
+    const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
+                                             ImGuiSliderFlags_AlwaysClamp);
+    *value = std::clamp(*value, lo, hi);
+    return changed;
+}
+
+// The double a person meant by float `f`: its shortest decimal form that reads
+// back as `f` (0.1f is 0.1, not 0.10000000149011612 in a saved scene).
+static double shortest_double(float f) {
+    char text[32];
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(f));
+        if (std::strtof(text, nullptr) == f) break;
+    }
+    return std::strtod(text, nullptr);
+}
+
+bool color_edit(const char* label, dvec3* color) {
+    float rgb[3] = {static_cast<float>(color->r), static_cast<float>(color->g),
+                    static_cast<float>(color->b)};
+    const float before[3] = {rgb[0], rgb[1], rgb[2]};
+    if (!ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_Float)) return false;
+    // ImGui edits floats: a channel left alone keeps its double exactly.
+    for (int i = 0; i < 3; ++i)
+        if (rgb[i] != before[i]) (*color)[i] = std::clamp(shortest_double(rgb[i]), 0.0, 1.0);
+    return true;
+}
+
+bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form, int min_lobes) {
+    bool changed = false;
+    const std::string value_format = form.key + (form.key == "n" ? " %.1f" : " %.3f");
+    ImGui::PushID(id);
+    for (int j = 0; j < static_cast<int>(lobes->size()); ++j) {
+        ImGui::PushID(j);
+        Lobe& lobe = (*lobes)[j];
+        // One row each for w and the value, full width: the weight's seven
+        // decades (slider_scale.h) get about 40 px each.
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 40.0f);
+        changed |= slider_double("##w", &lobe.w, form.weight.lo, form.weight.hi, "w %.4f", true);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("lobe weight w_%d, %s (logarithmic; Ctrl+click to type)", j + 1,
+                              form.weight.text().c_str());
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 40.0f);
+        changed |= slider_double("##value", &lobe.m, form.value.lo, form.value.hi, value_format.c_str(), true);
+        if (ImGui::IsItemHovered() && !form.value_help.empty())
+            ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
+        ImGui::SameLine();
+        const bool removed = static_cast<int>(lobes->size()) > min_lobes && ImGui::SmallButton("x");
+        if (static_cast<int>(lobes->size()) > min_lobes) tooltip("Removes this lobe.");
+        if (removed) {
+            lobes->erase(lobes->begin() + j);
+            changed = true;
+            ImGui::PopID();
+            break;
+        }
+        ImGui::PopID();
+    }
+    if (static_cast<int>(lobes->size()) < kMaxLobes && ImGui::SmallButton("+ lobe")) {
+        lobes->push_back(form.fallback.back());
+        changed = true;
+    }
+    if (static_cast<int>(lobes->size()) < kMaxLobes)
+        tooltip("Adds a lobe (at most " + std::to_string(kMaxLobes) + ", spec section 7).");
+    ImGui::PopID();
+    return changed;
+}
+
+void tooltip(const std::string& text) {
+    if (text.empty() || !ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+void hint(const char* text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", text);
+    ImGui::PopStyleColor();
+}
+
+}  // namespace m3055::explore

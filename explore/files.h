@@ -1,0 +1,40 @@
+// The explorer's files: starting from a scene, loading a scene file or a
+// figure preset (each one undo step), saving (the scene's own file, or Save
+// As), and screenshots (the next free name; the PNG and its scene JSON). Errors go to state.error (and a
+// failed load to state.load_error); the current scene stays.
+#pragma once
+
+#include "explore/state.h"
+#include "frame/renderer.h"
+
+#include <string>
+
+namespace m3055::explore {
+
+// Starts from `scene` (camera_home = its camera, selections reset, compare B =
+// a copy of the first object's material): the undo step "load NAME".
+void set_scene(ExplorerState& state, const Scene& scene, const std::string& name);
+
+// Loads a JSON scene file; on failure keeps the current scene and puts the
+// loader's one-line message into state.error. Returns success.
+bool load_scene(ExplorerState& state, const std::string& path);
+
+// The paper's figure presets (scenes/*.json embedded at build time), by file
+// stem: "fig05" ... "fig13", "spec_example" (step "figure preset NAME").
+// Unknown name -> error, false.
+bool load_figure(ExplorerState& state, const std::string& name);
+
+// Writes the scene JSON (atomically); it becomes the scene's own file. Errors go to state.error.
+bool save_scene(ExplorerState& state, const std::string& path);
+// Ctrl+S: to the scene's own file, or (none yet) asks for one (save_as_requested).
+void save_or_ask(ExplorerState& state);
+// F12: the next free DIR/NAME-0001.png (NAME: the scene file's stem, or "m3055"),
+// neither it nor its .json existing yet.
+std::string next_screenshot_path(const ExplorerState& state);
+// Writes the screenshot (state.screenshot_path once, else the next free
+// path) with `renderer`, which then shows the scene with its specialized
+// program: exactly the PNG `m3055 render` writes for the JSON written beside
+// it. The full paths go to state.status, an error to state.error.
+void take_screenshot(ExplorerState& state, Renderer& renderer);
+
+}  // namespace m3055::explore

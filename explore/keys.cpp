@@ -1,0 +1,84 @@
+#include "explore/keys.h"
+
+#include "explore/files.h"
+#include "explore/operations.h"
+#include "explore/undo.h"
+
+#include <cctype>
+
+namespace m3055::explore {
+
+namespace {
+
+// Number keys pick the figure presets in the paper's order; 0 is the spec example.
+const char* const kFigureKeys[10] = {"spec_example", "fig05", "fig06", "fig07", "fig08",
+                                     "fig09",        "fig10", "fig11", "fig12", "fig13"};
+
+bool control_shortcut(ExplorerState& state, const KeyPress& press) {
+    switch (press.key) {
+        case Key::z: return press.shift ? redo(state) : undo(state);
+        case Key::y: return redo(state);
+        case Key::s: return save_or_ask(state), true;
+        case Key::digit: return load_figure(state, kFigureKeys[press.digit]);
+        default: return false;
+    }
+}
+
+}  // namespace
+
+const char* figure_for_digit(int digit) { return digit >= 0 && digit <= 9 ? kFigureKeys[digit] : ""; }
+
+bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus& focus) {
+    if (focus.text_input) return false;  // the field's own editing (and its own Ctrl+Z)
+    if (press.key == Key::digit && (press.digit < 0 || press.digit > 9)) return false;
+    if (press.ctrl) return control_shortcut(state, press);
+    if (focus.wants_keyboard || focus.item_active) return false;
+    switch (press.key) {
+        case Key::digit: {
+            const std::string digit = std::to_string(press.digit);
+            if (unsaved(state)) {
+                state.status = "key " + digit + " ignored: the scene has unsaved edits (Ctrl+" + digit +
+                               " replaces it, undoably)";
+                return false;
+            }
+            return load_figure(state, kFigureKeys[press.digit]);
+        }
+        case Key::escape: state.quit_requested = true; return true;
+        case Key::r: reset_camera(state); return true;
+        case Key::f1: state.show_panels = !state.show_panels; return true;
+        case Key::f12: state.screenshot_requested = true; return true;
+        default: return false;
+    }
+}
+
+std::optional<KeyPress> parse_key_name(const std::string& name) {
+    std::string lower;
+    for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    KeyPress press;
+    if (lower.rfind("ctrl+", 0) == 0) {
+        press.ctrl = true;
+        lower = lower.substr(5);
+    }
+    if (lower.rfind("shift+", 0) == 0) {
+        press.shift = true;
+        lower = lower.substr(6);
+    }
+    if (lower == "escape" || lower == "esc") press.key = Key::escape;
+    else if (lower == "f1") press.key = Key::f1;
+    else if (lower == "f12") press.key = Key::f12;
+    else if (lower == "r") press.key = Key::r;
+    else if (lower == "s") press.key = Key::s;
+    else if (lower == "y") press.key = Key::y;
+    else if (lower == "z") press.key = Key::z;
+    else if (lower.size() == 1 && std::isdigit(static_cast<unsigned char>(lower[0]))) {
+        press.key = Key::digit;
+        press.digit = lower[0] - '0';
+    } else if (lower.size() == 1 && lower[0] >= 'a' && lower[0] <= 'z') {
+        press.key = Key::other;  // a letter with no shortcut: does nothing, as in the window
+    } else {
+        return std::nullopt;
+    }
+    return press;
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,68 @@
+// The window's layout and the panes' whole-pixel magnification: arithmetic only.
+#include "explore/layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace m3055::explore {
+
+namespace {
+constexpr float kSideWidth = 440.0f;
+constexpr float kBottomHeight = 270.0f;
+}  // namespace
+
+int whole_pixel_scale(int w, int h, float area_w, float area_h) {
+    return static_cast<int>(std::min(std::floor(area_w / w), std::floor(area_h / h)));
+}
+
+Layout layout_for(float width, float height, bool panels) {
+    Layout l;
+    if (!panels) {
+        l.display = {0, 0, width, height};
+        return l;
+    }
+    l.side = {0, 0, std::min(kSideWidth, width), height};
+    const float right = std::max(0.0f, width - l.side.w);
+    l.bottom = {l.side.w, std::max(0.0f, height - kBottomHeight), right, std::min(kBottomHeight, height)};
+    l.display = {l.side.w, 0, right, l.bottom.y};
+    return l;
+}
+
+// Labels sit above their row. Exceptions that keep a whole magnification
+// where it matters: one row keeps its labels in the margin above, and a
+// second row of one pane (A, B and |A - B|) has its label in the free cell to
+// its right, so only the first row's labels need room.
+Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale, float label_h) {
+    Grid g;
+    g.columns = columns;
+    g.rows = (n + columns - 1) / columns;
+    g.label_right = g.rows == 2 && n == columns + 1;
+    const int label_rows = g.rows == 1 ? 0 : g.label_right ? 1 : g.rows;
+    g.row_label_h = g.rows > 1 && !g.label_right ? label_h : 0.0f;
+    const float room_h = area.h - label_h * float(label_rows) - kCompareGap * float(g.rows - 1);
+    const float area_w = (area.w - kCompareGap * float(columns - 1)) * fb_scale / float(columns);
+    const float area_h = room_h * fb_scale / float(g.rows);
+    g.scale = whole_pixel_scale(w, h, area_w, area_h);
+    // Too big even at 1:1: shrink to fit (no longer whole pixels; the panel says so).
+    g.shown = g.scale >= 1 ? float(g.scale) : std::min(area_w / float(w), area_h / float(h));
+    return g;
+}
+
+Grid best_grid(int n, int w, int h, const Rect& area, float fb_scale, float label_h) {
+    Grid g = fit_grid(n, n, w, h, area, fb_scale, label_h);
+    if (n >= 3) {  // two columns (e.g. A and B, |A - B| under A) when that magnifies more
+        const Grid two_rows = fit_grid(n, 2, w, h, area, fb_scale, label_h);
+        if (two_rows.shown > g.shown) g = two_rows;
+    }
+    return g;
+}
+
+std::optional<std::pair<int, int>> pixel_at(const Display& display, const Rect& shown, float mx, float my) {
+    if (shown.w <= 0 || shown.h <= 0) return std::nullopt;
+    const int x = static_cast<int>(std::floor((mx - shown.x) / shown.w * display.width));
+    const int y = static_cast<int>(std::floor((my - shown.y) / shown.h * display.height));
+    if (x < 0 || y < 0 || x >= display.width || y >= display.height) return std::nullopt;
+    return std::make_pair(x, y);
+}
+
+}  // namespace m3055::explore

@@ -1,0 +1,51 @@
+// Where things go in the explorer's window, as arithmetic: the side panel,
+// the bottom strip and the display's area, the whole-pixel magnification the
+// display panes fit at, and the display pixel under a window point. No ImGui
+// here (explore_ui/display_view.h draws what this decides), so it is tested
+// without a window.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <optional>
+#include <utility>
+
+namespace m3055::explore {
+
+struct Rect {
+    float x = 0, y = 0, w = 0, h = 0;
+};
+
+// The side panel, the bottom strip and the display's area (ImGui units).
+struct Layout {
+    Rect side, bottom, display;
+};
+
+inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
+
+Layout layout_for(float width, float height, bool panels);
+
+// The largest whole-pixel magnification of a w x h image that fits
+// area_w x area_h (framebuffer pixels); 0 when even 1:1 does not fit.
+int whole_pixel_scale(int w, int h, float area_w, float area_h);
+
+// Panes in `columns` columns (rows as needed) and the magnification they fit at.
+struct Grid {
+    int columns = 1, rows = 1;
+    int scale = 0;      // whole pixels; 0: shrunk
+    float shown = 0.0f;  // framebuffer pixels per dot
+    bool label_right = false;  // the second row's one label in the free cell to its right
+    float row_label_h = 0.0f;  // room above each row after the first for its labels
+};
+
+// n panes of w x h dots in `columns` columns within `area` (ImGui units,
+// `fb_scale` framebuffer pixels each), with label_h of room for a row of labels.
+Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale, float label_h);
+// One row, or (three panes or more) two columns when that magnifies more.
+Grid best_grid(int n, int w, int h, const Rect& area, float fb_scale, float label_h);
+
+// The display pixel (x, y; y = 0 the top row) under window point (mx, my)
+// when the display is drawn at `shown` (ImGui units); none outside it.
+std::optional<std::pair<int, int>> pixel_at(const Display& display, const Rect& shown, float mx, float my);
+
+}  // namespace m3055::explore

@@ -1,0 +1,62 @@
+// The camera's moves (operations.h): the orbit and zoom of a drag and the
+// wheel on the display, and R's reset.
+#include "explore/operations.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace m3055::explore {
+
+namespace {
+// Rodrigues' rotation of v by `angle` radians about the unit axis k.
+dvec3 rotate(const dvec3& v, double angle, const dvec3& k) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+}
+
+// Radians of orbit per pixel dragged: a 300-pixel drag turns about 90 degrees.
+constexpr double kOrbitPerPixel = 0.3 * 3.14159265358979323846 / 180.0;
+// Keep the view direction at least this far (radians) from `up` (docs/spec.md#7-scene-files).
+constexpr double kPoleMargin = 0.02;
+// One wheel step moves 10 % closer.
+constexpr double kZoomPerStep = 0.9;
+}  // namespace
+
+void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels) {
+    Camera& c = state.scene.camera;
+    const dvec3 up = glm::normalize(c.up);
+    dvec3 offset = c.position - c.target;
+    // Dragging right turns the camera left around the object (the object seems to turn right).
+    offset = rotate(offset, -dx_pixels * kOrbitPerPixel, up);
+    // Dragging down raises the camera, clamped short of the poles.
+    const double radius = glm::length(offset);
+    const double polar = std::acos(std::clamp(glm::dot(offset / radius, up), -1.0, 1.0));
+    const double wanted = std::clamp(polar - dy_pixels * kOrbitPerPixel, kPoleMargin,
+                                     3.14159265358979323846 - kPoleMargin);
+    const dvec3 right = glm::normalize(glm::cross(offset, up));
+    offset = rotate(offset, polar - wanted, right);
+    c.position = c.target + offset;
+    note_edit(state, "orbit camera");
+}
+
+void zoom_camera(ExplorerState& state, double wheel_steps) {
+    Camera& c = state.scene.camera;
+    const double factor = std::pow(kZoomPerStep, wheel_steps);
+    if (c.projection == Projection::orthographic) {
+        c.height = std::clamp(c.height * factor, 1e-3, 1e4);
+    } else {
+        const dvec3 offset = c.position - c.target;
+        const double distance = std::clamp(glm::length(offset) * factor, 1e-2, 1e4);
+        c.position = c.target + glm::normalize(offset) * distance;
+    }
+    note_edit(state, "zoom camera");
+}
+
+void reset_camera(ExplorerState& state) {
+    state.scene.camera = state.camera_home;
+    note_edit(state, "reset camera");
+}
+
+}  // namespace m3055::explore

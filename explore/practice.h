@@ -1,0 +1,79 @@
+// `m3055 explore --assignment ASSIGNMENT.json`: the assignment, its reference
+// (as levels, for grading, and as the image shown beside the student's
+// display), and the live grade of the scene being edited, recomputed once an
+// edit has settled. The grade is grading::grade_one, the function `m3055
+// grade` runs for every student, on the explorer's own renderer: the same
+// code, not a copy. No GL calls here: explore_ui shows the reference.
+#pragma once
+
+#include "explore/practice_status.h"
+#include "explore/state.h"
+#include "grading/assignment.h"
+#include "grading/grade.h"
+#include "grading/level_compare.h"
+#include "frame/renderer.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace m3055::explore {
+
+class Practice {
+public:
+    // Loads the reference (a scene reference is rendered once with `renderer`,
+    // which the caller then re-renders its own scene on; an image reference
+    // needs none: nullptr). Throws with the loader's one-line message.
+    // `allow_brdf`: grade .brdf materials as `m3055 grade --allow-brdf` does
+    // (without it a scene with one scores 0 with grade's reason).
+    Practice(grading::Assignment assignment, Renderer* renderer, bool allow_brdf);
+
+    const grading::Assignment& assignment() const { return assignment_; }
+
+    // The scene changed at time `now` (seconds, any clock): the grade is stale.
+    void scene_changed(PracticeStatus& status, double now);
+    // Seconds until a stale grade may be recomputed (the edit has settled): 0
+    // when it may be now, negative when there is nothing to recompute.
+    double settle_left(const PracticeStatus& status, double now) const;
+
+    // grade_one of `scene` with `renderer` (its display is left showing
+    // `scene`), under the assignment's time budget as `grade` has it; the
+    // result and its time into `status`.
+    void regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const;
+    // The grade of a scene `grade` refuses before rendering it (a .brdf
+    // material without allow_brdf: 0 with grade's reason); none otherwise.
+    std::optional<grading::Grade> refusal(const Scene& scene) const;
+
+    // The reference as shown beside the student's display (the PNG, the
+    // render, a PFM's display; rows top to bottom), and its label.
+    const Rgb8Image& reference_image() const { return shown_; }
+    std::string reference_label() const;
+
+    // The status shown before the first grade.
+    PracticeStatus start_status() const;
+
+private:
+    grading::Assignment assignment_;
+    grading::LevelImage reference_;
+    Rgb8Image shown_;           // the reference as shown (the PNG, the render, a PFM's display)
+    double changed_at_ = 0;
+    bool allow_brdf_ = false;
+};
+
+// Seconds without a further change before the grade is recomputed: a slider
+// drag or typing regrades once at its end, not on every step.
+inline constexpr double kSettleSeconds = 0.3;
+
+// The status line `print_grade` prints: "grade score=S max=M passed=yes|no<TAB>reason<TAB>...".
+std::string grade_line(const PracticeStatus& status);
+
+
+// --assignment PATH: loads the assignment (throws its one-line error). With
+// no scene given, the student starts from a copy of the assignment's "start"
+// scene, or the spec example when it names none: never the reference, which
+// would score full marks untouched. The copy has no file of its own, so the
+// first Ctrl+S asks where to save the submission (proposing submission.json).
+grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given);
+
+}  // namespace m3055::explore

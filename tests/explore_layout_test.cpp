@@ -1,0 +1,54 @@
+// The explorer window's layout arithmetic (explore/layout.h), without a
+// window: the display's area, whole-pixel magnifications and the display
+// pixel under the mouse.
+#include "explore/layout.h"
+
+#include <gtest/gtest.h>
+
+namespace m3055::explore {
+namespace {
+
+TEST(ExploreLayout, At1280x720TheM3055DisplayShowsWholeAt1To1BesideThePanels) {
+    const Layout l = layout_for(1280, 720, true);
+    EXPECT_EQ(l.side.w, 440);
+    EXPECT_EQ(l.display.x, 440);
+    EXPECT_GE(whole_pixel_scale(512, 320, l.display.w, l.display.h), 1);
+    const Layout bare = layout_for(1280, 720, false);  // F1
+    EXPECT_EQ(bare.display.w, 1280);
+    EXPECT_EQ(bare.display.h, 720);
+    EXPECT_EQ(whole_pixel_scale(512, 320, 1280, 720), 2);
+}
+
+TEST(ExploreLayout, WholePixelScaleIsZeroWhenEven1To1DoesNotFit) {
+    EXPECT_EQ(whole_pixel_scale(512, 320, 511, 1000), 0);
+    EXPECT_EQ(whole_pixel_scale(512, 320, 1536, 960), 3);
+    EXPECT_EQ(whole_pixel_scale(512, 320, 1535, 960), 2);
+}
+
+TEST(ExploreLayout, ThreePanesTakeTwoColumnsWhenThatMagnifiesMore) {
+    const Rect wide{0, 0, 3 * 512 + 2 * kCompareGap, 400};  // one row fits 1:1, two rows do not
+    EXPECT_EQ(best_grid(3, 512, 320, wide, 1.0f, 20.0f).columns, 3);
+    const Rect tall{0, 0, 2100, 1400};  // one row fits 1x, two columns of two rows fit 2x
+    EXPECT_EQ(fit_grid(3, 3, 512, 320, tall, 1.0f, 20.0f).scale, 1);
+    const Grid g = best_grid(3, 512, 320, tall, 1.0f, 20.0f);
+    EXPECT_EQ(g.columns, 2);
+    EXPECT_EQ(g.scale, 2);
+    EXPECT_TRUE(g.label_right) << "the second row's one pane has its label beside it";
+}
+
+TEST(ExploreLayout, PixelUnderTheMouseFollowsTheShownMagnification) {
+    Display d;
+    d.width = 512;
+    d.height = 320;
+    const Rect shown{100, 50, 1024, 640};  // 2x
+    EXPECT_EQ(pixel_at(d, shown, 100, 50), std::make_pair(0, 0));
+    EXPECT_EQ(pixel_at(d, shown, 101.9f, 51.9f), std::make_pair(0, 0));
+    EXPECT_EQ(pixel_at(d, shown, 102, 52), std::make_pair(1, 1));
+    EXPECT_EQ(pixel_at(d, shown, 1123.9f, 689.9f), std::make_pair(511, 319));
+    EXPECT_FALSE(pixel_at(d, shown, 1124, 100));
+    EXPECT_FALSE(pixel_at(d, shown, 99.9f, 100));
+    EXPECT_FALSE(pixel_at(d, Rect{}, 0, 0)) << "nothing drawn yet";
+}
+
+}  // namespace
+}  // namespace m3055::explore
