@@ -5,8 +5,11 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 #include "gl/program.h"
 #include "image/image.h"
+#include "passes/material_texture.h"
+#include "passes/render_targets.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -16,9 +19,6 @@ namespace m3055 {
 class FrameTargets {
 public:
     FrameTargets(const GlApi& gl, ProgramCache& programs);
-    ~FrameTargets();
-    FrameTargets(const FrameTargets&) = delete;
-    FrameTargets& operator=(const FrameTargets&) = delete;
 
     // Starts a frame of `scene`: targets at the display's size (kept while the
     // size stays), the objects' material records uploaded (u_materials, unit 0),
@@ -34,26 +34,23 @@ public:
     void quantize(const Display& display);
 
     // The quantized display as an RGBA8 GL texture (GL_NEAREST; row 0 at the bottom).
-    unsigned display_texture() const { return display_texture_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
+    unsigned display_texture() const { return display_texture_.id(); }
+    int width() const { return scene_.width(); }
+    int height() const { return scene_.height(); }
 
     Rgb8Image read_display() const;  // 8-bit PNG values, rows top to bottom
     RgbFloatImage read_raw() const;  // unquantized linear colour, rows bottom to top
 
 private:
     void ensure_size(int width, int height);
-    void release();
-    void upload_materials(const std::vector<Object>& objects);
-    unsigned make_texture(int internal_format, unsigned format, unsigned type) const;
-    void check_framebuffer(const char* name) const;
 
     const GlApi& gl_;
     ProgramCache& programs_;
-    unsigned scene_fbo_ = 0, colour_texture_ = 0, depth_texture_ = 0;
-    unsigned display_fbo_ = 0, display_texture_ = 0;
-    unsigned material_buffer_ = 0, material_texture_ = 0, empty_vao_ = 0;
-    int width_ = 0, height_ = 0;
+    FloatTargets scene_;  // the float colour the passes draw into, with depth
+    GlTexture display_texture_;
+    GlFramebuffer display_fbo_;
+    MaterialTexture materials_;
+    GlVertexArray empty_vao_;  // the quantize pass's fullscreen triangle has no attributes
 };
 
 }  // namespace m3055
