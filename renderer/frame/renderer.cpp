@@ -1,6 +1,7 @@
 #include "frame/renderer.h"
 
 #include "geometry/mesh.h"
+#include "gl/gl_object.h"
 #include "gl/program.h"
 #include "models/model_spec.h"
 #include "passes/camera_frame.h"
@@ -76,21 +77,23 @@ Scene general_warm_up_scene() {
 
 struct Renderer::Impl {
     const GlApi& gl;
-    ProgramCache programs;
+    std::unique_ptr<ProgramCache> own_programs;  // when no cache is shared
+    ProgramCache& programs;
     FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
-    unsigned instance_buffer = 0, sphere_vao = 0;
+    GlBuffer instance_buffer;
+    GlVertexArray sphere_vao;
     ShaderMode shader_mode = ShaderMode::specialized;
     bool defer_compiles = false;         // set_defer_compiles
     std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
     std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
-    explicit Impl(const GlApi& api) : gl(api), programs(api), targets(api, programs), meshes(api) {
-        gl.GenVertexArrays(1, &sphere_vao);
-        gl.GenBuffers(1, &instance_buffer);
-        gl.BindVertexArray(sphere_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+    Impl(const GlApi& api, std::unique_ptr<ProgramCache> own, ProgramCache* shared)
+        : gl(api), own_programs(std::move(own)), programs(shared ? *shared : *own_programs), targets(api, programs),
+          meshes(api), instance_buffer(api), sphere_vao(api) {
+        gl.BindVertexArray(sphere_vao.id());
+        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         for (unsigned attribute = 0; attribute < 3; ++attribute) {
             gl.EnableVertexAttribArray(attribute);
             gl.VertexAttribDivisor(attribute, 1);
@@ -127,11 +130,6 @@ struct Renderer::Impl {
                     [&](std::size_t first, std::size_t count) { meshes.draw(first, count); });
     }
 
-    ~Impl() {
-        gl.DeleteVertexArrays(1, &sphere_vao);
-        gl.DeleteBuffers(1, &instance_buffer);
-    }
-
     // The program for `key`; with deferral, a specialized one not built yet is
     // noted and the general program of the same pass stands in (same pixels).
     unsigned program(const ProgramKey& key, bool translucent_pass) {
@@ -154,8 +152,8 @@ struct Renderer::Impl {
                       const CameraFrame& frame, const LightUniforms& lights) {
         if (instances.empty()) return;
         use_program(program, frame, lights);
-        gl.BindVertexArray(sphere_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+        gl.BindVertexArray(sphere_vao.id());
+        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
                       GL_STREAM_DRAW);
         // Instances are drawn, and blended, in buffer order: back to front.
@@ -288,7 +286,9 @@ struct Renderer::Impl {
     }
 };
 
-Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl)) {}
+Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
+    : impl_(std::make_unique<Impl>(gl, nullptr, &programs)) {}
+Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl, std::make_unique<ProgramCache>(gl), nullptr)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
 void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
