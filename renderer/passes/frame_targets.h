@@ -1,7 +1,8 @@
 // The plumbing of one frame, in one place for everything that renders a scene
-// (the Renderer, and the benchmark's UV-sphere renderer): the float scene
-// target with its depth buffer, the display target, the material records, the
-// clear to the background, the quantize pass (docs/spec.md#2-display) and the read-backs.
+// (through frame/frame_sequence.h: the Renderer, and the benchmark's UV-sphere
+// renderer): the float scene target with its depth buffer (render_targets.h),
+// the display target, the material records (material_texture.h), the clear to
+// the background, the quantize pass (docs/spec.md#2-display) and the read-backs.
 #pragma once
 
 #include "gl/gl_api.h"
@@ -26,7 +27,7 @@ public:
     // test LESS, depth writes on and blending off.
     void begin(const Scene& scene);
 
-    // Sets a program's material uniforms (the record stride); call after UseProgram.
+    // Sets a program's material uniforms (the sampler's unit, the record stride); call after UseProgram.
     void set_material_uniforms(unsigned program) const;
 
     // The quantize pass (docs/spec.md#2-display: display bits, optional dither) from the scene
