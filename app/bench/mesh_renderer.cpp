@@ -2,10 +2,8 @@
 
 #include "models/model_spec.h"
 
+#include "frame/frame_sequence.h"
 #include "uv_sphere.h"
-#include "passes/camera_frame.h"
-#include "passes/camera_uniforms.h"
-#include "passes/light_uniforms.h"
 
 #include <stdexcept>
 
@@ -34,18 +32,14 @@ void MeshRenderer::render(const Scene& scene, Interpolation interpolation, Shade
             throw std::runtime_error("mesh renderer: translucent objects are not supported");
         objects.push_back(&object);
     }
-    const CameraFrame frame = make_camera_frame(scene.camera, scene.display, scene.objects);
-    const LightUniforms lights = pack_lights(scene.lights, scene.ambient);
     std::vector<std::string> defines = specialization_defines(mode, objects, scene.lights);
     if (interpolation == Interpolation::gouraud) defines.push_back("GOURAUD");
     const unsigned program = programs_.get({"passes/mesh_sphere.vert", "passes/mesh_sphere.frag", defines});
 
-    targets_.begin(scene);  // the Renderer's clear, depth state and materials
+    FrameSequence sequence(gl_, targets_, scene);  // the Renderer's own steps around the draws
+    sequence.begin();
     gl_.Enable(GL_CULL_FACE);  // default: back faces of counter-clockwise triangles
-    gl_.UseProgram(program);
-    targets_.set_material_uniforms(program);
-    set_camera_uniforms(gl_, program, frame);
-    upload_lights(gl_, program, lights);
+    sequence.use_program(program);
     auto loc = [&](const char* name) { return gl_.GetUniformLocation(program, name); };
     gl_.BindVertexArray(sphere_.vao());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -57,8 +51,7 @@ void MeshRenderer::render(const Scene& scene, Interpolation interpolation, Shade
     }
     gl_.BindVertexArray(0);
     gl_.Disable(GL_CULL_FACE);
-    // The same quantize pass as the Renderer, so the frame does the same work.
-    targets_.quantize(scene.display);
+    sequence.finish();  // the same quantize pass as the Renderer, so the frame does the same work
 }
 
 }  // namespace m3055::bench

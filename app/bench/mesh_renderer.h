@@ -1,6 +1,7 @@
 // Benchmark only: draws a scene's spheres as UV meshes (glsl/passes/mesh_sphere.*)
-// through the same shading code, lights, materials, camera and quantize pass as
-// the Renderer, so the only differences are geometry and interpolation.
+// through the same shading code and the Renderer's own frame sequence
+// (frame/frame_sequence.h: lights, materials, camera, clear and quantize pass),
+// so the only differences are geometry and interpolation.
 // Opaque models only (the benchmark's tessellation scenes have no translucency).
 #pragma once
 
@@ -31,7 +32,7 @@ public:
 private:
     const GlApi& gl_;
     ProgramCache programs_;
-    FrameTargets targets_;  // the Renderer's own targets, materials, clear and quantize pass
+    FrameTargets targets_;  // the Renderer's kind of targets, for its frame sequence
     IndexedVertexArray sphere_;  // the UV sphere every object is drawn with
     int index_count_ = 0;
 };

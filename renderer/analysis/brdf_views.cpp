@@ -76,6 +76,7 @@ Lobe3d lobe_3d(BrdfGrid& grid, const Material& material, double theta_in_deg) {
     return lobe;
 }
 
+BrdfViews::BrdfViews(const GlApi& gl, ProgramCache& programs) : grid_(std::make_unique<BrdfGrid>(gl, programs)) {}
 BrdfViews::BrdfViews(const GlApi& gl) : grid_(std::make_unique<BrdfGrid>(gl)) {}
 BrdfViews::~BrdfViews() = default;
 

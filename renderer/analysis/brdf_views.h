@@ -50,7 +50,9 @@ Lobe3d lobe_3d(BrdfGrid& grid, const Material& material, double theta_in_deg);
 // the incidence) changes and kept otherwise. The GL context must be current.
 class BrdfViews {
 public:
-    explicit BrdfViews(const GlApi& gl);
+    // The grid's programs from `programs`, the context's shared cache.
+    BrdfViews(const GlApi& gl, ProgramCache& programs);
+    explicit BrdfViews(const GlApi& gl);  // with a program cache of its own
     ~BrdfViews();
     const ThetaSlice& slice(const Material& material);
     const AlbedoCurve& albedo(const Material& material);

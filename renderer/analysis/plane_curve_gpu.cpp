@@ -44,6 +44,8 @@ PlaneCurve brdf_plane_curve(BrdfGrid& grid, const Material& material, const Ligh
     return curve;
 }
 
+PlaneCurves::PlaneCurves(const GlApi& gl, ProgramCache& programs)
+    : grid_(std::make_unique<BrdfGrid>(gl, programs)) {}
 PlaneCurves::PlaneCurves(const GlApi& gl) : grid_(std::make_unique<BrdfGrid>(gl)) {}
 PlaneCurves::~PlaneCurves() = default;
 

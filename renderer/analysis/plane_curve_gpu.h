@@ -6,6 +6,7 @@
 
 #include "analysis/plane_curve.h"
 #include "gl/gl_api.h"
+#include "gl/program.h"
 
 #include <memory>
 
@@ -24,7 +25,9 @@ PlaneCurve brdf_plane_curve(BrdfGrid& grid, const Material& material, const Ligh
 // the light nor the angle evaluates nothing. Needs the GL context current.
 class PlaneCurves {
 public:
-    explicit PlaneCurves(const GlApi& gl);
+    // The grid's programs from `programs`, the context's shared cache.
+    PlaneCurves(const GlApi& gl, ProgramCache& programs);
+    explicit PlaneCurves(const GlApi& gl);  // with a program cache of its own
     ~PlaneCurves();
     PlaneCurve curve(const Material& material, const Light& light, double incidence_deg, const dvec3& background);
     // model_max() of plane_curve.h for any model (the plot's "model max" scale).

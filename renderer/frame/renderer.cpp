@@ -1,12 +1,12 @@
 #include "frame/renderer.h"
 
+#include "frame/frame_sequence.h"
 #include "geometry/mesh.h"
+#include "gl/gl_object.h"
 #include "gl/program.h"
 #include "models/model_spec.h"
 #include "passes/camera_frame.h"
-#include "passes/camera_uniforms.h"
 #include "passes/frame_targets.h"
-#include "passes/light_uniforms.h"
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
@@ -76,21 +76,23 @@ Scene general_warm_up_scene() {
 
 struct Renderer::Impl {
     const GlApi& gl;
-    ProgramCache programs;
+    std::unique_ptr<ProgramCache> own_programs;  // when no cache is shared
+    ProgramCache& programs;
     FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
-    unsigned instance_buffer = 0, sphere_vao = 0;
+    GlBuffer instance_buffer;
+    GlVertexArray sphere_vao;
     ShaderMode shader_mode = ShaderMode::specialized;
     bool defer_compiles = false;         // set_defer_compiles
     std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
     std::optional<ChunkedDraws> chunks;  // this render's (passes/draw_chunks.h)
 
-    explicit Impl(const GlApi& api) : gl(api), programs(api), targets(api, programs), meshes(api) {
-        gl.GenVertexArrays(1, &sphere_vao);
-        gl.GenBuffers(1, &instance_buffer);
-        gl.BindVertexArray(sphere_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+    Impl(const GlApi& api, std::unique_ptr<ProgramCache> own, ProgramCache* shared)
+        : gl(api), own_programs(std::move(own)), programs(shared ? *shared : *own_programs), targets(api, programs),
+          meshes(api), instance_buffer(api), sphere_vao(api) {
+        gl.BindVertexArray(sphere_vao.id());
+        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         for (unsigned attribute = 0; attribute < 3; ++attribute) {
             gl.EnableVertexAttribArray(attribute);
             gl.VertexAttribDivisor(attribute, 1);
@@ -127,11 +129,6 @@ struct Renderer::Impl {
                     [&](std::size_t first, std::size_t count) { meshes.draw(first, count); });
     }
 
-    ~Impl() {
-        gl.DeleteVertexArrays(1, &sphere_vao);
-        gl.DeleteBuffers(1, &instance_buffer);
-    }
-
     // The program for `key`; with deferral, a specialized one not built yet is
     // noted and the general program of the same pass stands in (same pixels).
     unsigned program(const ProgramKey& key, bool translucent_pass) {
@@ -143,26 +140,18 @@ struct Renderer::Impl {
         return programs.get({key.vertex, key.fragment, general});
     }
 
-    void use_program(unsigned program, const CameraFrame& frame, const LightUniforms& lights) {
-        gl.UseProgram(program);
-        targets.set_material_uniforms(program);
-        set_camera_uniforms(gl, program, frame);
-        upload_lights(gl, program, lights);
-    }
-
-    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances,
-                      const CameraFrame& frame, const LightUniforms& lights) {
+    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances, const FrameSequence& sequence) {
         if (instances.empty()) return;
-        use_program(program, frame, lights);
-        gl.BindVertexArray(sphere_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer);
+        sequence.use_program(program);
+        gl.BindVertexArray(sphere_vao.id());
+        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
                       GL_STREAM_DRAW);
         // Instances are drawn, and blended, in buffer order: back to front.
         if (!deadline) return gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
         std::vector<DrawSpan> spans;
         for (std::size_t i = 0; i < instances.size(); ++i)
-            spans.push_back(chunks->span_of(i, 1, 1, instances[i].rect, std::size_t(lights.count)));
+            spans.push_back(chunks->span_of(i, 1, 1, instances[i].rect, std::size_t(sequence.lights().count)));
         struct Rewind {  // the next draw starts at instance 0 again, even after a RenderTimeout
             Impl& impl;
             ~Rewind() { impl.point_instances(0); }
@@ -205,17 +194,16 @@ struct Renderer::Impl {
     }
 
     // Pass 1: opaque spheres and meshes, with depth.
-    void draw_opaque(const Scene& scene, const SphereSets& spheres, const CameraFrame& frame,
-                     const LightUniforms& lights) {
+    void draw_opaque(const Scene& scene, const SphereSets& spheres, const FrameSequence& sequence) {
         if (!spheres.opaque.empty()) {
             const auto defines = specialization_defines(shader_mode, spheres.opaque_objects, scene.lights);
-            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), spheres.opaque, frame,
-                         lights);
+            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), spheres.opaque,
+                         sequence);
         }
         if (!meshes.opaque_objects().empty()) {
             const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
-            use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false), frame, lights);
-            draw_meshes(frame, std::size_t(lights.count), nullptr);
+            sequence.use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false));
+            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), nullptr);
         }
     }
 
@@ -223,8 +211,7 @@ struct Renderer::Impl {
     // as a premultiplied "over" with a per-channel transmittance: dual-source
     // blending, dst = src0 + src1 * dst. Spheres and meshes merged far to near:
     // runs of spheres between meshes. Skipped when there are none.
-    void draw_translucent(const Scene& scene, const SphereSets& spheres, const CameraFrame& frame,
-                          const LightUniforms& lights) {
+    void draw_translucent(const Scene& scene, const SphereSets& spheres, const FrameSequence& sequence) {
         if (spheres.translucent.empty() && meshes.translucent().empty()) return;
         gl.DepthMask(GL_FALSE);
         gl.Enable(GL_BLEND);
@@ -245,10 +232,10 @@ struct Renderer::Impl {
                    (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
                 run.push_back(sorted[next_sphere++].second);
             if (!run.empty())
-                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, frame, lights);
+                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, sequence);
             if (m == mesh_order.size()) break;
-            use_program(program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true), frame, lights);
-            draw_meshes(frame, std::size_t(lights.count), &mesh_order[m]);
+            sequence.use_program(program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true));
+            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), &mesh_order[m]);
         }
         gl.Disable(GL_BLEND);
         gl.DepthMask(GL_TRUE);
@@ -276,19 +263,20 @@ struct Renderer::Impl {
     void draw_scene(const Scene& scene) {
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
         chunks->check_deadline();  // loading the scene may have taken it all
-        const CameraFrame frame = make_camera_frame(scene.camera, scene.display, scene.objects);
-        const LightUniforms lights = pack_lights(scene.lights, scene.ambient);
-        const SphereSets spheres = sort_spheres(scene, frame);
-        meshes.prepare(scene, frame);
+        FrameSequence sequence(gl, targets, scene);
+        const SphereSets spheres = sort_spheres(scene, sequence.camera());
+        meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
-        targets.begin(scene);  // background and depth cleared
-        draw_opaque(scene, spheres, frame, lights);
-        draw_translucent(scene, spheres, frame, lights);
-        targets.quantize(scene.display);  // Pass 3: the display's levels (docs/spec.md#2-display)
+        sequence.begin();  // background and depth cleared
+        draw_opaque(scene, spheres, sequence);
+        draw_translucent(scene, spheres, sequence);
+        sequence.finish();  // Pass 3: the display's levels
     }
 };
 
-Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl)) {}
+Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
+    : impl_(std::make_unique<Impl>(gl, nullptr, &programs)) {}
+Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl, std::make_unique<ProgramCache>(gl), nullptr)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
 void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }

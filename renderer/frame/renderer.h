@@ -7,6 +7,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/program.h"
 #include "image/image.h"
 #include "passes/draw_chunks.h"  // RenderTimeout
 #include "passes/shader_plan.h"
@@ -22,7 +23,11 @@ namespace m3055 {
 
 class Renderer {
 public:
-    explicit Renderer(const GlApi& gl);
+    // Programs come from `programs`, the context's one cache, shared with
+    // whatever else draws there (another Renderer, the BRDF grid), so each
+    // program compiles once per context. The cache must outlive the Renderer.
+    Renderer(const GlApi& gl, ProgramCache& programs);
+    explicit Renderer(const GlApi& gl);  // with a program cache of its own
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -60,7 +65,7 @@ public:
     // display targets at that scene's size (the next render resizes them).
     void warm_up_general_programs();
 
-    // Number of programs compiled so far (the cache's size).
+    // Number of programs compiled so far in its cache (shared: by every user).
     std::size_t compiled_programs() const;
 
     // The quantized display image of the last render, as an RGBA8 GL texture

@@ -2,24 +2,16 @@
 
 namespace m3055 {
 
-IndexedVertexArray::IndexedVertexArray(const GlApi& gl) : gl_(gl) {
-    gl_.GenVertexArrays(1, &vao_);
-    gl_.GenBuffers(1, &vertex_buffer_);
-    gl_.GenBuffers(1, &index_buffer_);
-    gl_.BindVertexArray(vao_);
-    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_);  // recorded in the VAO
+IndexedVertexArray::IndexedVertexArray(const GlApi& gl)
+    : gl_(gl), vao_(gl), vertex_buffer_(gl), index_buffer_(gl) {
+    gl_.BindVertexArray(vao_.id());
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, index_buffer_.id());  // recorded in the VAO
     gl_.BindVertexArray(0);
 }
 
-IndexedVertexArray::~IndexedVertexArray() {
-    gl_.DeleteVertexArrays(1, &vao_);
-    const unsigned buffers[] = {vertex_buffer_, index_buffer_};
-    gl_.DeleteBuffers(2, buffers);
-}
-
 void IndexedVertexArray::bind() const {
-    gl_.BindVertexArray(vao_);
-    gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    gl_.BindVertexArray(vao_.id());
+    gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_.id());
 }
 
 void IndexedVertexArray::upload(const void* vertices, std::size_t vertex_bytes, const void* indices,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 
 #include <cstddef>
 
@@ -12,20 +13,18 @@ namespace m3055 {
 class IndexedVertexArray {
 public:
     explicit IndexedVertexArray(const GlApi& gl);
-    ~IndexedVertexArray();
-    IndexedVertexArray(const IndexedVertexArray&) = delete;
-    IndexedVertexArray& operator=(const IndexedVertexArray&) = delete;
 
     // Binds the VAO and the vertex buffer (for VertexAttribPointer set-up).
     void bind() const;
     // Replaces both buffers' contents (usage: GL_STATIC_DRAW, GL_STREAM_DRAW), leaving the VAO bound.
     void upload(const void* vertices, std::size_t vertex_bytes, const void* indices, std::size_t index_bytes,
                 unsigned usage) const;
-    unsigned vao() const { return vao_; }
+    unsigned vao() const { return vao_.id(); }
 
 private:
     const GlApi& gl_;
-    unsigned vao_ = 0, vertex_buffer_ = 0, index_buffer_ = 0;
+    GlVertexArray vao_;
+    GlBuffer vertex_buffer_, index_buffer_;
 };
 
 }  // namespace m3055

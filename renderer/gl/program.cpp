@@ -74,10 +74,6 @@ unsigned build_program(const GlApi& gl, const ProgramKey& key) {
     return program;
 }
 
-ProgramCache::~ProgramCache() {
-    for (auto& entry : programs_) gl_.DeleteProgram(entry.second);
-}
-
 bool ProgramCache::contains(ProgramKey key) const {
     key.table_revision = model_table().revision();
     return programs_.count(key) > 0;
@@ -86,10 +82,8 @@ bool ProgramCache::contains(ProgramKey key) const {
 unsigned ProgramCache::get(ProgramKey key) {
     key.table_revision = model_table().revision();
     auto found = programs_.find(key);
-    if (found != programs_.end()) return found->second;
-    const unsigned program = build_program(gl_, key);
-    programs_.emplace(key, program);
-    return program;
+    if (found != programs_.end()) return found->second.id();
+    return programs_.emplace(key, GlProgram(gl_, build_program(gl_, key))).first->second.id();
 }
 
 }  // namespace m3055

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 
 #include <cstdint>
 #include <map>
@@ -32,12 +33,12 @@ public:
 // file names and lines when compiling or linking fails.
 unsigned build_program(const GlApi& gl, const ProgramKey& key);
 
+// The programs of one GL context, each built once. One cache per context,
+// shared by everything that draws there (the renderers, the BRDF grid), so
+// that no program is compiled twice.
 class ProgramCache {
 public:
     explicit ProgramCache(const GlApi& gl) : gl_(gl) {}
-    ~ProgramCache();
-    ProgramCache(const ProgramCache&) = delete;
-    ProgramCache& operator=(const ProgramCache&) = delete;
 
     unsigned get(ProgramKey key);
     // Whether get(key) would find the program built already (no compile).
@@ -46,7 +47,7 @@ public:
 
 private:
     const GlApi& gl_;
-    std::map<ProgramKey, unsigned> programs_;
+    std::map<ProgramKey, GlProgram> programs_;
 };
 
 }  // namespace m3055

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/program.h"
 #include "scene/scene.h"
 
 #include <memory>
@@ -18,12 +19,17 @@ namespace m3055 {
 // naming a .brdf file's own line: for a caller that keeps the last good
 // material on screen while a file is edited (brdf_file/brdf_model.h:
 // reload_brdf_material). Compiles the grid pass, which holds the same model code
-// as the renderer's passes.
+// as the renderer's passes; the program stays in `programs` for the grid.
+std::string brdf_compile_error(ProgramCache& programs, const Material& material);
+// The same with a cache of its own, dropped after the check.
 std::string brdf_compile_error(const GlApi& gl, const Material& material);
 
 class BrdfGrid {
 public:
-    explicit BrdfGrid(const GlApi& gl);  // the GL context must stay current
+    // The GL context must stay current. Programs come from `programs`, shared
+    // with whatever else draws in this context, so each compiles once.
+    BrdfGrid(const GlApi& gl, ProgramCache& programs);
+    explicit BrdfGrid(const GlApi& gl);  // with a program cache of its own
     ~BrdfGrid();
     BrdfGrid(const BrdfGrid&) = delete;
     BrdfGrid& operator=(const BrdfGrid&) = delete;

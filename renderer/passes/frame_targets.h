@@ -1,12 +1,16 @@
 // The plumbing of one frame, in one place for everything that renders a scene
-// (the Renderer, and the benchmark's UV-sphere renderer): the float scene
-// target with its depth buffer, the display target, the material records, the
-// clear to the background, the quantize pass (docs/spec.md#2-display) and the read-backs.
+// (through frame/frame_sequence.h: the Renderer, and the benchmark's UV-sphere
+// renderer): the float scene target with its depth buffer (render_targets.h),
+// the display target, the material records (material_texture.h), the clear to
+// the background, the quantize pass (docs/spec.md#2-display) and the read-backs.
 #pragma once
 
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 #include "gl/program.h"
 #include "image/image.h"
+#include "passes/material_texture.h"
+#include "passes/render_targets.h"
 #include "scene/scene.h"
 
 #include <vector>
@@ -16,9 +20,6 @@ namespace m3055 {
 class FrameTargets {
 public:
     FrameTargets(const GlApi& gl, ProgramCache& programs);
-    ~FrameTargets();
-    FrameTargets(const FrameTargets&) = delete;
-    FrameTargets& operator=(const FrameTargets&) = delete;
 
     // Starts a frame of `scene`: targets at the display's size (kept while the
     // size stays), the objects' material records uploaded (u_materials, unit 0),
@@ -26,7 +27,7 @@ public:
     // test LESS, depth writes on and blending off.
     void begin(const Scene& scene);
 
-    // Sets a program's material uniforms (the record stride); call after UseProgram.
+    // Sets a program's material uniforms (the sampler's unit, the record stride); call after UseProgram.
     void set_material_uniforms(unsigned program) const;
 
     // The quantize pass (docs/spec.md#2-display: display bits, optional dither) from the scene
@@ -34,26 +35,23 @@ public:
     void quantize(const Display& display);
 
     // The quantized display as an RGBA8 GL texture (GL_NEAREST; row 0 at the bottom).
-    unsigned display_texture() const { return display_texture_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
+    unsigned display_texture() const { return display_texture_.id(); }
+    int width() const { return scene_.width(); }
+    int height() const { return scene_.height(); }
 
     Rgb8Image read_display() const;  // 8-bit PNG values, rows top to bottom
     RgbFloatImage read_raw() const;  // unquantized linear colour, rows bottom to top
 
 private:
     void ensure_size(int width, int height);
-    void release();
-    void upload_materials(const std::vector<Object>& objects);
-    unsigned make_texture(int internal_format, unsigned format, unsigned type) const;
-    void check_framebuffer(const char* name) const;
 
     const GlApi& gl_;
     ProgramCache& programs_;
-    unsigned scene_fbo_ = 0, colour_texture_ = 0, depth_texture_ = 0;
-    unsigned display_fbo_ = 0, display_texture_ = 0;
-    unsigned material_buffer_ = 0, material_texture_ = 0, empty_vao_ = 0;
-    int width_ = 0, height_ = 0;
+    FloatTargets scene_;  // the float colour the passes draw into, with depth
+    GlTexture display_texture_;
+    GlFramebuffer display_fbo_;
+    MaterialTexture materials_;
+    GlVertexArray empty_vao_;  // the quantize pass's fullscreen triangle has no attributes
 };
 
 }  // namespace m3055

@@ -3,7 +3,10 @@
 #include "gl/context.h"
 #include "gl/program.h"
 #include "passes/light_uniforms.h"
+#include "gl/gl_object.h"
 #include "passes/material_buffer.h"
+#include "passes/material_texture.h"
+#include "passes/render_targets.h"
 #include "passes/shader_plan.h"
 #include "models/model_spec.h"
 #include "reference/reference.h"
@@ -38,119 +41,63 @@ Material float_rounded(Material material) {
 struct StressHarness::Impl {
     std::unique_ptr<HeadlessContext> context = HeadlessContext::create(Backend::automatic);
     const GlApi& gl = context->gl();
+    ProgramCache programs{gl};
     // The general program (every model, chosen per pixel at run time), as the renderer builds it.
-    unsigned program = build_program(gl, {"passes/fullscreen.vert", "passes/stress.frag",
-                                          specialization_defines(ShaderMode::general, {}, {})});
-    unsigned vao = 0, material_buffer = 0, material_texture = 0;
-    unsigned input_textures[3] = {0, 0, 0};  // N, V, P
-    unsigned targets[2] = {0, 0};             // colour, transmittance
-    unsigned fbo = 0;
-    int width = 0, height = 0;
-
-    Impl() {
-        gl.GenVertexArrays(1, &vao);
-        gl.GenBuffers(1, &material_buffer);
-        gl.GenTextures(1, &material_texture);
-        gl.GenTextures(3, input_textures);
-        gl.GenTextures(2, targets);
-        gl.GenFramebuffers(1, &fbo);
-    }
-
-    ~Impl() {
-        gl.DeleteFramebuffers(1, &fbo);
-        gl.DeleteTextures(2, targets);
-        gl.DeleteTextures(3, input_textures);
-        gl.DeleteTextures(1, &material_texture);
-        gl.DeleteBuffers(1, &material_buffer);
-        gl.DeleteVertexArrays(1, &vao);
-        gl.DeleteProgram(program);
-    }
-
-    void float_texture(unsigned texture, int w, int h, const float* rgba) {
-        gl.BindTexture(GL_TEXTURE_2D, texture);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rgba);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-
-    void ensure_targets(int w, int h) {
-        if (w == width && h == height) return;
-        width = w, height = h;
-        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-        for (int i = 0; i < 2; ++i) {
-            float_texture(targets[i], w, h, nullptr);
-            gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, targets[i], 0);
-        }
-        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        gl.DrawBuffers(2, buffers);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("stress harness: incomplete RGBA32F framebuffer at " + std::to_string(w) +
-                                     "x" + std::to_string(h));
-    }
-
-    std::vector<float> read(int attachment) const {
-        std::vector<float> rgba(std::size_t(width) * height * 4);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-        gl.ReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-        gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-        gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
-        return rgba;
-    }
+    unsigned program = programs.get(
+        {"passes/fullscreen.vert", "passes/stress.frag", specialization_defines(ShaderMode::general, {}, {})});
+    GlVertexArray vao{gl};
+    MaterialTexture materials{gl};
+    GlTexture input_textures[3] = {GlTexture(gl), GlTexture(gl), GlTexture(gl)};  // N, V, P
+    FloatTargets targets{gl, 2, false, "stress harness"};  // colour, transmittance
 
     std::vector<StressOutput> evaluate(const StressBatch& batch, int w) {
         const std::size_t count = batch.inputs.size();
         if (count == 0) return {};
         const int h = int((count + w - 1) / w);
-        ensure_targets(w, h);
+        targets.ensure_size(w, h);
 
         // Inputs: raw N, raw V and P = -L_raw (see the header); padding pixels
         // get a harmless unit input and the first material.
         std::vector<float> texels[3];
         for (auto& t : texels) t.assign(std::size_t(w) * h * 4, 0.f);
-        std::vector<float> materials;
-        materials.reserve(std::size_t(w) * h * material_record_texels() * 4);
+        std::vector<float> records;
+        records.reserve(std::size_t(w) * h * material_record_texels() * 4);
         for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
             const StressInput& in = batch.inputs[i < count ? i : 0];
             const glm::vec3 values[3] = {in.N, in.V, -in.L};
             for (int k = 0; k < 3; ++k)
                 for (int c = 0; c < 3; ++c) texels[k][i * 4 + c] = values[k][c];
-            pack_material(in.material, materials);
+            pack_material(in.material, records);
         }
         for (int k = 0; k < 3; ++k) {
             gl.ActiveTexture(GL_TEXTURE1 + k);
-            float_texture(input_textures[k], w, h, texels[k].data());
+            define_texture_2d(gl, input_textures[k], kRgba32f, w, h, texels[k].data());
         }
-        gl.BindBuffer(GL_TEXTURE_BUFFER, material_buffer);
-        gl.BufferData(GL_TEXTURE_BUFFER, GLsizeiptr(materials.size() * sizeof(float)), materials.data(),
-                      GL_STREAM_DRAW);
-        gl.ActiveTexture(GL_TEXTURE0);
-        gl.BindTexture(GL_TEXTURE_BUFFER, material_texture);
-        gl.TexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, material_buffer);
+        materials.upload(records);
 
         gl.UseProgram(program);
+        materials.set_uniforms(program);
         auto loc = [&](const char* name) { return gl.GetUniformLocation(program, name); };
-        gl.Uniform1i(loc("u_materials"), 0);
-        gl.Uniform1i(loc("u_material_texels"), material_record_texels());
         gl.Uniform1i(loc("u_normal"), 1);
         gl.Uniform1i(loc("u_view"), 2);
         gl.Uniform1i(loc("u_position"), 3);
         gl.Uniform1i(loc("u_width"), w);
         upload_lights(gl, program, pack_lights(stress_lights(batch)));
 
-        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, targets.framebuffer());
         gl.Viewport(0, 0, w, h);
         gl.Disable(GL_DEPTH_TEST);
         gl.Disable(GL_BLEND);
         const float nan_fill[4] = {-1.f, -1.f, -1.f, -1.f};  // a pixel left unwritten shows as out of bounds
         gl.ClearBufferfv(GL_COLOR, 0, nan_fill);
         gl.ClearBufferfv(GL_COLOR, 1, nan_fill);
-        gl.BindVertexArray(vao);
+        gl.BindVertexArray(vao.id());
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
         gl.BindVertexArray(0);
         const GLenum error = gl.GetError();
         if (error != GL_NO_ERROR) throw std::runtime_error("stress harness: GL error " + std::to_string(error));
 
-        const std::vector<float> color = read(0), transmittance = read(1);
+        const std::vector<float> color = targets.read_rgba(0), transmittance = targets.read_rgba(1);
         gl.UseProgram(0);
         gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
         std::vector<StressOutput> out(count);
