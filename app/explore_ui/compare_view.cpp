@@ -8,10 +8,6 @@
 
 namespace m3055::explore {
 
-CompareView::~CompareView() {
-    if (texture_) gl_.DeleteTextures(1, &texture_);
-}
-
 void CompareView::update(const ExplorerState& state, const Rgb8Image& a, Renderer& b) {
     if (!fresh_) {
         b_display_ = b.read_display();

@@ -8,6 +8,7 @@
 #include "grading/ab_compare.h"
 #include "explore/state.h"
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 #include "frame/renderer.h"
 
 #include <optional>
@@ -18,7 +19,6 @@ namespace m3055::explore {
 class CompareView {
 public:
     explicit CompareView(const GlApi& gl) : gl_(gl) {}
-    ~CompareView();
     CompareView(const CompareView&) = delete;
     CompareView& operator=(const CompareView&) = delete;
 
@@ -30,7 +30,7 @@ public:
     void update(const ExplorerState& state, const Rgb8Image& a, Renderer& b);
 
     const grading::LevelDifference& difference() const { return difference_; }
-    unsigned texture() const { return texture_; }
+    unsigned texture() const { return texture_.id(); }
     int scale_used() const { return scale_used_; }
     const Rgb8Image& difference_image() const { return image_; }
     const Rgb8Image& b_display() const { return b_display_; }  // B as shown, this render
@@ -48,7 +48,7 @@ private:
     grading::LevelDifference difference_;
     int scale_used_ = 1;
     int scale_asked_ = -1;  // the state's diff_scale when image_ was made
-    unsigned texture_ = 0;
+    GlTexture texture_;  // the |A - B| pane
 };
 
 }  // namespace m3055::explore

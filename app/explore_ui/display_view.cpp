@@ -63,9 +63,9 @@ void draw_selection_outline(const std::vector<int>& ids, int selected, int w, in
     }
 }
 
-void upload_pane_texture(const GlApi& gl, unsigned& texture, const Rgb8Image& image) {
-    if (!texture) gl.GenTextures(1, &texture);
-    gl.BindTexture(GL_TEXTURE_2D, texture);
+void upload_pane_texture(const GlApi& gl, GlTexture& texture, const Rgb8Image& image) {
+    if (!texture) texture = GlTexture(gl);
+    gl.BindTexture(GL_TEXTURE_2D, texture.id());
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -4,6 +4,7 @@
 
 #include "explore/layout.h"
 #include "gl/gl_api.h"
+#include "gl/gl_object.h"
 #include "image/image.h"
 
 #include <string>
@@ -32,23 +33,19 @@ int draw_display(const std::vector<Pane>& panes, int width, int height, const Re
 // pixel (explore/readouts.h object_ids).
 void draw_selection_outline(const std::vector<int>& ids, int selected, int width, int height, const Rect& shown);
 
-// Puts `image` (rows top to bottom, as PNGs) into `texture` (made when 0) the
+// Puts `image` (rows top to bottom, as PNGs) into `texture` (made when empty) the
 // way the renderer's display textures hold theirs: rows bottom to top,
 // nearest-neighbour, so draw_display shows every pane alike, dot for dot.
-void upload_pane_texture(const GlApi& gl, unsigned& texture, const Rgb8Image& image);
+void upload_pane_texture(const GlApi& gl, GlTexture& texture, const Rgb8Image& image);
 
 // A pane's texture of its own (the assignment's reference), deleted with it.
 class PaneTexture {
 public:
-    PaneTexture(const GlApi& gl, const Rgb8Image& image) : gl_(gl) { upload_pane_texture(gl_, texture_, image); }
-    ~PaneTexture() { gl_.DeleteTextures(1, &texture_); }
-    PaneTexture(const PaneTexture&) = delete;
-    PaneTexture& operator=(const PaneTexture&) = delete;
-    unsigned texture() const { return texture_; }
+    PaneTexture(const GlApi& gl, const Rgb8Image& image) { upload_pane_texture(gl, texture_, image); }
+    unsigned texture() const { return texture_.id(); }
 
 private:
-    const GlApi& gl_;
-    unsigned texture_ = 0;
+    GlTexture texture_;
 };
 
 // The whole window as the user sees it (the back buffer, after ImGui has drawn).

@@ -28,6 +28,7 @@
 #include "image/image.h"
 #include "passes/brdf_grid.h"
 #include "frame/renderer.h"
+#include "gl/program.h"
 #include "scene/load.h"
 #include "scene/presets.h"
 
@@ -75,8 +76,11 @@ public:
              ImGuiLayer& imgui, const GlApi& gl, FrameInfo& info)
         : options_(options), state_(state), script_(script), window_(window), imgui_(imgui), gl_(gl), info_(info) {
         try {
-            renderer_a_ = std::make_unique<Renderer>(gl);
-            renderer_b_ = std::make_unique<Renderer>(gl);
+            // One program cache for the context: A, B, the GPU curves, the
+            // BRDF views and the .brdf check compile each program once.
+            programs_ = std::make_unique<ProgramCache>(gl);
+            renderer_a_ = std::make_unique<Renderer>(gl, *programs_);
+            renderer_b_ = std::make_unique<Renderer>(gl, *programs_);
             compare_ = std::make_unique<CompareView>(gl);
             // No stall on a new specialization (explore/display_renderers.h).
             if (!options.compile_at_once) {
@@ -84,10 +88,10 @@ public:
                 defer_compiles(*renderer_b_);
             }
             // .brdf files: the polar plot's GPU curves and the GLSL check of a (re)loaded file.
-            plane_curves_ = std::make_unique<PlaneCurves>(gl);
+            plane_curves_ = std::make_unique<PlaneCurves>(gl, *programs_);
             info_.plane_curves = plane_curves_.get();
-            brdf_views_ = std::make_unique<BrdfViews>(gl);
-            state_.brdf_compile_check = [&gl](const Material& m) { return brdf_compile_error(gl, m); };
+            brdf_views_ = std::make_unique<BrdfViews>(gl, *programs_);
+            state_.brdf_compile_check = [this](const Material& m) { return brdf_compile_error(*programs_, m); };
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
@@ -108,6 +112,7 @@ public:
         brdf_views_.reset();
         renderer_b_.reset();
         renderer_a_.reset();
+        programs_.reset();
     }
 
     // --assignment: the reference (a scene one rendered on A, which then
@@ -448,6 +453,7 @@ private:
     ImGuiLayer& imgui_;
     const GlApi& gl_;
     FrameInfo& info_;
+    std::unique_ptr<ProgramCache> programs_;             // the context's programs, shared by all below
     std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
     std::unique_ptr<PlaneCurves> plane_curves_;          // the polar plot of .brdf models (GPU)
     std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
