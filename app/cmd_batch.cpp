@@ -63,9 +63,13 @@ std::vector<BatchItem> batch_items(const BatchCommandOptions& options, std::stri
     return mine;
 }
 
+// Paths are bytes; the report's are shown as grade shows names
+// (grading/submissions.h: shown_name): as they are when valid UTF-8 without
+// controls, a Latin-1 byte as \xE9.
 nlohmann::json report_entry(const BatchItem& item, const std::string& error, double seconds) {
-    return {{"scene", item.scene}, {"status", error.empty() ? "ok" : "failed"}, {"message", error},
-            {"seconds", seconds},   {"out", error.empty() ? item.out : ""},     {"raw", error.empty() ? item.raw : ""}};
+    const auto shown = [](const std::string& path) { return grading::shown_name(path); };
+    return {{"scene", shown(item.scene)}, {"status", error.empty() ? "ok" : "failed"}, {"message", error},
+            {"seconds", seconds}, {"out", error.empty() ? shown(item.out) : ""}, {"raw", error.empty() ? shown(item.raw) : ""}};
 }
 
 }  // namespace
@@ -138,7 +142,7 @@ void add_batch_command(CLI::App& app) {
                 batch);
             progress.finish();
             if (!options->report.empty()) {
-                const std::string text = report.dump(1) + "\n";
+                const std::string text = report.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
                 write_file_atomic(options->report, text.data(), text.size());
             }
         } catch (const std::exception& error) {

@@ -30,7 +30,9 @@ struct GradeOptions {
 
 void print_grade(const grading::Grade& grade) {
     const std::vector<std::string> reasons = grade.reasons();
-    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", text::quote_name(grade.student).c_str(),
+    // The student as every output shows the name (grading/submissions.h: shown_name:
+    // one line of valid UTF-8, at most 4 x 255 bytes).
+    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", grade.student.c_str(),
                  text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
                  grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
                  reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());

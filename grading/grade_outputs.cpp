@@ -40,14 +40,15 @@ json assignment_json(const Assignment& a) {
     return {{"title", a.title}, {"max", a.max_score()}, {"pass", a.pass_score}, {"reference_image", "reference.png"}};
 }
 
-json grade_json(const Grade& g, bool images) {
+json grade_json(const Grade& g, const std::string& image_stem) {
     json checks = json::array();
     for (const Check& c : g.checks)
         checks.push_back({{"label", c.label}, {"points", c.points}, {"earned", c.earned}, {"ok", c.ok}, {"reason", c.reason}});
     json out = {{"student", g.student}, {"score", g.score},   {"max", g.max},       {"passed", g.passed},
                 {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot}};
     out["comparison"] = g.comparison ? to_json(*g.comparison) : json();
-    out["images"] = images ? json{{"render", g.student + ".png"}, {"diff", g.student + "-diff.png"}} : json();
+    out["images"] =
+        image_stem.empty() ? json() : json{{"render", image_stem + ".png"}, {"diff", image_stem + "-diff.png"}};
     return out;
 }
 
@@ -62,7 +63,10 @@ std::string grades_csv(const GradeReport& report) {
 
 std::string grades_json(const GradeReport& report) {
     json out = {{"assignment", report.assignment}, {"students", report.students}};
-    return out.dump(1) + "\n";
+    // Every name and reason is valid UTF-8 already (submissions.h: shown_name,
+    // text::escape); `replace` only makes sure a slip could never cost the
+    // class its tables.
+    return out.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string gradescope_json(const GradeReport& report) {
@@ -83,7 +87,7 @@ std::string gradescope_json(const GradeReport& report) {
     }
     json out = {{"tests", tests}};
     if (report.students.size() == 1) out["score"] = report.students[0]["score"];
-    return out.dump(1) + "\n";
+    return out.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string base64(const std::vector<std::uint8_t>& bytes) {

@@ -23,8 +23,9 @@ struct GradeReport {
 };
 
 nlohmann::json assignment_json(const Assignment& assignment);
-// `images`: whether NAME.png and NAME-diff.png were written for this student.
-nlohmann::json grade_json(const Grade& grade, bool images);
+// `image_stem`: the student's images STEM.png and STEM-diff.png were written
+// (submissions.h: output_stem), or "" when none were.
+nlohmann::json grade_json(const Grade& grade, const std::string& image_stem);
 
 std::string grades_csv(const GradeReport& report);
 std::string grades_json(const GradeReport& report);

@@ -91,7 +91,7 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         r.set_deadline(std::nullopt);
         grade.student = s.student;
         if (!s.screenshot.empty()) {
-            const std::string shown = text::quote_name(s.student + "/screenshot.png");
+            const std::string shown = text::quote_name(s.name + "/screenshot.png");
             try {
                 check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), *render, shown);
             } catch (const std::exception& e) {
@@ -100,7 +100,7 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
             }
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
-        const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
+        const std::string png = join(out_dir, s.file_stem + ".png"), diff_png = join(out_dir, s.file_stem + "-diff.png");
         const std::size_t bytes = render->levels.size() * 3;  // levels, display and diff while encoding
         return {std::move(grade),
                 [render, display, diff, png, diff_png, &reference]() {
@@ -139,7 +139,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     all.erase(std::remove_if(all.begin(), all.end(),
                              [&](const Submission& s) {
                                  std::error_code ignored;
-                                 return fs::equivalent(fs::path(submissions_dir) / s.student, options.out_dir, ignored);
+                                 return fs::equivalent(fs::path(submissions_dir) / s.name, options.out_dir, ignored);
                              }),
               all.end());
     const std::vector<Submission> mine = take_shard(all, options.shard);
@@ -173,7 +173,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     for (const Submission& s : mine) {
         Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir);
         const Grade& grade = graded.grade;
-        json entry = grade_json(grade, grade.broken.empty());
+        json entry = grade_json(grade, grade.broken.empty() ? s.file_stem : "");
         if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
         report.students.push_back(std::move(entry));
         while (!writing.empty() &&
@@ -206,9 +206,10 @@ json read_shard(const std::string& dir) {
 }
 
 // Which shards are there: every K of one N, each once; a missing shard would
-// silently drop students from the class's grades.
-void check_shards(const std::vector<json>& docs, const std::vector<std::string>& dirs) {
-    std::set<int> seen;
+// silently drop students from the class's grades. Returns, for K = 1..N, the
+// index in `docs` of shard K.
+std::vector<std::size_t> check_shards(const std::vector<json>& docs, const std::vector<std::string>& dirs) {
+    std::map<int, std::size_t> seen;
     int n = 0;
     for (std::size_t i = 0; i < docs.size(); ++i) {
         const json& a = docs[i]["assignment"];
@@ -218,7 +219,7 @@ void check_shards(const std::vector<json>& docs, const std::vector<std::string>&
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " is not of the same " +
                                      std::to_string(n) + " shards as the others");
         n = parsed.n;
-        if (!seen.insert(parsed.k).second)
+        if (!seen.emplace(parsed.k, i).second)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " given twice");
         json plain = a;
         plain.erase("shard");
@@ -228,9 +229,26 @@ void check_shards(const std::vector<json>& docs, const std::vector<std::string>&
             throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another assignment than " +
                                      text::quote_name(dirs[0]));
     }
-    for (int k = 1; k <= n; ++k)
+    std::vector<std::size_t> order;
+    for (int k = 1; k <= n; ++k) {
         if (!seen.count(k))
             throw std::runtime_error("--merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+        order.push_back(seen[k]);
+    }
+    // Shard K holds the students whose index i in the class's sorted list has
+    // i % N == K - 1, so the shards' sizes follow from the class's size.
+    std::size_t total = 0;
+    for (const json& doc : docs) total += doc["students"].size();
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::size_t expected = total / order.size() + (k < total % order.size() ? 1 : 0);
+        const std::size_t held = docs[order[k]]["students"].size();
+        if (held != expected)
+            throw std::runtime_error(text::quote_name(dirs[order[k]]) + ": shard " + std::to_string(k + 1) + "/" +
+                                     std::to_string(n) + " holds " + std::to_string(held) + " submission" +
+                                     (held == 1 ? "" : "s") + ", not " + std::to_string(expected) +
+                                     " as a shard of these " + std::to_string(total) + " would: shards of different classes?");
+    }
+    return order;
 }
 
 }  // namespace
@@ -239,26 +257,34 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
                           const std::string& gradescope) {
     std::vector<json> docs;
     for (const std::string& dir : shard_dirs) docs.push_back(read_shard(dir));
-    check_shards(docs, shard_dirs);
+    const std::vector<std::size_t> order = check_shards(docs, shard_dirs);
     GradeReport report;
     report.assignment = docs[0]["assignment"];
     report.assignment.erase("shard");
     std::map<std::string, std::string> image_dir;  // image file name -> the shard folder holding it
     image_dir["reference.png"] = shard_dirs[0];
-    for (std::size_t i = 0; i < docs.size(); ++i)
-        for (const json& s : docs[i]["students"]) {
-            report.students.push_back(s);
-            if (s["images"].is_object())
-                for (const char* key : {"render", "diff"})
-                    if (!s["images"][key].get<std::string>().empty()) image_dir[s["images"][key]] = shard_dirs[i];
-        }
-    std::stable_sort(report.students.begin(), report.students.end(), [](const json& a, const json& b) {
-        return a["student"].get<std::string>() < b["student"].get<std::string>();
-    });
-    for (std::size_t i = 1; i < report.students.size(); ++i)
-        if (report.students[i]["student"] == report.students[i - 1]["student"])
-            throw std::runtime_error("--merge: " + text::quote_name(report.students[i]["student"].get<std::string>()) +
+    // Back in the class's order (bytewise by file name, which grades.json
+    // shows escaped): student i is number i / N of shard i % N + 1.
+    std::size_t total = 0;
+    for (const json& doc : docs) total += doc["students"].size();
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < total; ++i) {
+        const std::size_t shard = order[i % order.size()];
+        const json& s = docs[shard]["students"][i / order.size()];
+        if (!names.insert(s["student"].get<std::string>()).second)
+            throw std::runtime_error("--merge: " + text::quote_name(s["student"].get<std::string>()) +
                                      " is graded in two shards");
+        report.students.push_back(s);
+        if (s["images"].is_object())
+            for (const char* key : {"render", "diff"})
+                if (const std::string name = s["images"][key].get<std::string>(); !name.empty()) {
+                    // A file of the shard's folder, never a path out of it.
+                    if (name.find('/') != std::string::npos || name == "." || name == "..")
+                        throw std::runtime_error(text::quote_name(shard_dirs[shard] + "/grades.json") +
+                                                 ": images." + key + ": not a file name: " + text::quote(name));
+                    image_dir[name] = shard_dirs[shard];
+                }
+    }
     prepare_out_dir(out_dir);
     std::error_code error;
     // Copied by a few threads: each file is synced (image/atomic_file.cpp),

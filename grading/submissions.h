@@ -4,23 +4,44 @@
 // of a cluster computes the same order and the same shards.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace m3055::grading {
 
 struct Submission {
-    std::string student;     // the file's stem or the folder's name
+    std::string name;        // the file's stem or the folder's name: bytes, any but '/' and NUL
+    std::string student;     // the name as every output shows it: shown_name(name)
+    std::string file_stem;   // what the student's output files are named after: output_stem, unique in the class
     std::string scene;       // path of the scene file
     std::string screenshot;  // path of screenshot.png, or "" when there is none
     std::string problem;     // why it cannot be graded ("alice/scene.json: missing"), or ""
 };
 
+// A file name (bytes) as text every output shows (CSV, JSON, HTML, the
+// console): valid UTF-8, one line, and a different text for different bytes:
+// invalid UTF-8 bytes as \xHH, controls as \n or \uXXXX, and \ and " escaped
+// ("caf\xE9 latin1" for the Latin-1 bytes of "café latin1"). A plain name is
+// shown as it is.
+std::string shown_name(std::string_view name);
+
+// A name for a student's output files, safe on any filesystem: ASCII letters,
+// digits, '-', '_', '.' (not leading) and printable non-ASCII UTF-8 are kept,
+// every other byte is %HH ('%' too), so different names give different stems;
+// cut to at most kMaxStemBytes with a digest of the whole name appended when
+// longer ("~" and 16 hex digits).
+inline constexpr std::size_t kMaxStemBytes = 200;
+std::string output_stem(std::string_view name);
+
 // Every NAME.json and every folder (hidden entries, starting with '.', and
 // other files skipped), sorted by student name; or, when `folder` is a .json
 // file, that one submission (a student checking what they will submit). A name the outputs reserve
 // (reference, grades, report, results) or that would clash with another's
-// difference image (x-diff beside x) gets a `problem`. Throws
+// difference image (x-diff beside x) gets a `problem`. Stems that differ
+// only by ASCII case (alice, Alice: one file on a case-insensitive disk) get
+// "~" and a digest of the name appended. Throws
 // std::runtime_error when the folder cannot be read.
 std::vector<Submission> find_submissions(const std::string& folder);
 

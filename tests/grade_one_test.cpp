@@ -35,7 +35,7 @@ TEST(GradeOne, ScoresAsGradeDoesWithTheCallersRenderer) {
         grading::LevelImage render;
         grading::Grade grade = grading::grade_one(assignment, load_scene_file(path), renderer, reference, &render);
         grade.student = name;
-        nlohmann::json mine = grading::grade_json(grade, true);
+        nlohmann::json mine = grading::grade_json(grade, name);
         // The screenshot is grade's business (a file beside the scene), not grade_one's.
         mine["screenshot"] = student["screenshot"];
         EXPECT_EQ(mine["score"], student["score"]) << name;

@@ -1,0 +1,190 @@
+// `m3055 grade` on what a real class hands in (issue 19): class folders built
+// here, from code, with the names, links and files a teacher meets: Latin-1
+// bytes from Windows zip files, spaces, newlines, 240-character names, names
+// differing only by case.
+#include "grading/submissions.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace m3055::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::string kAssignment = source_path("assignments/three-point/assignment.json");
+const std::string kSubmissions = source_path("assignments/three-point/submissions");
+
+json read_json(const std::string& path) { return json::parse(read_text(path)); }
+
+std::map<std::string, json> by_student(const json& grades) {
+    std::map<std::string, json> out;
+    for (const json& s : grades["students"]) out[s["student"]] = s;
+    return out;
+}
+
+// alice's full-marks scene and dave's metal_blinn one, under other names.
+std::string good_scene() { return read_text(kSubmissions + "/alice.json"); }
+std::string weaker_scene() { return read_text(kSubmissions + "/dave.json"); }
+
+// The odd names of issue 19 item 1, as bytes, with the text every output shows for them.
+struct OddName {
+    std::string bytes, shown;
+};
+std::vector<OddName> odd_names() {
+    const std::string long_name(240, 'x');
+    return {{"caf\xE9 latin1", "caf\\xE9 latin1"},
+            {"new\nline", "new\\nline"},
+            {"with space", "with space"},
+            {"back\\slash", "back\\\\slash"},
+            {"zo\xC3\xAB", "zo\xC3\xAB"},  // valid UTF-8: shown as it is
+            {long_name, long_name},
+            {"Alice", "Alice"},
+            {"alice", "alice"}};
+}
+
+TEST(GradeClass, EveryFileNameGetsItsRowEscapedTheSameInEveryOutput) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    for (const OddName& n : odd_names()) write_text(dir.file("subs/" + n.bytes + ".json"), good_scene());
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out"), "--gradescope",
+                                     dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const json grades = read_json(dir.file("out/grades.json"));
+    const auto s = by_student(grades);
+    ASSERT_EQ(s.size(), odd_names().size());
+    const std::string csv = read_text(dir.file("out/grades.csv"));
+    const std::string html = read_text(dir.file("out/report.html"));
+    const std::string results = read_text(dir.file("out/results.json"));
+    std::set<std::string> images;
+    for (const OddName& n : odd_names()) {
+        ASSERT_TRUE(s.count(n.shown)) << n.shown;
+        const json& student = s.at(n.shown);
+        EXPECT_EQ(student["score"], 100) << n.shown << ": " << student["broken"];
+        EXPECT_NE(csv.find("\n" + n.shown + ",100,100,pass,"), std::string::npos) << n.shown << "\n" << csv;
+        EXPECT_NE(html.find(">" + n.shown + "</td>"), std::string::npos) << n.shown;
+        const std::string quoted = json(n.shown).dump();  // "name", JSON-escaped
+        EXPECT_NE(results.find(quoted.substr(0, quoted.size() - 1) + ": image"), std::string::npos) << n.shown;
+        EXPECT_NE(("\n" + run.err).find("\n" + n.shown + ": 100 / 100 pass"), std::string::npos) << n.shown << "\n" << run.err;
+        // Its images exist, under a name of its own that any disk can hold.
+        const std::string render = student["images"]["render"], diff = student["images"]["diff"];
+        EXPECT_TRUE(file_exists(dir.file("out/" + render))) << render;
+        EXPECT_TRUE(file_exists(dir.file("out/" + diff))) << diff;
+        EXPECT_LE(diff.size(), 255u);
+        EXPECT_EQ(render.find_first_of("\n\\ /"), std::string::npos) << render;
+        std::string folded = render;
+        for (char& c : folded) c = char(std::tolower(static_cast<unsigned char>(c)));
+        EXPECT_TRUE(images.insert(folded).second) << "two students' images differ only by case: " << render;
+    }
+    // The render is the student's own: byte-identical to `m3055 render` of the scene.
+    ASSERT_EQ(run_m3055({"render", "--scene", dir.file("subs/caf\xE9 latin1.json"), "--out", dir.file("r.png")}).exit_code, 0);
+    EXPECT_EQ(read_text(dir.file("r.png")), read_text(dir.file("out/" + s.at("caf\\xE9 latin1")["images"]["render"].get<std::string>())));
+}
+
+TEST(GradeClass, OneOddNameNeverCostsTheOthersTheirTables) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/bob.json"), weaker_scene());
+    write_text(dir.file("subs/caf\xE9.json"), "{ not json");
+    write_text(dir.file("subs/\xFF\xFE.json"), good_scene());
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    ASSERT_EQ(s.size(), 3u);
+    EXPECT_EQ(s.at("bob")["score"], 50);  // dave's scene
+    EXPECT_EQ(s.at("caf\\xE9")["score"], 0);
+    // Its reason names the file, escaped as everywhere else.
+    EXPECT_NE(s.at("caf\\xE9")["broken"].get<std::string>().find("caf\\xE9.json"), std::string::npos)
+        << s.at("caf\\xE9")["broken"];
+    EXPECT_EQ(s.at("\\xFF\\xFE")["score"], 100);
+    EXPECT_TRUE(file_exists(dir.file("out/grades.csv")));
+    EXPECT_TRUE(file_exists(dir.file("out/report.html")));
+}
+
+TEST(GradeClass, OneFileWithALatin1NameIsGradedAsInTheFolder) {
+    TempDir dir;
+    write_text(dir.file("caf\xE9.json"), good_scene());
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("caf\xE9.json"), "--out", dir.file("out"),
+                                     "--gradescope", dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_EQ(s.at("caf\\xE9")["score"], 100);
+    EXPECT_EQ(read_json(dir.file("out/results.json"))["score"], 100);
+}
+
+TEST(GradeClass, ShardsOfOddNamesMergeToTheUnshardedBytes) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    for (const OddName& n : odd_names()) write_text(dir.file("subs/" + n.bytes + ".json"), weaker_scene());
+    // Bytewise order and escaped order differ here: '\xE9' sorts after 'z', its escape before.
+    write_text(dir.file("subs/b\xE9.json"), good_scene());
+    write_text(dir.file("subs/b\\y.json"), good_scene());
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("whole")}).exit_code, 0);
+    std::vector<std::string> shards;
+    for (int k = 1; k <= 3; ++k) {
+        shards.push_back(dir.file("shard" + std::to_string(k)));
+        const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", shards.back(), "--shard",
+                                         std::to_string(k) + "/3"});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+    }
+    std::vector<std::string> merge = {"grade", "--merge", shards[2], shards[0], shards[1], "--out", dir.file("merged")};
+    const RunResult merged = run_m3055(merge);
+    ASSERT_EQ(merged.exit_code, 0) << merged.err;
+    for (const char* table : {"grades.csv", "grades.json", "report.html"})
+        EXPECT_EQ(read_text(dir.file(std::string("merged/") + table)), read_text(dir.file(std::string("whole/") + table)))
+            << table;
+    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole")));
+}
+
+TEST(GradeClass, MergeRefusesShardsWhoseSizesCannotBeOfOneClass) {
+    TempDir dir;
+    fs::create_directories(dir.file("big"));
+    fs::create_directories(dir.file("small"));
+    for (const char* name : {"a", "b", "c", "d", "e", "f"}) write_text(dir.file(std::string("big/") + name + ".json"), good_scene());
+    for (const char* name : {"a", "b"}) write_text(dir.file(std::string("small/") + name + ".json"), good_scene());
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("big"), "--out", dir.file("s1"), "--shard", "1/2"}).exit_code, 0);
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("small"), "--out", dir.file("s2"), "--shard", "2/2"}).exit_code, 0);
+    const RunResult merged = run_m3055({"grade", "--merge", dir.file("s1"), dir.file("s2"), "--out", dir.file("m")});
+    EXPECT_EQ(merged.exit_code, 1);
+    EXPECT_NE(merged.err.find("s1: shard 1/2 holds 3 submissions, not 2 as a shard of these 4 would"), std::string::npos) << merged.err;
+    EXPECT_FALSE(file_exists(dir.file("m/grades.json")));
+}
+
+TEST(GradeClass, BatchReportIsWrittenForALatin1SceneName) {
+    TempDir dir;
+    fs::create_directories(dir.file("class"));
+    write_text(dir.file("class/caf\xE9.json"), good_scene());
+    write_text(dir.file("class/plain.json"), good_scene());
+    const RunResult run = run_m3055(
+        {"batch", dir.file("class"), "--out", dir.file("renders"), "--report", dir.file("report.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const json report = read_json(dir.file("report.json"));
+    ASSERT_EQ(report.size(), 2u);
+    EXPECT_EQ(report[0]["scene"], grading::shown_name(dir.file("class/caf\xE9.json")));
+    EXPECT_EQ(report[0]["status"], "ok");
+    EXPECT_TRUE(file_exists(dir.file("renders/caf\xE9.png")));
+}
+
+TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
+    using grading::output_stem;
+    EXPECT_EQ(output_stem("alice"), "alice");
+    EXPECT_EQ(output_stem("zo\xC3\xAB"), "zo\xC3\xAB");
+    EXPECT_EQ(output_stem("caf\xE9 latin1"), "caf%E9%20latin1");
+    EXPECT_EQ(output_stem("a%E9"), "a%25E9");  // not the stem of "a\xE9"
+    EXPECT_EQ(output_stem("new\nline"), "new%0Aline");
+    EXPECT_EQ(output_stem(".hidden"), "%2Ehidden");
+    const std::string a(300, '\xE9'), b = std::string(299, '\xE9') + "x";
+    EXPECT_LE(output_stem(a).size(), grading::kMaxStemBytes);
+    EXPECT_NE(output_stem(a), output_stem(b));
+    EXPECT_EQ(grading::shown_name("caf\xE9 \"q\" \\"), "caf\\xE9 \\\"q\\\" \\\\");
+}
+
+}  // namespace
+}  // namespace m3055::test
