@@ -7,6 +7,7 @@
 #include "io/input_file.h"
 #include "io/message_text.h"
 #include "passes/draw_chunks.h"
+#include "scene/json_brdf.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
 
@@ -70,6 +71,9 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
     if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
     try {
         const auto start = std::chrono::steady_clock::now();
+        // Nothing outside the submission is read: its .brdf files are its own.
+        const scene_json::BrdfConfinement confined(
+            s.folder, "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file");
         const Scene scene = load_scene_file(s.scene);
         Renderer& r = renderer();
         if (assignment.time_budget_s > 0)

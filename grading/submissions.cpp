@@ -62,6 +62,7 @@ Submission from_entry(const fs::directory_entry& entry) {
     std::error_code error;
     if (entry.is_directory(error)) {
         s.name = name;
+        s.folder = entry.path().string();
         s.scene = (entry.path() / "scene.json").string();
         if (!fs::exists(s.scene, error)) s.problem = text::quote_name(name + "/scene.json") + ": missing";
         const fs::path shot = entry.path() / "screenshot.png";

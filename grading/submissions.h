@@ -16,6 +16,7 @@ struct Submission {
     std::string student;     // the name as every output shows it: shown_name(name)
     std::string file_stem;   // what the student's output files are named after: output_stem, unique in the class
     std::string scene;       // path of the scene file
+    std::string folder;      // the submission's own folder (NAME/), where its .brdf files must be; "" for NAME.json
     std::string screenshot;  // path of screenshot.png, or "" when there is none
     std::string problem;     // why it cannot be graded ("alice/scene.json: missing"), or ""
 };

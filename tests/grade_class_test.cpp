@@ -172,6 +172,70 @@ TEST(GradeClass, BatchReportIsWrittenForALatin1SceneName) {
     EXPECT_TRUE(file_exists(dir.file("renders/caf\xE9.png")));
 }
 
+// A folder submission NAME/ whose first object's material is the .brdf at `file`.
+void write_brdf_scene(const std::string& folder, const std::string& file) {
+    fs::create_directories(folder);
+    json scene = json::parse(good_scene());
+    scene["objects"][0]["material"] = {{"model", "brdf"}, {"file", file}};
+    write_text(folder + "/scene.json", scene.dump());
+}
+
+TEST(GradeClass, BrdfFilesOutsideTheSubmissionAreRefusedUnreadNamingTheField) {
+    TempDir dir;
+    const std::string subs = dir.file("subs");
+    // Files a hostile scene would like to show: one outside the class, one a classmate's.
+    write_text(dir.file("secret.brdf"), "TOPSECRET outside the class\n");
+    fs::create_directories(subs + "/victim");
+    write_text(subs + "/victim/victim.brdf", "TOPSECRET of a classmate\n");
+    write_text(subs + "/victim/scene.json", good_scene());
+    write_brdf_scene(subs + "/absolute", "/etc/passwd");
+    write_brdf_scene(subs + "/absolute2", dir.file("secret.brdf"));
+    write_brdf_scene(subs + "/dotdot", "../victim/victim.brdf");
+    write_brdf_scene(subs + "/inner_dotdot", "sub/../../victim/victim.brdf");
+    write_brdf_scene(subs + "/link_out", "evil.brdf");
+    fs::create_symlink(dir.file("secret.brdf"), subs + "/link_out/evil.brdf");
+    write_brdf_scene(subs + "/folder_link", "d/victim.brdf");
+    fs::create_directory_symlink(subs + "/victim", subs + "/folder_link/d");
+    write_text(subs + "/flat.json", [] {
+        json scene = json::parse(good_scene());
+        scene["objects"][0]["material"] = {{"model", "brdf"}, {"file", "victim/victim.brdf"}};
+        return scene.dump();
+    }());
+    // Its own .brdf, in a folder of its own folder: graded.
+    write_brdf_scene(subs + "/own", "shaders/lambert.brdf");
+    fs::create_directories(subs + "/own/shaders");
+    fs::copy_file(source_path("tests/data/brdf/lambert.brdf"), subs + "/own/shaders/lambert.brdf");
+
+    const RunResult run = run_m3055({"grade", kAssignment, subs, "--out", dir.file("out"), "--allow-brdf", "--gradescope",
+                                     dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    const std::map<std::string, std::string> refused = {
+        {"absolute", "objects[0].material.file: must be a path inside the submission's folder, not an absolute path"},
+        {"absolute2", "objects[0].material.file: must be a path inside the submission's folder, not an absolute path"},
+        {"dotdot", "objects[0].material.file: must be a path inside the submission's folder, without \"..\""},
+        {"inner_dotdot", "objects[0].material.file: must be a path inside the submission's folder, without \"..\""},
+        {"link_out", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
+        {"folder_link", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
+        {"flat", "objects[0].material.file: a .brdf file is not accepted here: a submission with a .brdf material is "
+                 "a folder NAME/ holding scene.json and the .brdf file"},
+    };
+    for (const auto& [name, reason] : refused) {
+        ASSERT_TRUE(s.count(name)) << name;
+        EXPECT_EQ(s.at(name)["score"], 0) << name;
+        EXPECT_NE(s.at(name)["broken"].get<std::string>().find(reason), std::string::npos)
+            << name << ": " << s.at(name)["broken"];
+    }
+    EXPECT_EQ(s.at("own")["broken"], "");
+    // Not a byte of those files in any output, nor on the console.
+    for (const std::string& text : {read_text(dir.file("out/grades.csv")), read_text(dir.file("out/grades.json")),
+                                    read_text(dir.file("out/report.html")), read_text(dir.file("out/results.json")),
+                                    run.err, run.out}) {
+        EXPECT_EQ(text.find("TOPSECRET"), std::string::npos);
+        EXPECT_EQ(text.find("root:"), std::string::npos);
+    }
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
