@@ -12,6 +12,7 @@
 
 #include "grading/submissions.h"
 #include "image/image.h"
+#include "io/message_text.h"
 #include "io/scene_inputs.h"
 
 #include <nlohmann/json.hpp>
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace m3055 {
@@ -127,6 +129,12 @@ void add_batch_command(CLI::App& app) {
             BatchOptions batch;
             batch.on_written = [&] { ++written; };
             batch.scene_timeout_s = options->scene_timeout;
+            // A render with NaN or infinite pixels: written, exit status unchanged, one line.
+            std::map<const BatchItem*, std::string> warnings;
+            batch.warned = [&](std::size_t, const BatchItem& item, const std::string& warning) {
+                std::cerr << (interactive ? "\r\033[K" : "") << warning << "\n";
+                warnings[&item] = text::one_line(warning.substr(std::string("m3055: warning: ").size()));
+            };
             // Seconds between one item's report and the next: rendering and
             // writing overlap, so this is each item's share of the run's time.
             nlohmann::json report = nlohmann::json::array();
@@ -136,6 +144,7 @@ void add_batch_command(CLI::App& app) {
                 [&](std::size_t, const BatchItem& item, const std::string& error) {
                     const auto now = std::chrono::steady_clock::now();
                     report.push_back(report_entry(item, error, std::chrono::duration<double>(now - last).count()));
+                    report.back()["warning"] = warnings.count(&item) ? warnings[&item] : "";
                     last = now;
                     progress.step(item.out, error);
                 },

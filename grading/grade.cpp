@@ -21,7 +21,7 @@ double image_points_earned(const Assignment& assignment, double off) {
     return std::round(assignment.image_points * (zero - off) / (zero - allowed) * 100.0) / 100.0;
 }
 
-Check image_check(const Assignment& assignment, const Comparison& c) {
+Check image_check(const Assignment& assignment, const Comparison& c, const NonFinite& nonfinite) {
     Check check;
     check.label = "image";
     check.points = assignment.image_points;
@@ -32,6 +32,15 @@ Check image_check(const Assignment& assignment, const Comparison& c) {
     std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
                   100.0 * c.same_share(), off, c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
     check.reason = std::string("image: ") + line;
+    if (nonfinite.pixels > 0) {
+        // Whatever levels the display gave them, values that are not numbers
+        // match nothing: the check fails, with no points, partial or not.
+        check.ok = false;
+        check.earned = 0;
+        check.reason = "image: " + nonfinite_text(nonfinite) +
+                       " in the render (a material gives values that are not numbers): no image points; " + line;
+        return check;
+    }
     if (!check.ok && assignment.image_zero_percent > 0)
         check.reason += ": " + text::format_number(check.earned) + " of " + text::format_number(check.points) +
                         " points (none at " + text::format_number(assignment.image_zero_percent) + " %)";
@@ -74,13 +83,13 @@ LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8
 }
 
 Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,
-                  const LevelImage& render) {
+                  const LevelImage& render, const NonFinite& nonfinite) {
     Grade grade;
     try {
         Thresholds tolerance;
         tolerance.fail = assignment.image_tolerance.fail;
         grade.comparison = compare_levels(reference, render, tolerance);
-        grade.checks.push_back(image_check(assignment, *grade.comparison));
+        grade.checks.push_back(image_check(assignment, *grade.comparison, nonfinite));
     } catch (const CompareError& e) {
         // A student's display of another size or depth is their mistake, not an error of the run.
         grade.checks.push_back({"image", assignment.image_points, 0.0, false, std::string("image: ") + e.what() +
@@ -97,7 +106,8 @@ Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& rend
     renderer.render(scene);
     Rgb8Image display = renderer.read_display();
     LevelImage render = levels_from_png(display, scene.display.bits);  // the levels the display shows
-    Grade grade = grade_scene(assignment, scene, reference, render);
+    const NonFinite nonfinite = may_render_nonfinite(scene) ? count_nonfinite(renderer.read_raw()) : NonFinite{};
+    Grade grade = grade_scene(assignment, scene, reference, render, nonfinite);
     if (render_out) *render_out = std::move(render);
     if (display_out) *display_out = std::move(display);
     return grade;

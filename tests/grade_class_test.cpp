@@ -236,6 +236,74 @@ TEST(GradeClass, BrdfFilesOutsideTheSubmissionAreRefusedUnreadNamingTheField) {
     }
 }
 
+// Copies `brdf` (of tests/data/brdf/) into `folder` and writes a scene.json using it.
+void write_brdf_folder(const std::string& folder, const std::string& brdf) {
+    write_brdf_scene(folder, brdf);
+    fs::copy_file(source_path("tests/data/brdf/" + brdf), folder + "/" + brdf);
+}
+
+// The number N of "N pixels are NaN" in `text`, or -1.
+long nan_pixels_in(const std::string& text) {
+    const std::size_t at = text.find(" pixels are NaN");
+    if (at == std::string::npos) return -1;
+    std::size_t start = at;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(text[start - 1]))) --start;
+    return start == at ? -1 : std::stol(text.substr(start, at - start));
+}
+
+TEST(GradeClass, NonFinitePixelsFailTheImageCheckEvenWhenTheyMatchTheReference) {
+    TempDir dir;
+    // The reference is the NaN scene itself: its levels match, byte for byte,
+    // so only the NaN check can take the image points away.
+    write_brdf_folder(dir.file("ref"), "broken_sqrt.brdf");
+    write_text(dir.file("a.json"), json{{"title", "NaN"},
+                                        {"reference", "ref/scene.json"},
+                                        {"image", {{"points", 40}, {"fail_levels", 1}, {"fail_percent", 1}}},
+                                        {"rules", json::array({{{"rule", "light_count"}, {"equals", 3}, {"points", 10}}})}}
+                                       .dump());
+    write_brdf_folder(dir.file("subs/nan"), "broken_sqrt.brdf");
+    write_brdf_folder(dir.file("subs/fine"), "lambert.brdf");
+    const RunResult run =
+        run_m3055({"grade", dir.file("a.json"), dir.file("subs"), "--out", dir.file("out"), "--allow-brdf"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    const json& nan = s.at("nan");
+    EXPECT_EQ(nan["comparison"]["same_pixels"], nan["comparison"]["pixels"]) << "the levels match the reference";
+    EXPECT_EQ(nan["checks"][0]["ok"], false);
+    EXPECT_EQ(nan["checks"][0]["earned"], 0);
+    EXPECT_EQ(nan["score"], 10);
+    const std::string reason = nan["checks"][0]["reason"];
+    const long count = nan_pixels_in(reason);
+    EXPECT_GT(count, 100) << reason;
+    EXPECT_NE(reason.find("in the render (a material gives values that are not numbers): no image points"),
+              std::string::npos)
+        << reason;
+    EXPECT_EQ(s.at("fine")["checks"][0]["reason"].get<std::string>().find("NaN"), std::string::npos);
+
+    // render and batch warn with the same count, write the image and exit 0.
+    const RunResult render = run_m3055({"render", "--scene", dir.file("subs/nan/scene.json"), "--out", dir.file("r.png")});
+    EXPECT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_TRUE(file_exists(dir.file("r.png")));
+    EXPECT_NE(render.err.find("m3055: warning: "), std::string::npos) << render.err;
+    EXPECT_EQ(nan_pixels_in(render.err), count) << render.err;
+    const RunResult fine = run_m3055({"render", "--scene", dir.file("subs/fine/scene.json"), "--out", dir.file("f.png")});
+    EXPECT_EQ(fine.exit_code, 0) << fine.err;
+    EXPECT_EQ(fine.err.find("warning"), std::string::npos) << fine.err;
+    fs::copy_file(dir.file("subs/nan/scene.json"), dir.file("subs/nan/nan.json"));
+    fs::copy_file(dir.file("subs/fine/scene.json"), dir.file("subs/fine/fine.json"));
+    const RunResult batch = run_m3055({"batch", dir.file("subs/nan/nan.json"), dir.file("subs/fine/fine.json"),
+                                       "--out", dir.file("b"), "--report", dir.file("b.json"), "--allow-brdf"});
+    EXPECT_EQ(batch.exit_code, 0) << batch.err;
+    EXPECT_EQ(nan_pixels_in(batch.err), count) << batch.err;
+    const json report = read_json(dir.file("b.json"));
+    ASSERT_EQ(report.size(), 2u);
+    for (const json& entry : report) {
+        EXPECT_EQ(entry["status"], "ok");
+        const bool is_nan = entry["scene"].get<std::string>().find("/nan/") != std::string::npos;
+        EXPECT_EQ(nan_pixels_in(entry["warning"]), is_nan ? count : -1) << entry;
+    }
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
