@@ -25,7 +25,8 @@ namespace {
 struct GradeOptions {
     std::string assignment, submissions, out, shard = "1/1", gradescope, backend = "auto";
     std::vector<std::string> merge;
-    bool allow_brdf = false;
+    std::string roster;
+    bool allow_brdf = false, follow_symlinks = false;
 };
 
 void print_grade(const grading::Grade& grade) {
@@ -34,8 +35,25 @@ void print_grade(const grading::Grade& grade) {
     // one line of valid UTF-8, at most 4 x 255 bytes).
     std::fprintf(stderr, "%s: %s / %s %s%s%s\n", grade.student.c_str(),
                  text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
-                 grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
+                 grade.missing ? "missing" : grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
                  reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+    for (const std::string& note : grade.notes)
+        std::fprintf(stderr, "  note: %s\n", text::one_line(note).c_str());
+}
+
+// What the folder held that was not graded, and the identical submissions: one line each.
+void print_folder(const nlohmann::json& folder) {
+    const std::size_t ignored = folder["ignored"].size();
+    if (ignored)
+        std::fprintf(stderr, "m3055: not graded: %zu entr%s of the folder\n", ignored, ignored == 1 ? "y" : "ies");
+    for (const auto& entry : folder["ignored"])
+        std::fprintf(stderr, "  %s: %s\n", entry["name"].get<std::string>().c_str(),
+                     entry["why"].get<std::string>().c_str());
+    for (const auto& group : folder["identical"]) {
+        std::string names;
+        for (const auto& name : group) names += (names.empty() ? "" : ", ") + name.get<std::string>();
+        std::fprintf(stderr, "m3055: byte-identical submissions: %s\n", text::one_line(names, 1000).c_str());
+    }
 }
 
 void run_grade(const GradeOptions& options) {
@@ -52,6 +70,8 @@ void run_grade(const GradeOptions& options) {
     run.shard = grading::parse_shard(options.shard);
     run.gradescope = options.gradescope;
     run.graded = print_grade;
+    run.class_options.roster = options.roster;
+    run.class_options.follow_symlinks = options.follow_symlinks;
     std::unique_ptr<Capture> capture;  // made when the first scene is drawn
     const Backend backend = parse_backend(options.backend);
     const auto report = grading::run_grading(
@@ -61,11 +81,20 @@ void run_grade(const GradeOptions& options) {
             return capture->renderer();
         },
         run);
-    std::size_t passed = 0;
-    for (const auto& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
-    std::fprintf(stderr, "m3055: graded %zu submission%s, %zu passed; wrote %s\n", report.students.size(),
-                 report.students.size() == 1 ? "" : "s", passed,
-                 text::quote_name(options.out + "/report.html").c_str());
+    print_folder(report.folder);
+    std::size_t passed = 0, missing = 0, refused = 0;
+    for (const auto& s : report.students) {
+        passed += s["passed"].get<bool>() ? 1 : 0;
+        missing += s["missing"].get<bool>() ? 1 : 0;
+        refused += !s["missing"].get<bool>() && !s["broken"].get<std::string>().empty() ? 1 : 0;
+    }
+    const std::size_t submitted = report.students.size() - missing;
+    std::string line = "m3055: graded " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
+    if (refused) line += " (" + std::to_string(refused) + " refused)";
+    if (options.shard != "1/1") line += " of shard " + options.shard;
+    line += ", " + std::to_string(passed) + " passed";
+    if (missing) line += "; " + std::to_string(missing) + " on the roster with no submission";
+    std::fprintf(stderr, "%s; wrote %s\n", line.c_str(), text::quote_name(options.out + "/report.html").c_str());
 }
 
 }  // namespace
@@ -84,6 +113,11 @@ void add_grade_command(CLI::App& app) {
     command->add_option("--gradescope", options->gradescope, "Also write a Gradescope-style results.json here");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->add_option("--roster", options->roster,
+                        "File of the class's names, one a line: a name with no submission gets a row (no submission), "
+                        "a submission not on it a note");
+    command->add_flag("--follow-symlinks", options->follow_symlinks,
+                      "Grade submissions that are symbolic links staying inside the folder (refused otherwise)");
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
     command->callback([options]() {

@@ -26,6 +26,8 @@ struct Grade {
     std::optional<Comparison> comparison;
     std::string screenshot;     // the screenshot check's line when the student sent one, or ""
     bool screenshot_ok = true;
+    bool missing = false;            // on the roster, nothing submitted
+    std::vector<std::string> notes;  // information, no penalty (submissions.h: Submission::notes)
     // One line each: the broken reason, or the reason of each check that
     // failed and a mismatched screenshot; empty for a perfect submission.
     std::vector<std::string> reasons() const;

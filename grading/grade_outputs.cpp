@@ -45,7 +45,8 @@ json grade_json(const Grade& g, const std::string& image_stem) {
     for (const Check& c : g.checks)
         checks.push_back({{"label", c.label}, {"points", c.points}, {"earned", c.earned}, {"ok", c.ok}, {"reason", c.reason}});
     json out = {{"student", g.student}, {"score", g.score},   {"max", g.max},       {"passed", g.passed},
-                {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot}};
+                {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot},
+                {"missing", g.missing},   {"notes", g.notes}};
     out["comparison"] = g.comparison ? to_json(*g.comparison) : json();
     out["images"] =
         image_stem.empty() ? json() : json{{"render", image_stem + ".png"}, {"diff", image_stem + "-diff.png"}};
@@ -53,16 +54,21 @@ json grade_json(const Grade& g, const std::string& image_stem) {
 }
 
 std::string grades_csv(const GradeReport& report) {
-    std::string out = "student,score,max,result,reasons\n";
-    for (const json& s : report.students)
+    std::string out = "student,score,max,result,reasons,notes\n";
+    for (const json& s : report.students) {
+        std::string notes;
+        if (s.contains("notes"))
+            for (const json& note : s["notes"]) notes += (notes.empty() ? "" : " | ") + note.get<std::string>();
         out += csv_field(s["student"].get<std::string>()) + "," + number_text(s["score"].get<double>()) + "," +
-               number_text(s["max"].get<double>()) + "," + (s["passed"].get<bool>() ? "pass" : "fail") + "," +
-               csv_field(joined_reasons(s)) + "\n";
+               number_text(s["max"].get<double>()) + "," +
+               (s.value("missing", false) ? "missing" : s["passed"].get<bool>() ? "pass" : "fail") + "," +
+               csv_field(joined_reasons(s)) + "," + csv_field(notes) + "\n";
+    }
     return out;
 }
 
 std::string grades_json(const GradeReport& report) {
-    json out = {{"assignment", report.assignment}, {"students", report.students}};
+    json out = {{"assignment", report.assignment}, {"folder", report.folder}, {"students", report.students}};
     // Every name and reason is valid UTF-8 already (submissions.h: shown_name,
     // text::escape); `replace` only makes sure a slip could never cost the
     // class its tables.

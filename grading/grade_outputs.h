@@ -19,7 +19,10 @@ namespace m3055::grading {
 
 struct GradeReport {
     nlohmann::json assignment;             // title, max, pass, reference image name
-    std::vector<nlohmann::json> students;  // sorted by "student"
+    std::vector<nlohmann::json> students;  // in the class's order (bytewise by file name)
+    // The whole class folder's, in every shard: "ignored" [{name, why}] and
+    // "identical" [[student, ...], ...] (submissions.h: ClassFolder).
+    nlohmann::json folder = {{"ignored", nlohmann::json::array()}, {"identical", nlohmann::json::array()}};
 };
 
 nlohmann::json assignment_json(const Assignment& assignment);

@@ -65,9 +65,23 @@ struct Graded {
     std::size_t bytes = 0;  // what write_images holds until it has run
 };
 
-// Grades one submission: score 0 and its one-line reason for whatever is wrong with it.
+Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
+                              const std::function<Renderer&()>& renderer, const LevelImage& reference,
+                              const std::string& out_dir);
+
+// Grades one submission: score 0 and its one-line reason for whatever is
+// wrong with it; its notes (roster, links, identical files) carried over.
 Graded grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
                         const LevelImage& reference, const std::string& out_dir) {
+    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir);
+    graded.grade.missing = s.missing;
+    graded.grade.notes = s.notes;
+    return graded;
+}
+
+Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
+                              const std::function<Renderer&()>& renderer, const LevelImage& reference,
+                              const std::string& out_dir) {
     if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
     try {
         const auto start = std::chrono::steady_clock::now();
@@ -138,7 +152,8 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     std::error_code error;
     if (fs::equivalent(submissions_dir, options.out_dir, error))
         throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
-    std::vector<Submission> all = find_submissions(submissions_dir);
+    ClassFolder folder = read_class(submissions_dir, options.class_options);
+    std::vector<Submission>& all = folder.submissions;
     // An --out folder inside the submissions folder (subs/grades/) is not a student.
     all.erase(std::remove_if(all.begin(), all.end(),
                              [&](const Submission& s) {
@@ -159,6 +174,8 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
 
     GradeReport report;
     report.assignment = assignment_json(assignment);
+    for (const Ignored& entry : folder.ignored) report.folder["ignored"].push_back({{"name", entry.name}, {"why", entry.why}});
+    report.folder["identical"] = folder.identical;
     if (options.shard.n > 1)
         report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
     // A few writer jobs in flight: images are encoded and written (each file
@@ -232,6 +249,9 @@ std::vector<std::size_t> check_shards(const std::vector<json>& docs, const std::
         if (plain != first)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another assignment than " +
                                      text::quote_name(dirs[0]));
+        if (docs[i].value("folder", json()) != docs[0].value("folder", json()))
+            throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another class folder than " +
+                                     text::quote_name(dirs[0]) + " (what it ignored or found identical differs)");
     }
     std::vector<std::size_t> order;
     for (int k = 1; k <= n; ++k) {
@@ -265,6 +285,7 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
     GradeReport report;
     report.assignment = docs[0]["assignment"];
     report.assignment.erase("shard");
+    if (docs[0].contains("folder")) report.folder = docs[0]["folder"];
     std::map<std::string, std::string> image_dir;  // image file name -> the shard folder holding it
     image_dir["reference.png"] = shard_dirs[0];
     // Back in the class's order (bytewise by file name, which grades.json

@@ -39,7 +39,7 @@ th,td{border:1px solid #999;padding:4px 6px;vertical-align:top;text-align:left}
 th{background:#eee;cursor:pointer}
 td.num{text-align:right;white-space:nowrap}
 img{width:256px;image-rendering:pixelated;display:block}
-.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}
+.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
 @media print{th{cursor:auto}tr{break-inside:avoid}img{width:200px}body{margin:0}}
 </style>
@@ -69,8 +69,8 @@ std::string student_row(const json& s,
     std::string row = "<tr><td data-sort=\"" + escape_html(name) + "\">" + escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
-    row += std::string("<td data-sort=\"") + (passed ? "pass" : "fail") + "\" class=\"" + (passed ? "pass" : "fail") +
-           "\">" + (passed ? "pass" : "fail") + "</td>";
+    const char* result = s.value("missing", false) ? "missing" : passed ? "pass" : "fail";
+    row += std::string("<td data-sort=\"") + result + "\" class=\"" + (passed ? "pass" : "fail") + "\">" + result + "</td>";
     std::vector<std::uint8_t> render, diff;
     if (!s["images"].is_null()) {
         render = image_bytes(s["images"]["render"].get<std::string>());
@@ -80,7 +80,32 @@ std::string student_row(const json& s,
     row += "<td data-sort=\"\"><ul>";
     for (const json& reason : s["reasons"]) row += "<li>" + escape_html(reason.get<std::string>()) + "</li>";
     if (s["reasons"].empty()) row += "<li>all checks passed</li>";
+    if (s.contains("notes"))
+        for (const json& note : s["notes"]) row += "<li class=\"note\">note: " + escape_html(note.get<std::string>()) + "</li>";
     return row + "</ul></td></tr>\n";
+}
+
+// What the class folder held that was not graded, and byte-identical submissions.
+std::string folder_sections(const json& folder) {
+    std::string out;
+    if (!folder["ignored"].empty()) {
+        out += "<details id=\"ignored\" open><summary>Not graded: " + std::to_string(folder["ignored"].size()) +
+               (folder["ignored"].size() == 1 ? " entry" : " entries") + " of the submissions folder</summary><ul>\n";
+        for (const json& entry : folder["ignored"])
+            out += "<li><code>" + escape_html(entry["name"].get<std::string>()) + "</code>: " +
+                   escape_html(entry["why"].get<std::string>()) + "</li>\n";
+        out += "</ul></details>\n";
+    }
+    if (!folder["identical"].empty()) {
+        out += "<details id=\"identical\" open><summary>Byte-identical submissions (information, no penalty)</summary><ul>\n";
+        for (const json& group : folder["identical"]) {
+            std::string names;
+            for (const json& name : group) names += (names.empty() ? "" : ", ") + escape_html(name.get<std::string>());
+            out += "<li>" + names + "</li>\n";
+        }
+        out += "</ul></details>\n";
+    }
+    return out;
 }
 
 }  // namespace
@@ -100,6 +125,7 @@ std::string report_html(const GradeReport& report,
     if (!reference.empty())
         page += "<figure><img alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
                 "\"><figcaption>The reference</figcaption></figure>\n";
+    page += folder_sections(report.folder);
     page += "<table id=\"grades\"><thead><tr><th data-col=\"0\">Student</th><th data-col=\"1\">Score</th>"
             "<th data-col=\"2\">Result</th><th>Render</th><th>Levels off the reference</th><th>Reasons</th>"
             "</tr></thead><tbody>\n";

@@ -32,6 +32,12 @@ std::map<std::string, json> by_student(const json& grades) {
 // alice's full-marks scene and dave's metal_blinn one, under other names.
 std::string good_scene() { return read_text(kSubmissions + "/alice.json"); }
 std::string weaker_scene() { return read_text(kSubmissions + "/dave.json"); }
+// alice's scene with another fill intensity: a file of its own, still full marks.
+std::string good_scene_variant(int i) {
+    json scene = json::parse(good_scene());
+    scene["lights"][1]["intensity"] = scene["lights"][1]["intensity"].get<double>() + 0.001 * (i + 1);
+    return scene.dump();
+}
 
 // The odd names of issue 19 item 1, as bytes, with the text every output shows for them.
 struct OddName {
@@ -147,8 +153,8 @@ TEST(GradeClass, MergeRefusesShardsWhoseSizesCannotBeOfOneClass) {
     TempDir dir;
     fs::create_directories(dir.file("big"));
     fs::create_directories(dir.file("small"));
-    for (const char* name : {"a", "b", "c", "d", "e", "f"}) write_text(dir.file(std::string("big/") + name + ".json"), good_scene());
-    for (const char* name : {"a", "b"}) write_text(dir.file(std::string("small/") + name + ".json"), good_scene());
+    for (int i = 0; i < 6; ++i) write_text(dir.file("big/" + std::string(1, char('a' + i)) + ".json"), good_scene_variant(i));
+    for (int i = 0; i < 2; ++i) write_text(dir.file("small/" + std::string(1, char('a' + i)) + ".json"), good_scene_variant(i));
     ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("big"), "--out", dir.file("s1"), "--shard", "1/2"}).exit_code, 0);
     ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("small"), "--out", dir.file("s2"), "--shard", "2/2"}).exit_code, 0);
     const RunResult merged = run_m3055({"grade", "--merge", dir.file("s1"), dir.file("s2"), "--out", dir.file("m")});
@@ -302,6 +308,113 @@ TEST(GradeClass, NonFinitePixelsFailTheImageCheckEvenWhenTheyMatchTheReference) 
         const bool is_nan = entry["scene"].get<std::string>().find("/nan/") != std::string::npos;
         EXPECT_EQ(nan_pixels_in(entry["warning"]), is_nan ? count : -1) << entry;
     }
+}
+
+// A class folder with what a real class hands in beside its scenes.
+struct StrayClass {
+    TempDir dir;
+    std::string subs = dir.file("subs");
+    StrayClass() {
+        fs::create_directories(subs);
+        fs::create_directories(dir.file("outside"));
+        write_text(subs + "/alice.json", good_scene());
+        write_text(subs + "/copycat.json", good_scene());       // alice's file, byte for byte
+        write_text(subs + "/Upper.JSON", weaker_scene());       // from Windows: graded as "Upper"
+        write_text(subs + "/notes.json.txt", good_scene());     // not a .json
+        write_text(subs + "/trailing.json ", good_scene());     // a space after .json
+        write_text(subs + "/.DS_Store", "junk");
+        write_text(dir.file("outside/o.json"), good_scene());
+        fs::create_symlink("../outside/o.json", subs + "/linkout.json");
+        fs::create_symlink("alice.json", subs + "/linkin.json");
+        fs::create_symlink("nowhere", subs + "/dangling");
+        fs::create_directories(subs + "/folderlink");
+        fs::create_symlink("../../outside/o.json", subs + "/folderlink/scene.json");
+        fs::create_directories(subs + "/pat");
+        write_text(subs + "/pat/scene.json", good_scene());
+        write_text(subs + "/pat.json", good_scene());
+    }
+};
+
+TEST(GradeClass, LinksAreRefusedUnlessFollowedInsideAndStraysAreListed) {
+    StrayClass c;
+    const RunResult run = run_m3055({"grade", kAssignment, c.subs, "--out", c.dir.file("out")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const json grades = read_json(c.dir.file("out/grades.json"));
+    const auto s = by_student(grades);
+    // Rows: every .json in any case, every folder; pat once.
+    std::vector<std::string> names;
+    for (const json& student : grades["students"]) names.push_back(student["student"]);
+    EXPECT_EQ(names, (std::vector<std::string>{"Upper", "alice", "copycat", "folderlink", "linkin", "linkout", "pat"}));
+    EXPECT_EQ(s.at("Upper")["score"], 50);
+    for (const char* link : {"linkin", "linkout"})
+        EXPECT_EQ(s.at(link)["broken"], std::string(link) + ".json: a symbolic link: refused (m3055 grade "
+                                          "--follow-symlinks grades links that stay inside the submissions folder)");
+    EXPECT_NE(s.at("folderlink")["broken"].get<std::string>().find("folderlink/scene.json: a symbolic link: refused"),
+              std::string::npos);
+    EXPECT_EQ(s.at("pat")["broken"], "pat: submitted twice (as a file and as a folder): one submission a student");
+    // What was not graded, listed with why, in grades.json, the report and on the console.
+    const json expected_ignored = json::parse(R"j([
+        {"name": ".DS_Store", "why": "hidden (its name starts with \".\")"},
+        {"name": "dangling", "why": "a broken symbolic link"},
+        {"name": "notes.json.txt", "why": "not a .json file nor a folder: the name does not end in .json"},
+        {"name": "trailing.json ", "why": "not a .json file nor a folder: the name does not end in .json"}])j");
+    EXPECT_EQ(grades["folder"]["ignored"], expected_ignored);
+    const std::string html = read_text(c.dir.file("out/report.html"));
+    for (const json& entry : expected_ignored) {
+        EXPECT_NE(html.find("<code>" + entry["name"].get<std::string>() + "</code>"), std::string::npos) << entry;
+        EXPECT_NE(run.err.find("  " + entry["name"].get<std::string>() + ": "), std::string::npos) << run.err;
+    }
+    EXPECT_NE(run.err.find("not graded: 4 entries of the folder"), std::string::npos) << run.err;
+    // Identical files: listed together, no penalty.
+    EXPECT_EQ(grades["folder"]["identical"], json::parse(R"([["alice", "copycat"]])"));
+    EXPECT_EQ(s.at("copycat")["score"], 100);
+    EXPECT_EQ(s.at("copycat")["notes"], json::parse(R"(["its scene file is byte-identical to that of alice"])"));
+    EXPECT_NE(html.find("Byte-identical submissions"), std::string::npos);
+    EXPECT_NE(run.err.find("byte-identical submissions: alice, copycat"), std::string::npos) << run.err;
+
+    // --follow-symlinks: a link inside is graded with a note, one out still refused.
+    const RunResult follow = run_m3055({"grade", kAssignment, c.subs, "--out", c.dir.file("follow"), "--follow-symlinks"});
+    ASSERT_EQ(follow.exit_code, 0) << follow.err;
+    const auto f = by_student(read_json(c.dir.file("follow/grades.json")));
+    EXPECT_EQ(f.at("linkin")["score"], 100);
+    EXPECT_EQ(f.at("linkin")["notes"][0], "linkin.json is a symbolic link to alice.json");
+    EXPECT_EQ(f.at("linkout")["broken"], "linkout.json: a symbolic link out of the submissions folder: refused");
+    EXPECT_EQ(f.at("folderlink")["broken"], "folderlink/scene.json: a symbolic link out of the submissions folder: refused");
+}
+
+TEST(GradeClass, RosterGivesMissingStudentsARowAndFlagsStrangers) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/alice.json"), good_scene());
+    write_text(dir.file("subs/mallory.json"), good_scene());
+    write_text(dir.file("subs/caf\xE9.json"), weaker_scene());
+    // Saved on Windows: CRLF, a blank line, a Latin-1 name.
+    write_text(dir.file("roster.txt"), "alice\r\nzed\r\n\r\ncaf\xE9\r\n");
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out"), "--roster",
+                                     dir.file("roster.txt"), "--gradescope", dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const json grades = read_json(dir.file("out/grades.json"));
+    const auto s = by_student(grades);
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_EQ(s.at("zed")["missing"], true);
+    EXPECT_EQ(s.at("zed")["score"], 0);
+    EXPECT_EQ(s.at("zed")["reasons"], json::parse(R"(["no submission"])"));
+    EXPECT_EQ(s.at("mallory")["score"], 100);
+    EXPECT_EQ(s.at("mallory")["notes"][0], "not on the roster");
+    EXPECT_EQ(s.at("alice")["notes"], json::parse(R"(["its scene file is byte-identical to that of mallory"])"));
+    EXPECT_EQ(s.at("caf\\xE9")["missing"], false);
+    EXPECT_EQ(s.at("caf\\xE9")["score"], 50);
+    const std::string csv = read_text(dir.file("out/grades.csv"));
+    EXPECT_NE(csv.find("\nzed,0,100,missing,no submission,\n"), std::string::npos) << csv;
+    EXPECT_NE(run.err.find("graded 3 submissions, 2 passed; 1 on the roster with no submission"), std::string::npos)
+        << run.err;
+    // A roster that is not one: one line naming the file and the line, nothing written.
+    write_text(dir.file("bad.txt"), "alice\nbob\nalice\n");
+    const RunResult bad = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("bad"), "--roster",
+                                     dir.file("bad.txt")});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("bad.txt:3: \"alice\" is on the roster twice"), std::string::npos) << bad.err;
+    EXPECT_FALSE(file_exists(dir.file("bad/grades.json")));
 }
 
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {

@@ -99,8 +99,8 @@ TEST(Grade, WorkedAssignmentScores) {
     ASSERT_EQ(render.exit_code, 0);
     EXPECT_EQ(read_text(out.file("r.png")), read_text(out.file("alice.png")));
     const std::string csv = read_text(out.file("grades.csv"));
-    EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max,result,reasons");
-    EXPECT_NE(csv.find("\nalice,100,100,pass,\n"), std::string::npos) << csv;
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max,result,reasons,notes");
+    EXPECT_NE(csv.find("\nalice,100,100,pass,,\n"), std::string::npos) << csv;
     EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
 }
 
