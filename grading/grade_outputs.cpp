@@ -49,7 +49,7 @@ json grade_json(const Grade& g, const std::string& image_stem) {
                 {"missing", g.missing},   {"notes", g.notes}};
     out["comparison"] = g.comparison ? to_json(*g.comparison) : json();
     out["images"] =
-        image_stem.empty() ? json() : json{{"render", image_stem + ".png"}, {"diff", image_stem + "-diff.png"}};
+        image_stem.empty() ? json() : json{{"render", "students/" + image_stem + ".png"}, {"diff", "diffs/" + image_stem + ".png"}};
     return out;
 }
 

@@ -26,8 +26,8 @@ struct GradeReport {
 };
 
 nlohmann::json assignment_json(const Assignment& assignment);
-// `image_stem`: the student's images STEM.png and STEM-diff.png were written
-// (submissions.h: output_stem), or "" when none were.
+// `image_stem`: the student's images students/STEM.png and diffs/STEM.png
+// were written (submissions.h: output_stem), or "" when none were.
 nlohmann::json grade_json(const Grade& grade, const std::string& image_stem);
 
 std::string grades_csv(const GradeReport& report);

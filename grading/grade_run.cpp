@@ -28,7 +28,13 @@ using nlohmann::json;
 
 namespace {
 
+std::string join_path(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+
 constexpr const char* kTables[] = {"grades.csv", "grades.json", "report.html"};
+// The students' own files, each in a folder of its kind, named after the
+// student alone (submissions.h: output_stem), so no student's name can clash
+// with an output of the run or with another student's file.
+constexpr const char* kStudentFolders[] = {"students", "diffs"};
 
 void prepare_out_dir(const std::string& out_dir) {
     std::error_code error;
@@ -36,12 +42,33 @@ void prepare_out_dir(const std::string& out_dir) {
     if (!fs::is_directory(out_dir, error))
         throw std::runtime_error(text::quote_name(out_dir) + ": --out: cannot make the output folder: " +
                                  (error ? error.message() : "not a folder"));
+    for (const char* folder : kStudentFolders) {
+        fs::create_directories(fs::path(out_dir) / folder, error);
+        if (!fs::is_directory(fs::path(out_dir) / folder, error))
+            throw std::runtime_error(text::quote_name(join_path(out_dir, folder)) +
+                                     ": --out: cannot make the output folder: " + (error ? error.message() : "not a folder"));
+    }
     // Tables of an earlier run go first: after a run that was stopped there
     // are none, rather than old ones beside new images.
     for (const char* table : kTables) fs::remove(fs::path(out_dir) / table, error);
 }
 
-std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+std::string join(const std::string& dir, const std::string& name) { return join_path(dir, name); }
+
+// The folder holds one run's output: the students' images of an earlier run
+// whose students are not in this one go (only .png files in students/ and
+// diffs/, the run's own folders: nothing else of --out is touched).
+void remove_stale_images(const std::string& out_dir, const std::set<std::string>& written) {
+    for (const char* folder : kStudentFolders) {
+        std::error_code error;
+        for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(out_dir) / folder, error)) {
+            const std::string name = std::string(folder) + "/" + entry.path().filename().string();
+            std::error_code type_error;
+            if (entry.path().extension() == ".png" && entry.is_regular_file(type_error) && !written.count(name))
+                fs::remove(entry.path(), type_error);
+        }
+    }
+}
 
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -118,7 +145,8 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
             }
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
-        const std::string png = join(out_dir, s.file_stem + ".png"), diff_png = join(out_dir, s.file_stem + "-diff.png");
+        const std::string png = join(out_dir, "students/" + s.file_stem + ".png"),
+                          diff_png = join(out_dir, "diffs/" + s.file_stem + ".png");
         const std::size_t bytes = render->levels.size() * 3;  // levels, display and diff while encoding
         return {std::move(grade),
                 [render, display, diff, png, diff_png, &reference]() {
@@ -210,6 +238,12 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
         if (options.graded) options.graded(grade);
     }
     for (auto& job : writing) job.done.get();
+    std::set<std::string> written;
+    for (const json& student : report.students)
+        if (student["images"].is_object())
+            for (const char* key : {"render", "diff"})
+                if (!student["images"][key].get<std::string>().empty()) written.insert(student["images"][key].get<std::string>());
+    remove_stale_images(options.out_dir, written);
     write_tables(options.out_dir, report, options.gradescope,
                  [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
     return report;
@@ -303,8 +337,10 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
         if (s["images"].is_object())
             for (const char* key : {"render", "diff"})
                 if (const std::string name = s["images"][key].get<std::string>(); !name.empty()) {
-                    // A file of the shard's folder, never a path out of it.
-                    if (name.find('/') != std::string::npos || name == "." || name == "..")
+                    // A file of the shard's students/ or diffs/, never a path out of them.
+                    const std::string folder = std::string(key) == "render" ? "students/" : "diffs/";
+                    const std::string file = name.compare(0, folder.size(), folder) == 0 ? name.substr(folder.size()) : "";
+                    if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..")
                         throw std::runtime_error(text::quote_name(shard_dirs[shard] + "/grades.json") +
                                                  ": images." + key + ": not a file name: " + text::quote(name));
                     image_dir[name] = shard_dirs[shard];
@@ -330,6 +366,9 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
             }
         }));
     for (auto& copier : copiers) copier.get();
+    std::set<std::string> written;
+    for (const auto& [name, dir] : image_dir) written.insert(name);
+    remove_stale_images(out_dir, written);
     write_tables(out_dir, report, gradescope, [&](const std::string& name) {
         return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(out_dir, name));
     });

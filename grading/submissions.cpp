@@ -54,10 +54,6 @@ std::string with_digest(const std::string& stem, std::string_view name) {
     return stem + "~" + digest_hex(name);
 }
 
-bool is_reserved(const std::string& name) {
-    return name == "reference" || name == "grades" || name == "report" || name == "results";
-}
-
 bool ends_with_json(const std::string& name) {
     if (name.size() <= 5) return false;
     std::string ext = name.substr(name.size() - 5);
@@ -302,20 +298,6 @@ ClassFolder read_class(const std::string& folder, const ClassOptions& options) {
     for (Submission& s : all)
         if (folded[fold(s.file_stem)] > 1 && s.file_stem.find('~') == std::string::npos)
             s.file_stem = with_digest(s.file_stem, s.name);
-    std::map<std::string, std::string> stems;  // folded stem -> its name
-    for (const Submission& s : all) stems[fold(s.file_stem)] = s.name;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        Submission& s = all[i];
-        if (!s.problem.empty()) continue;
-        const std::string shown = text::quote_name(s.name);
-        if (is_reserved(fold(s.file_stem)))
-            s.problem = shown + ": the name is reserved for an output of grade; rename the submission";
-        else if (const std::string stem = fold(s.file_stem);
-                 stem.size() > 5 && stem.compare(stem.size() - 5, 5, "-diff") == 0 &&
-                 stems.count(stem.substr(0, stem.size() - 5)))
-            s.problem = shown + ": its image would overwrite the difference image of " +
-                        text::quote_name(stems[stem.substr(0, stem.size() - 5)]) + "; rename the submission";
-    }
     out.identical = find_identical(all);
     std::sort(out.ignored.begin(), out.ignored.end(), [](const Ignored& a, const Ignored& b) { return a.name < b.name; });
     for (Ignored& entry : out.ignored) entry.name = shown_name(entry.name);

@@ -68,11 +68,10 @@ std::string output_stem(std::string_view name);
 // name as a file and as a folder (pat.json, pat/) or in two cases of the
 // extension is one submission with a `problem`. With a roster, each name on it
 // without a submission gets one (`missing`, "no submission") and a submission
-// not on it a note. Names the outputs reserve (reference, grades, report,
-// results) or that would clash with another's difference image (x-diff
-// beside x) get a `problem`. Stems that differ only by ASCII case (alice,
-// Alice: one file on a case-insensitive disk) get "~" and a digest of the name
-// appended. Throws std::runtime_error (one line) when the folder or the
+// not on it a note. No name is refused for an output's sake: the students'
+// files have folders of their own (grade_outputs.h: students/, diffs/). Stems
+// that differ only by ASCII case (alice, Alice: one file on a case-insensitive
+// disk) get "~" and a digest of the name appended. Throws std::runtime_error (one line) when the folder or the
 // roster cannot be read, or the roster is malformed.
 ClassFolder read_class(const std::string& folder, const ClassOptions& options = {});
 // read_class(folder).submissions.

@@ -82,9 +82,13 @@ TEST(GradeClass, EveryFileNameGetsItsRowEscapedTheSameInEveryOutput) {
         const std::string render = student["images"]["render"], diff = student["images"]["diff"];
         EXPECT_TRUE(file_exists(dir.file("out/" + render))) << render;
         EXPECT_TRUE(file_exists(dir.file("out/" + diff))) << diff;
-        EXPECT_LE(diff.size(), 255u);
-        EXPECT_EQ(render.find_first_of("\n\\ /"), std::string::npos) << render;
-        std::string folded = render;
+        ASSERT_EQ(render.compare(0, 9, "students/"), 0) << render;
+        ASSERT_EQ(diff.compare(0, 6, "diffs/"), 0) << diff;
+        const std::string file = render.substr(9);
+        EXPECT_EQ(diff.substr(6), file);
+        EXPECT_LE(file.size(), 255u);
+        EXPECT_EQ(file.find_first_of("\n\\ /"), std::string::npos) << file;
+        std::string folded = file;
         for (char& c : folded) c = char(std::tolower(static_cast<unsigned char>(c)));
         EXPECT_TRUE(images.insert(folded).second) << "two students' images differ only by case: " << render;
     }
@@ -415,6 +419,49 @@ TEST(GradeClass, RosterGivesMissingStudentsARowAndFlagsStrangers) {
     EXPECT_EQ(bad.exit_code, 1);
     EXPECT_NE(bad.err.find("bad.txt:3: \"alice\" is on the roster twice"), std::string::npos) << bad.err;
     EXPECT_FALSE(file_exists(dir.file("bad/grades.json")));
+}
+
+TEST(GradeClass, NoStudentNameClashesWithAnOutputOrAnotherStudent) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    const std::vector<std::string> names = {"reference", "grades", "report", "results", "students", "diffs",
+                                            "alice",     "alice-diff", "feedback"};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        write_text(dir.file("subs/" + names[i] + ".json"), good_scene_variant(int(i)));
+    write_text(dir.file("subs/bob.json"), weaker_scene());
+    const RunResult run = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out"), "--gradescope",
+                                     dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    ASSERT_EQ(s.size(), names.size() + 1);
+    for (const std::string& name : names) {
+        EXPECT_EQ(s.at(name)["score"], 100) << name << ": " << s.at(name)["broken"];
+        // Its render is its own scene's, not overwritten by anything else of the run.
+        ASSERT_EQ(run_m3055({"render", "--scene", dir.file("subs/" + name + ".json"), "--out", dir.file("r.png")}).exit_code, 0);
+        EXPECT_EQ(read_text(dir.file("out/students/" + name + ".png")), read_text(dir.file("r.png"))) << name;
+    }
+    EXPECT_TRUE(file_exists(dir.file("out/reference.png")));
+    EXPECT_TRUE(file_exists(dir.file("out/diffs/alice.png")));
+    EXPECT_NE(read_text(dir.file("out/diffs/bob.png")), read_text(dir.file("out/diffs/alice.png")));
+    EXPECT_EQ(read_json(dir.file("out/results.json"))["tests"].size(), (names.size() + 1) * 7);
+}
+
+TEST(GradeClass, ImagesOfStudentsNoLongerInTheClassAreRemovedAndNothingElse) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/alice.json"), good_scene());
+    write_text(dir.file("subs/leaver.json"), weaker_scene());
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    ASSERT_TRUE(file_exists(dir.file("out/students/leaver.png")));
+    write_text(dir.file("out/notes.txt"), "the teacher's");
+    write_text(dir.file("out/students/readme.txt"), "the teacher's too");
+    fs::remove(dir.file("subs/leaver.json"));
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    EXPECT_FALSE(file_exists(dir.file("out/students/leaver.png")));
+    EXPECT_FALSE(file_exists(dir.file("out/diffs/leaver.png")));
+    EXPECT_TRUE(file_exists(dir.file("out/students/alice.png")));
+    EXPECT_TRUE(file_exists(dir.file("out/notes.txt")));
+    EXPECT_TRUE(file_exists(dir.file("out/students/readme.txt")));
 }
 
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {

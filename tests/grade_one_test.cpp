@@ -41,9 +41,9 @@ TEST(GradeOne, ScoresAsGradeDoesWithTheCallersRenderer) {
         EXPECT_EQ(mine["score"], student["score"]) << name;
         EXPECT_EQ(mine["checks"], student["checks"]) << name;
         EXPECT_EQ(mine["comparison"], student["comparison"]) << name;
-        // The render is the one grade wrote as NAME.png.
+        // The render is the one grade wrote as students/NAME.png.
         const std::vector<std::uint8_t> png = encode_png(grading::display_of(render));
-        EXPECT_EQ(test::read_text(out.file(name + ".png")), std::string(png.begin(), png.end())) << name;
+        EXPECT_EQ(test::read_text(out.file("students/" + name + ".png")), std::string(png.begin(), png.end())) << name;
     }
 }
 
