@@ -112,6 +112,15 @@ void add_batch_command(CLI::App& app) {
                    error_line("interrupted by " + signal_name(signal) + ": " + std::to_string(written.load()) + " of " +
                               std::to_string(total.load()) + " scenes written, the rest not");
         });
+        // Usage errors (exit 2), before anything is read or written.
+        try {
+            if (options->out_dir.empty() && options->inputs.size() != 1)
+                throw std::invalid_argument("batch: give one MANIFEST.json, or scenes, folders or patterns with --out DIR");
+            grading::parse_shard(options->shard);
+        } catch (const std::invalid_argument& error) {
+            std::cerr << error_line(error.what()) << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
         std::size_t failures = 0;
         try {
             std::string manifest;

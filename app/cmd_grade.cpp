@@ -15,6 +15,7 @@
 #include "io/message_text.h"
 
 #include <cstdio>
+#include <stdexcept>
 #include <iostream>
 #include <memory>
 
@@ -59,11 +60,11 @@ void print_folder(const nlohmann::json& folder) {
 void run_grade(const GradeOptions& options) {
     if (!options.merge.empty()) {
         const auto report = grading::merge_grading(options.merge, options.out, options.gradescope);
-        std::fprintf(stderr, "m3055: merged %zu shards, %zu submissions into %s\n", options.merge.size(),
-                     report.students.size(), text::quote_name(options.out).c_str());
+        std::fprintf(stderr, "m3055: merged %zu shard%s, %zu submission%s into %s\n", options.merge.size(),
+                     options.merge.size() == 1 ? "" : "s", report.students.size(),
+                     report.students.size() == 1 ? "" : "s", text::quote_name(options.out).c_str());
         return;
     }
-    if (options.submissions.empty()) throw std::runtime_error("grade: SUBMISSIONS folder is required (or --merge)");
     const grading::Assignment assignment = grading::load_assignment(options.assignment);
     grading::GradeRunOptions run;
     run.out_dir = options.out;
@@ -128,9 +129,18 @@ void add_grade_command(CLI::App& app) {
         const InterruptGuard interrupt([](int signal) {
             return error_line("interrupted by " + signal_name(signal) + ": grades.csv, grades.json and report.html not written");
         });
+        // Usage errors (docs/grading.md: exit 2), before anything is read or written.
         try {
-            if (options->merge.empty() && options->assignment.empty())
-                throw std::runtime_error("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
+            if (options->merge.empty() && (options->assignment.empty() || options->submissions.empty()))
+                throw std::invalid_argument("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
+            if (!options->merge.empty() && !options->assignment.empty())
+                throw std::invalid_argument("grade: --merge takes the shards' folders, not ASSIGNMENT.json and SUBMISSIONS/");
+            grading::parse_shard(options->shard);
+        } catch (const std::invalid_argument& error) {
+            std::cerr << error_line(error.what()) << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
+        try {
             run_grade(*options);
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";

@@ -51,7 +51,10 @@ void total(Grade& grade, const Assignment& assignment) {
     grade.max = assignment.max_score();
     grade.score = 0;
     for (const Check& check : grade.checks) grade.score += check.earned;
-    grade.passed = grade.broken.empty() && grade.score >= assignment.pass_score;
+    // To the hundredth, as every output shows it: 53.12, never 53.120000000000005.
+    grade.score = std::round(grade.score * 100.0) / 100.0;
+    grade.max = std::round(grade.max * 100.0) / 100.0;
+    grade.passed = grade.broken.empty() && grade.score >= std::round(assignment.pass_score * 100.0) / 100.0;
 }
 
 }  // namespace

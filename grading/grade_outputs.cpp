@@ -2,6 +2,7 @@
 
 #include "grading/comparison_json.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace m3055::grading {
@@ -37,7 +38,9 @@ std::string joined_reasons(const json& student) {
 }  // namespace
 
 json assignment_json(const Assignment& a) {
-    return {{"title", a.title}, {"max", a.max_score()}, {"pass", a.pass_score}, {"reference_image", "reference.png"}};
+    const auto hundredths = [](double value) { return std::round(value * 100.0) / 100.0; };
+    return {{"title", a.title}, {"max", hundredths(a.max_score())}, {"pass", hundredths(a.pass_score)},
+            {"reference_image", "reference.png"}};
 }
 
 json grade_json(const Grade& g, const std::string& image_stem) {

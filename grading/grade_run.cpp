@@ -272,7 +272,7 @@ std::vector<std::size_t> check_shards(const std::vector<json>& docs, const std::
         const Shard parsed = parse_shard(shard);
         if (n && parsed.n != n)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " is not of the same " +
-                                     std::to_string(n) + " shards as the others");
+                                     std::to_string(n) + (n == 1 ? " shard" : " shards") + " as the others");
         n = parsed.n;
         if (!seen.emplace(parsed.k, i).second)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " given twice");

@@ -464,6 +464,64 @@ TEST(GradeClass, ImagesOfStudentsNoLongerInTheClassAreRemovedAndNothingElse) {
     EXPECT_TRUE(file_exists(dir.file("out/students/readme.txt")));
 }
 
+TEST(GradeClass, ScoresAreRoundedToHundredthsInEveryOutput) {
+    TempDir dir;
+    json assignment = read_json(kAssignment);
+    assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment["image"]["points"] = 40;
+    assignment["rules"] = json::parse(R"([{"rule": "light_count", "equals": 3, "points": 0.1},
+                                          {"rule": "model", "is": "metal", "points": 0.2}])");
+    assignment.erase("pass");
+    write_text(dir.file("a.json"), assignment.dump());
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/alice.json"), good_scene());  // 40 + 0.1 + 0.2, 40.300000000000004 unrounded
+    const RunResult run = run_m3055({"grade", dir.file("a.json"), dir.file("subs"), "--out", dir.file("out"),
+                                     "--gradescope", dir.file("out/results.json")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(read_text(dir.file("out/grades.csv")).find("\nalice,40.3,40.3,pass,"), std::string::npos);
+    for (const char* file : {"out/grades.json", "out/results.json", "out/report.html"})
+        EXPECT_EQ(read_text(dir.file(file)).find("40.30000"), std::string::npos) << file;
+    EXPECT_EQ(read_json(dir.file("out/grades.json"))["students"][0]["score"].dump(), "40.3");
+    EXPECT_NE(run.err.find("alice: 40.3 / 40.3 pass"), std::string::npos) << run.err;
+}
+
+TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
+    TempDir dir;
+    const std::vector<std::vector<std::string>> usages = {
+        {"grade", kAssignment, "--out", dir.file("out")},
+        {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "5/4"},
+        {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "x"},
+        {"grade", kAssignment, kSubmissions, "--merge", dir.file("a"), "--out", dir.file("out")},
+        {"batch", kSubmissions + "/alice.json", kSubmissions + "/bob.json"},
+        {"batch", kSubmissions, "--out", dir.file("out"), "--shard", "0/2"},
+    };
+    for (const auto& args : usages) {
+        const RunResult run = run_m3055(args);
+        EXPECT_EQ(run.exit_code, 2) << args[0] << " " << args.back() << ": " << run.err;
+        EXPECT_FALSE(fs::exists(dir.file("out")));
+    }
+}
+
+TEST(GradeClass, CountsInMessagesAreSingularForOne) {
+    TempDir dir;
+    json assignment = read_json(kAssignment);
+    assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment["rules"] = json::parse(R"([{"rule": "light_count", "equals": 3, "points": 10},
+                                          {"rule": "model", "object": 1, "is": "metal", "points": 10}])");
+    assignment.erase("pass");
+    write_text(dir.file("a.json"), assignment.dump());
+    json scene = json::parse(good_scene());
+    scene["lights"] = json::array({scene["lights"][0]});
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/solo.json"), scene.dump());
+    ASSERT_EQ(run_m3055({"grade", dir.file("a.json"), dir.file("subs"), "--out", dir.file("one"), "--shard", "1/1"}).exit_code, 0);
+    const std::string reasons = read_text(dir.file("one/grades.csv"));
+    EXPECT_NE(reasons.find("1 light enabled, not 3"), std::string::npos) << reasons;
+    EXPECT_NE(reasons.find("(the scene has 1 object)"), std::string::npos) << reasons;
+    const RunResult merged = run_m3055({"grade", "--merge", dir.file("one"), "--out", dir.file("merged")});
+    EXPECT_NE(merged.err.find("merged 1 shard, 1 submission into"), std::string::npos) << merged.err;
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");

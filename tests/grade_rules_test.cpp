@@ -39,7 +39,7 @@ TEST(GradeRules, ModelPassesAndFails) {
     EXPECT_FALSE(wrong.ok);
     EXPECT_EQ(wrong.reason, "objects[0] is metal, not metal_blinn");
     EXPECT_EQ(check(R"({"rule": "model", "is": "metal", "object": 3, "points": 1})", doc).reason,
-              "no objects[3] (the scene has 1 objects)");
+              "no objects[3] (the scene has 1 object)");
 }
 
 TEST(GradeRules, LightCountCountsEnabledLights) {
