@@ -114,13 +114,19 @@ std::string report_html(const GradeReport& report,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     const json& a = report.assignment;
     const std::string title = a["title"].get<std::string>();
-    std::size_t passed = 0;
-    for (const json& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
+    std::size_t passed = 0, missing = 0;
+    for (const json& s : report.students) {
+        passed += s["passed"].get<bool>() ? 1 : 0;
+        missing += s.value("missing", false) ? 1 : 0;
+    }
+    const std::size_t submitted = report.students.size() - missing;
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        escape_html(title) + ": grades</title>\n" + kStyle + "</head><body>\n";
-    page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(report.students.size()) + " submissions, " +
-            std::to_string(passed) + " passed (at least " + score_text(a["pass"].get<double>()) + " of " +
-            score_text(a["max"].get<double>()) + " points). Click a column's header to sort.</p>\n";
+    page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(submitted) +
+            (submitted == 1 ? " submission, " : " submissions, ") + std::to_string(passed) + " passed (at least " +
+            score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) + " points)" +
+            (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
+            ". Click a column's header to sort.</p>\n";
     const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
     if (!reference.empty())
         page += "<figure><img alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +

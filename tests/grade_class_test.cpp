@@ -412,6 +412,9 @@ TEST(GradeClass, RosterGivesMissingStudentsARowAndFlagsStrangers) {
     EXPECT_NE(csv.find("\nzed,0,100,missing,no submission,\n"), std::string::npos) << csv;
     EXPECT_NE(run.err.find("graded 3 submissions, 2 passed; 1 on the roster with no submission"), std::string::npos)
         << run.err;
+    EXPECT_NE(read_text(dir.file("out/report.html"))
+                  .find("<p>3 submissions, 2 passed (at least 60 of 100 points); 1 on the roster with no submission."),
+              std::string::npos);
     // A roster that is not one: one line naming the file and the line, nothing written.
     write_text(dir.file("bad.txt"), "alice\nbob\nalice\n");
     const RunResult bad = run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("bad"), "--roster",
