@@ -11,6 +11,7 @@
 #include "interrupt.h"
 #include "progress.h"
 
+#include "grading/assignment_check.h"
 #include "grading/grade_run.h"
 #include "io/message_text.h"
 
@@ -27,7 +28,7 @@ struct GradeOptions {
     std::string assignment, submissions, out, shard = "1/1", gradescope, backend = "auto";
     std::vector<std::string> merge;
     std::string roster;
-    bool allow_brdf = false, follow_symlinks = false;
+    bool allow_brdf = false, follow_symlinks = false, check = false;
 };
 
 void print_grade(const grading::Grade& grade) {
@@ -57,6 +58,25 @@ void print_folder(const nlohmann::json& folder) {
     }
 }
 
+// `grade --check ASSIGNMENT.json`: exit 0 when the assignment has no error and
+// its reference earns every point of its rules, 1 otherwise.
+bool run_check(const GradeOptions& options) {
+    const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    for (const std::string& line : check.reference_fails) std::cerr << error_line(line) << "\n";
+    const std::string name = text::quote_name(options.assignment);
+    std::string summary = name + ": " + std::to_string(check.errors.size()) +
+                          (check.errors.size() == 1 ? " error" : " errors");
+    if (check.reference_is_scene)
+        summary += "; the reference scores " + text::format_number(check.reference_score) + " of " +
+                   text::format_number(assignment.max_score()) + " points";
+    else
+        summary += "; the reference is an image: the rules could not be checked against a scene";
+    std::cerr << "m3055: " << text::one_line(summary) << "\n";
+    return check.errors.empty() && check.reference_fails.empty();
+}
+
 void run_grade(const GradeOptions& options) {
     if (!options.merge.empty()) {
         const auto report = grading::merge_grading(options.merge, options.out, options.gradescope);
@@ -66,6 +86,15 @@ void run_grade(const GradeOptions& options) {
         return;
     }
     const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    // The assignment against its own reference: structural errors stop the
+    // run before anything is written; rules the reference fails are said.
+    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    if (!check.errors.empty())
+        throw std::runtime_error(text::quote_name(options.assignment) + ": " + std::to_string(check.errors.size()) +
+                                 (check.errors.size() == 1 ? " error" : " errors") +
+                                 " in the assignment (m3055 grade --check): nothing graded");
+    for (const std::string& line : check.reference_fails) std::cerr << error_line("warning: " + line) << "\n";
     grading::GradeRunOptions run;
     run.out_dir = options.out;
     run.shard = grading::parse_shard(options.shard);
@@ -106,7 +135,10 @@ void add_grade_command(CLI::App& app) {
         "grade", "Grade a folder of submitted scenes against an assignment: grades.csv, grades.json, report.html");
     command->add_option("assignment", options->assignment, "Assignment JSON (docs/grading.md)");
     command->add_option("submissions", options->submissions, "Folder of NAME.json or NAME/scene.json submissions, or one NAME.json");
-    command->add_option("--out", options->out, "Output folder")->required();
+    command->add_option("--out", options->out, "Output folder (required, except with --check)");
+    command->add_flag("--check", options->check,
+                      "Check ASSIGNMENT.json against its reference (model names, paths, objects, lights, thresholds) "
+                      "and grade the reference against the rules; exit 1 on a problem");
     command->add_option("--shard", options->shard, "Grade only shard K of N (sorted names), e.g. 2/4")
         ->capture_default_str();
     command->add_option("--merge", options->merge, "Merge the outputs of shard runs (their --out folders)")
@@ -131,7 +163,11 @@ void add_grade_command(CLI::App& app) {
         });
         // Usage errors (docs/grading.md: exit 2), before anything is read or written.
         try {
-            if (options->merge.empty() && (options->assignment.empty() || options->submissions.empty()))
+            if (options->check && (options->assignment.empty() || !options->submissions.empty() ||
+                                   !options->merge.empty() || !options->out.empty()))
+                throw std::invalid_argument("grade --check takes ASSIGNMENT.json alone");
+            if (!options->check && options->out.empty()) throw std::invalid_argument("grade: --out is required");
+            if (!options->check && options->merge.empty() && (options->assignment.empty() || options->submissions.empty()))
                 throw std::invalid_argument("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
             if (!options->merge.empty() && !options->assignment.empty())
                 throw std::invalid_argument("grade: --merge takes the shards' folders, not ASSIGNMENT.json and SUBMISSIONS/");
@@ -140,12 +176,15 @@ void add_grade_command(CLI::App& app) {
             std::cerr << error_line(error.what()) << "\n";
             throw CLI::RuntimeError(kExitUsage);
         }
+        bool ok = true;
         try {
-            run_grade(*options);
+            if (options->check) ok = run_check(*options);
+            else run_grade(*options);
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
-            throw CLI::RuntimeError(kExitFailure);
+            ok = false;
         }
+        if (!ok) throw CLI::RuntimeError(kExitFailure);
     });
 }
 

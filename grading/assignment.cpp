@@ -165,6 +165,8 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     }
     a.pass_score = top.number("pass", 0, a.max_score(), a.max_score());
     a.time_budget_s = top.number("time_budget", 0, 3600, 30.0);
+    // 0 is no budget at all: one hostile scene could hold the whole run.
+    if (!(a.time_budget_s > 0)) top.fail("time_budget", "must be in (0, 3600] seconds, got 0");
     return a;
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -508,7 +509,14 @@ TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
 TEST(GradeClass, CountsInMessagesAreSingularForOne) {
     TempDir dir;
     json assignment = read_json(kAssignment);
-    assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    // A reference with two spheres, so that the rule on objects[1] is one the assignment may have.
+    json reference = json::parse(good_scene());
+    reference["objects"].push_back(reference["objects"][0]);
+    reference["objects"][1]["center"] = {1.5, 0, 0};
+    reference["objects"][1]["radius"] = 0.3;
+    write_text(dir.file("reference.json"), reference.dump());
+    assignment["reference"] = "reference.json";
+    assignment.erase("start");
     assignment["rules"] = json::parse(R"([{"rule": "light_count", "equals": 3, "points": 10},
                                           {"rule": "model", "object": 1, "is": "metal", "points": 10}])");
     assignment.erase("pass");
@@ -523,6 +531,98 @@ TEST(GradeClass, CountsInMessagesAreSingularForOne) {
     EXPECT_NE(reasons.find("(the scene has 1 object)"), std::string::npos) << reasons;
     const RunResult merged = run_m3055({"grade", "--merge", dir.file("one"), "--out", dir.file("merged")});
     EXPECT_NE(merged.err.find("merged 1 shard, 1 submission into"), std::string::npos) << merged.err;
+}
+
+// The worked assignment with `change` applied, written beside a copy of its reference.
+std::string write_assignment(TempDir& dir, const std::string& name, const std::function<void(json&)>& change) {
+    const std::string folder = kAssignment.substr(0, kAssignment.rfind('/'));
+    if (!file_exists(dir.file("reference.json"))) fs::copy_file(folder + "/reference.json", dir.file("reference.json"));
+    json assignment = read_json(kAssignment);
+    assignment["reference"] = "reference.json";
+    assignment.erase("start");
+    change(assignment);
+    write_text(dir.file(name), assignment.dump());
+    return dir.file(name);
+}
+
+TEST(GradeCheck, TheWorkedAssignmentPassesItsOwnCheck) {
+    const RunResult run = run_m3055({"grade", "--check", kAssignment});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.err.find("assignment.json: 0 errors; the reference scores 100 of 100 points"), std::string::npos)
+        << run.err;
+}
+
+TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAssignment) {
+    TempDir dir;
+    const std::string bad = write_assignment(dir, "bad.json", [](json& a) {
+        a["image"]["fail_levels"] = 40;
+        a["rules"] = json::parse(R"([
+            {"rule": "model", "is": "metall", "points": 10},
+            {"rule": "range", "path": "objects[0].material.dd", "min": 0, "max": 1, "points": 10},
+            {"rule": "range", "path": "objects[0].material", "min": 0, "max": 1, "points": 10},
+            {"rule": "eq14", "object": 5, "within_percent": 1, "points": 10},
+            {"rule": "model", "object": 1, "is": "metal", "points": 10},
+            {"rule": "warmer", "light": "sun", "than": "fill", "points": 10}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", bad});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string line : {
+             "bad.json: image.fail_levels: 40 allows every difference on the reference's 5-bit display (at most 31 levels)",
+             "bad.json: rules[0].is: unknown model \"metall\" (highlight, translucent, metal,",
+             "bad.json: rules[1].path: \"objects[0].material.dd\" is not in the reference scene",
+             "bad.json: rules[2].path: \"objects[0].material\" is not a number in the reference scene",
+             "bad.json: rules[3].object: no objects[5] in the reference scene (it has 1 object)",
+             "bad.json: rules[4].object: no objects[1] in the reference scene (it has 1 object)",
+             "bad.json: rules[5].light: no light named \"sun\" in the reference scene (its lights: \"key\", \"fill\", \"back\")",
+             "bad.json: 7 errors; the reference scores 40 of 100 points"})
+        EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
+    const RunResult grade = run_m3055({"grade", bad, kSubmissions, "--out", dir.file("out")});
+    EXPECT_EQ(grade.exit_code, 1);
+    EXPECT_NE(grade.err.find("bad.json: 7 errors in the assignment (m3055 grade --check): nothing graded"),
+              std::string::npos) << grade.err;
+    EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+TEST(GradeCheck, KeyToFillNeedsLightsNamedKeyAndFill) {
+    TempDir dir;
+    json reference = read_json(kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json");
+    reference["lights"][0]["name"] = "main";
+    write_text(dir.file("reference.json"), reference.dump());
+    const std::string a = write_assignment(dir, "a.json", [](json&) {});
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    EXPECT_NE(check.err.find("key_to_fill compares the lights named \"key\" and \"fill\"; the reference scene's "
+                             "lights are \"main\", \"fill\", \"back\""),
+              std::string::npos) << check.err;
+}
+
+TEST(GradeCheck, RulesTheReferenceFailsAreReportedAndZeroPointRulesAreFeedbackOnly) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["rules"].push_back({{"rule", "light_count"}, {"equals", 2}, {"points", 5}});
+        a["rules"].push_back({{"rule", "light_count"}, {"equals", 4}, {"points", 0}, {"name", "four lights?"}});
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    EXPECT_NE(check.err.find("a.json: rules[6] (light_count): the reference fails it: 3 lights enabled, not 2"),
+              std::string::npos) << check.err;
+    EXPECT_EQ(check.err.find("four lights?"), std::string::npos) << "a 0-point rule is feedback: " << check.err;
+    EXPECT_NE(check.err.find("a.json: 0 errors; the reference scores 100 of 105 points"), std::string::npos) << check.err;
+    // grade says so and grades all the same.
+    const RunResult grade = run_m3055({"grade", a, kSubmissions, "--out", dir.file("out")});
+    EXPECT_EQ(grade.exit_code, 0) << grade.err;
+    EXPECT_NE(grade.err.find("m3055: warning: "), std::string::npos) << grade.err;
+    EXPECT_TRUE(file_exists(dir.file("out/grades.json")));
+}
+
+TEST(GradeCheck, ATimeBudgetOfZeroIsRefused) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) { a["time_budget"] = 0; });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    EXPECT_NE(check.err.find("a.json: time_budget: must be in (0, 3600] seconds, got 0"), std::string::npos) << check.err;
 }
 
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
