@@ -11,7 +11,14 @@
 #include "scene/json_parse.h"
 #include "scene/load.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <optional>
 #include <chrono>
 #include <deque>
 #include <filesystem>
@@ -94,28 +101,71 @@ struct Graded {
 
 Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
                               const std::function<Renderer&()>& renderer, const LevelImage& reference,
-                              const std::string& out_dir);
+                              const std::string& out_dir, const std::string& class_dir);
 
 // Grades one submission: score 0 and its one-line reason for whatever is
 // wrong with it; its notes (roster, links, identical files) carried over.
 Graded grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
-                        const LevelImage& reference, const std::string& out_dir) {
-    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir);
+                        const LevelImage& reference, const std::string& out_dir, const std::string& class_dir) {
+    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir, class_dir);
     graded.grade.missing = s.missing;
     graded.grade.notes = s.notes;
     return graded;
 }
 
+// While one lives, the working folder is the class folder, so that every
+// message of the loader names the submission's files relative to it
+// ("alice/scene.json"), never with the path the teacher typed: the same
+// reasons on every node of a cluster, however each spells the path. Only
+// loading runs in it (rendering and the writer threads never depend on the
+// working folder: the output paths are absolute).
+class InClassFolder {
+public:
+    explicit InClassFolder(const std::string& folder) : saved_(::open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+        if (saved_ < 0 || ::chdir(folder.c_str()) != 0) {
+            if (saved_ >= 0) ::close(saved_);
+            throw std::runtime_error(text::quote_name(folder) + ": cannot enter the submissions folder: " +
+                                     std::strerror(errno));
+        }
+    }
+    ~InClassFolder() {
+        if (::fchdir(saved_) != 0) std::perror("m3055: cannot return to the working folder");
+        ::close(saved_);
+    }
+    InClassFolder(const InClassFolder&) = delete;
+    InClassFolder& operator=(const InClassFolder&) = delete;
+
+private:
+    int saved_;
+};
+
+std::string relative_to(const std::string& path, const std::string& folder) {
+    return path.empty() ? path : fs::path(path).lexically_relative(folder).string();
+}
+
 Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
                               const std::function<Renderer&()>& renderer, const LevelImage& reference,
-                              const std::string& out_dir) {
+                              const std::string& out_dir, const std::string& class_dir) {
     if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
+    const std::string scene_path = relative_to(s.scene, class_dir);
     try {
         const auto start = std::chrono::steady_clock::now();
-        // Nothing outside the submission is read: its .brdf files are its own.
-        const scene_json::BrdfConfinement confined(
-            s.folder, "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file");
-        const Scene scene = load_scene_file(s.scene);
+        Scene scene;
+        std::optional<LevelImage> screenshot;
+        std::string screenshot_error;
+        {
+            const InClassFolder in_class(class_dir);
+            // Nothing outside the submission is read: its .brdf files are its own.
+            const scene_json::BrdfConfinement confined(
+                relative_to(s.folder, class_dir),
+                "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file");
+            scene = load_scene_file(scene_path);
+            if (!s.screenshot.empty()) try {
+                    screenshot = read_level_image(relative_to(s.screenshot, class_dir), scene.display.bits);
+                } catch (const std::exception& e) {
+                    screenshot_error = e.what();
+                }
+        }
         Renderer& r = renderer();
         if (assignment.time_budget_s > 0)
             r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -128,7 +178,7 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
         } catch (const RenderTimeout&) {
             r.set_deadline(std::nullopt);
             return {broken_grade(assignment, s.student,
-                                 text::quote_name(s.scene) + ": over its time budget: not drawn within " +
+                                 text::quote_name(scene_path) + ": over its time budget: not drawn within " +
                                      text::format_number(assignment.time_budget_s) +
                                      " s (the assignment's time_budget)"),
                     {}};
@@ -137,11 +187,11 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
         grade.student = s.student;
         if (!s.screenshot.empty()) {
             const std::string shown = text::quote_name(s.name + "/screenshot.png");
-            try {
-                check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), *render, shown);
-            } catch (const std::exception& e) {
+            if (screenshot) {
+                check_screenshot(grade, *screenshot, *render, shown);
+            } else {
                 grade.screenshot_ok = false;
-                grade.screenshot = e.what();
+                grade.screenshot = screenshot_error;
             }
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
@@ -176,8 +226,18 @@ void write_tables(const std::string& out_dir, const GradeReport& report, const s
 }  // namespace
 
 GradeReport run_grading(const Assignment& assignment, const std::string& submissions_dir,
-                        const std::function<Renderer&()>& renderer, const GradeRunOptions& options) {
+                        const std::function<Renderer&()>& renderer, const GradeRunOptions& given) {
+    // Absolute output paths: the loading of each submission runs inside the
+    // class folder (InClassFolder) while writer threads write.
+    GradeRunOptions options = given;
+    options.out_dir = fs::absolute(given.out_dir).string();
+    if (!given.gradescope.empty()) options.gradescope = fs::absolute(given.gradescope).string();
     std::error_code error;
+    const std::string class_dir = fs::is_directory(submissions_dir, error)
+                                      ? submissions_dir
+                                      : (fs::path(submissions_dir).parent_path().empty()
+                                             ? std::string(".")
+                                             : fs::path(submissions_dir).parent_path().string());
     if (fs::equivalent(submissions_dir, options.out_dir, error))
         throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
     ClassFolder folder = read_class(submissions_dir, options.class_options);
@@ -204,6 +264,14 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     report.assignment = assignment_json(assignment);
     for (const Ignored& entry : folder.ignored) report.folder["ignored"].push_back({{"name", entry.name}, {"why", entry.why}});
     report.folder["identical"] = folder.identical;
+    report.folder["fingerprint"] = folder.fingerprint;
+    // The assignment as graded: its file and its reference's bytes.
+    report.assignment["digest"] =
+        content_digest(io::read_input_file(assignment.path) + '\0' +
+                       [&] {
+                           std::ifstream in(assignment.reference, std::ios::binary);
+                           return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+                       }());
     if (options.shard.n > 1)
         report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
     // A few writer jobs in flight: images are encoded and written (each file
@@ -220,7 +288,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     std::deque<Writing> writing;
     std::size_t bytes_in_flight = 0;
     for (const Submission& s : mine) {
-        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir);
+        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir, class_dir);
         const Grade& grade = graded.grade;
         json entry = grade_json(grade, grade.broken.empty() ? s.file_stem : "");
         if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
@@ -282,10 +350,10 @@ std::vector<std::size_t> check_shards(const std::vector<json>& docs, const std::
         first.erase("shard");
         if (plain != first)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another assignment than " +
-                                     text::quote_name(dirs[0]));
+                                     text::quote_name(dirs[0]) + " (its title, points or digest differ)");
         if (docs[i].value("folder", json()) != docs[0].value("folder", json()))
             throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another class folder than " +
-                                     text::quote_name(dirs[0]) + " (what it ignored or found identical differs)");
+                                     text::quote_name(dirs[0]) + " (its fingerprint differs: other names or file contents)");
     }
     std::vector<std::size_t> order;
     for (int k = 1; k <= n; ++k) {

@@ -165,20 +165,37 @@ std::vector<Submission> list_entries(const std::string& folder, const ClassOptio
 
 // Byte-identical scene files, among those that can be graded: groups of two
 // or more, each noted on its students.
-std::vector<std::vector<std::string>> find_identical(std::vector<Submission>& all) {
-    std::map<std::pair<std::uintmax_t, std::string>, std::vector<std::size_t>> by_digest;  // (size, digest) -> indices
+// "SIZE:DIGEST" of a regular file of at most 16 MiB (a scene's limit), or ""
+// when it is not one or cannot be read (never opened otherwise: a FIFO would block).
+std::string file_digest(const std::string& path) {
+    std::error_code error;
+    if (!fs::is_regular_file(path, error)) return "";
+    const std::uintmax_t size = fs::file_size(path, error);
+    if (error || size > (std::uintmax_t(16) << 20)) return "";
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in.eof() && in.fail()) return "";
+    return std::to_string(bytes.size()) + ":" + content_digest(bytes);
+}
+
+// Byte-identical scene files, among those that can be graded: groups of two
+// or more, each noted on its students. Also the class's fingerprint: every
+// submission's name, and its files' sizes and digests, in order.
+std::vector<std::vector<std::string>> find_identical(std::vector<Submission>& all, std::string& fingerprint) {
+    std::map<std::string, std::vector<std::size_t>> by_digest;  // "size:digest" -> indices
+    std::string listing;
     for (std::size_t i = 0; i < all.size(); ++i) {
         const Submission& s = all[i];
-        if (!s.problem.empty()) continue;
-        std::error_code error;
-        if (!fs::is_regular_file(s.scene, error)) continue;
-        const std::uintmax_t size = fs::file_size(s.scene, error);
-        if (error || size > (std::uintmax_t(16) << 20)) continue;
-        std::ifstream in(s.scene, std::ios::binary);
-        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-        if (!in.eof() && in.fail()) continue;
-        by_digest[{size, digest_hex(bytes) + digest_hex(std::string(bytes.rbegin(), bytes.rend()))}].push_back(i);
+        listing += s.name + '\0';
+        if (!s.problem.empty()) {
+            listing += "-\n";
+            continue;
+        }
+        const std::string digest = file_digest(s.scene);
+        listing += digest + (s.screenshot.empty() ? "" : " " + file_digest(s.screenshot)) + "\n";
+        if (!digest.empty()) by_digest[digest].push_back(i);
     }
+    fingerprint = std::to_string(all.size()) + ":" + content_digest(listing);
     std::vector<std::vector<std::string>> groups;
     for (const auto& [key, indices] : by_digest) {
         if (indices.size() < 2) continue;
@@ -199,6 +216,10 @@ std::vector<std::vector<std::string>> find_identical(std::vector<Submission>& al
 }  // namespace
 
 std::string shown_name(std::string_view name) { return text::escape(name, true); }
+
+std::string content_digest(std::string_view bytes) {
+    return digest_hex(bytes) + digest_hex(std::string(bytes.rbegin(), bytes.rend()));
+}
 
 std::string output_stem(std::string_view name) {
     std::string out;
@@ -298,7 +319,7 @@ ClassFolder read_class(const std::string& folder, const ClassOptions& options) {
     for (Submission& s : all)
         if (folded[fold(s.file_stem)] > 1 && s.file_stem.find('~') == std::string::npos)
             s.file_stem = with_digest(s.file_stem, s.name);
-    out.identical = find_identical(all);
+    out.identical = find_identical(all, out.fingerprint);
     std::sort(out.ignored.begin(), out.ignored.end(), [](const Ignored& a, const Ignored& b) { return a.name < b.name; });
     for (Ignored& entry : out.ignored) entry.name = shown_name(entry.name);
     out.submissions = std::move(all);

@@ -42,7 +42,15 @@ struct ClassFolder {
     std::vector<Ignored> ignored;         // sorted bytewise by name
     // Groups of students (shown names) whose scene files are byte-identical.
     std::vector<std::vector<std::string>> identical;
+    // "COUNT:DIGEST" of every submission's name and its files' sizes and
+    // digests, in order: the same on every node that reads the same class.
+    std::string fingerprint;
 };
+
+// 32 hex digits of two FNV-1a passes (forward and backward) over `bytes`: a
+// digest to tell accidents apart (another class, an edited file), not one
+// that resists someone forging a collision.
+std::string content_digest(std::string_view bytes);
 
 // A file name (bytes) as text every output shows (CSV, JSON, HTML, the
 // console): valid UTF-8, one line, and a different text for different bytes:

@@ -154,7 +154,61 @@ TEST(GradeClass, ShardsOfOddNamesMergeToTheUnshardedBytes) {
     EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole")));
 }
 
-TEST(GradeClass, MergeRefusesShardsWhoseSizesCannotBeOfOneClass) {
+std::string write_assignment(TempDir& dir, const std::string& name, const std::function<void(json&)>& change);
+
+// Runs m3055 from `cwd` through the shell; the exit status.
+int run_in(const std::string& cwd, const std::string& args) {
+    return std::system(("cd '" + cwd + "' && " M3055_BINARY " " + args + " 2>/dev/null").c_str());
+}
+
+TEST(GradeClass, ShardsRunFromDifferentFoldersMergeToTheUnshardedBytes) {
+    TempDir dir;
+    fs::create_directories(dir.file("class/subs"));
+    fs::create_directories(dir.file("elsewhere/deeper"));
+    for (int i = 0; i < 5; ++i)
+        write_text(dir.file("class/subs/s" + std::to_string(i) + ".json"), i == 3 ? "{ broken" : good_scene_variant(i));
+    fs::create_directories(dir.file("class/subs/f"));  // a folder without scene.json: its reason names the file
+    ASSERT_EQ(run_in(dir.path(), "grade " + kAssignment + " class/subs --out whole"), 0);
+    // The same class spelled three ways, from three working folders.
+    ASSERT_EQ(run_in(dir.file("class"), "grade " + kAssignment + " subs/ --out ../s1 --shard 1/3"), 0);
+    ASSERT_EQ(run_in(dir.file("elsewhere/deeper"), "grade " + kAssignment + " ../../class/subs --out ../../s2 --shard 2/3"), 0);
+    ASSERT_EQ(run_in(dir.file("class/subs"), "grade " + kAssignment + " " + dir.file("class/subs") + " --out ../../s3 --shard 3/3"), 0);
+    ASSERT_EQ(run_in(dir.path(), "grade --merge s2 s3 s1 --out merged"), 0);
+    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole")));
+    const std::string csv = read_text(dir.file("whole/grades.csv"));
+    EXPECT_NE(csv.find("s3,0,100,fail,\"s3.json: invalid JSON"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("f,0,100,fail,f/scene.json: missing"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("subs"), std::string::npos) << "no path the teacher typed: " << csv;
+}
+
+TEST(GradeClass, MergeRefusesAShardOfAnotherClassOrAnotherReferenceNamingIt) {
+    TempDir dir;
+    for (const char* cls : {"a", "b"}) {
+        fs::create_directories(dir.file(std::string(cls)));
+        for (int i = 0; i < 4; ++i)
+            write_text(dir.file(std::string(cls) + "/s" + std::to_string(i) + ".json"),
+                       good_scene_variant(i + (cls[0] == 'b' && i == 2 ? 10 : 0)));  // b: one file differs
+    }
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("a"), "--out", dir.file("a1"), "--shard", "1/2"}).exit_code, 0);
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("b"), "--out", dir.file("b2"), "--shard", "2/2"}).exit_code, 0);
+    const RunResult other_class = run_m3055({"grade", "--merge", dir.file("a1"), dir.file("b2"), "--out", dir.file("m")});
+    EXPECT_EQ(other_class.exit_code, 1);
+    EXPECT_NE(other_class.err.find("b2: graded another class folder than"), std::string::npos) << other_class.err;
+    // The same assignment file, its reference edited in between: another assignment.
+    TempDir copy;
+    const std::string a = write_assignment(copy, "a.json", [](json&) {});
+    ASSERT_EQ(run_m3055({"grade", a, dir.file("a"), "--out", dir.file("x1"), "--shard", "1/2"}).exit_code, 0);
+    json reference = read_json(copy.file("reference.json"));
+    reference["background"] = {0.2, 0.1, 0.1};
+    write_text(copy.file("reference.json"), reference.dump());
+    ASSERT_EQ(run_m3055({"grade", a, dir.file("a"), "--out", dir.file("x2"), "--shard", "2/2"}).exit_code, 0);
+    const RunResult other_reference = run_m3055({"grade", "--merge", dir.file("x1"), dir.file("x2"), "--out", dir.file("m")});
+    EXPECT_EQ(other_reference.exit_code, 1);
+    EXPECT_NE(other_reference.err.find("x2: graded another assignment than"), std::string::npos) << other_reference.err;
+    EXPECT_FALSE(fs::exists(dir.file("m/grades.json")));
+}
+
+TEST(GradeClass, MergeRefusesShardsOfClassesOfOtherSizes) {
     TempDir dir;
     fs::create_directories(dir.file("big"));
     fs::create_directories(dir.file("small"));
@@ -164,7 +218,8 @@ TEST(GradeClass, MergeRefusesShardsWhoseSizesCannotBeOfOneClass) {
     ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("small"), "--out", dir.file("s2"), "--shard", "2/2"}).exit_code, 0);
     const RunResult merged = run_m3055({"grade", "--merge", dir.file("s1"), dir.file("s2"), "--out", dir.file("m")});
     EXPECT_EQ(merged.exit_code, 1);
-    EXPECT_NE(merged.err.find("s1: shard 1/2 holds 3 submissions, not 2 as a shard of these 4 would"), std::string::npos) << merged.err;
+    // The class fingerprints differ (other names and files), which the merge says first.
+    EXPECT_NE(merged.err.find("s2: graded another class folder than"), std::string::npos) << merged.err;
     EXPECT_FALSE(file_exists(dir.file("m/grades.json")));
 }
 
