@@ -1,5 +1,6 @@
 #include "grading/assignment.h"
 
+#include "grading/image_input.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
 #include "scene/json_parse.h"
@@ -146,7 +147,11 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     if (top.has("start")) a.start = (folder / top.string("start")).string();
     if (top.has("image")) {
         const Fields image(top.at("image"), source, "image");
-        image.only({"points", "fail_levels", "fail_percent", "zero_percent"});
+        image.only({"points", "fail_levels", "fail_percent", "zero_percent", "region"});
+        const std::string region = image.string("region", std::string("all"));
+        if (region != "all" && region != "objects")
+            image.fail("image.region", "must be \"all\" or \"objects\", got " + text::quote(region));
+        a.image_objects_only = region == "objects";
         a.image_points = image.number("points", 0, 1e6);
         a.image_tolerance.fail = {int(image.number("fail_levels", 0, 255, 0.0)),
                                   image.number("fail_percent", 0, 100, 0.0)};
@@ -158,6 +163,8 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
                                                      text::format_number(a.image_zero_percent));
         }
     }
+    if (a.image_objects_only && input_kind(a.reference) != InputKind::scene)
+        top.fail("image.region", "\"objects\" needs a scene as the reference (its objects say which pixels count)");
     if (top.has("rules")) {
         const json& rules = top.at("rules");
         if (!rules.is_array()) top.fail("rules", "must be an array");

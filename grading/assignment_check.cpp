@@ -87,6 +87,8 @@ AssignmentCheck check_assignment(const Assignment& a) {
                                        std::to_string(top_level - 1));
     if (a.image_points > 0 && a.image_tolerance.fail.percent >= 100)
         error("image.fail_percent", "100 lets every render pass; less than 100");
+    if (scene && a.image_objects_only && scene->objects.empty())
+        error("image.region", "\"objects\" with a reference scene without objects: no pixel would be compared");
     const nlohmann::json document = scene ? scene_to_json(*scene) : nlohmann::json();
     for (std::size_t i = 0; i < a.rules.size(); ++i) {
         const Rule& rule = a.rules[i];

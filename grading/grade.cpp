@@ -1,9 +1,11 @@
 #include "grading/grade.h"
 
+#include "analysis/pixel_probe.h"
 #include "grading/image_input.h"
 #include "io/message_text.h"
 #include "scene/load.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,20 +33,41 @@ Check image_check(const Assignment& assignment, const Comparison& c, const NonFi
     char line[200];
     std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
                   100.0 * c.same_share(), off, c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
-    check.reason = std::string("image: ") + line;
+    const std::string region = assignment.image_objects_only && c.pixels > 0
+                                   ? "the objects' " + std::to_string(c.pixels) + " pixels: "
+                                   : std::string();
+    check.reason = "image: " + region + line;
     if (nonfinite.pixels > 0) {
         // Whatever levels the display gave them, values that are not numbers
         // match nothing: the check fails, with no points, partial or not.
         check.ok = false;
         check.earned = 0;
         check.reason = "image: " + nonfinite_text(nonfinite) +
-                       " in the render (a material gives values that are not numbers): no image points; " + line;
+                       " in the render (a material gives values that are not numbers): no image points; " + region + line;
         return check;
     }
     if (!check.ok && assignment.image_zero_percent > 0)
         check.reason += ": " + text::format_number(check.earned) + " of " + text::format_number(check.points) +
                         " points (none at " + text::format_number(assignment.image_zero_percent) + " %)";
     return check;
+}
+
+// The pixels of `image` inside `region`, in order, as one row (the
+// comparison counts and shares only them).
+LevelImage in_region(const LevelImage& image, const std::vector<std::uint8_t>& region) {
+    LevelImage out;
+    out.bits = image.bits;
+    out.height = 1;
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        if (!region[i]) continue;
+        out.levels.insert(out.levels.end(), image.levels.begin() + std::ptrdiff_t(3 * i),
+                          image.levels.begin() + std::ptrdiff_t(3 * i + 3));
+        if (image.has_linear())
+            out.linear.insert(out.linear.end(), image.linear.begin() + std::ptrdiff_t(3 * i),
+                              image.linear.begin() + std::ptrdiff_t(3 * i + 3));
+    }
+    out.width = int(out.levels.size() / 3);
+    return out;
 }
 
 void total(Grade& grade, const Assignment& assignment) {
@@ -81,6 +104,12 @@ LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8
     renderer->render(scene);
     Rgb8Image shown = renderer->read_display();
     LevelImage image = levels_from_png(shown, scene.display.bits);
+    if (assignment.image_objects_only) {
+        // The pixels the objects cover, as the CPU picker (the explorer's probe) sees them.
+        const std::vector<int> ids = ScenePicker(scene).object_ids();
+        image.region.resize(ids.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) image.region[i] = ids[i] >= 0 ? 1 : 0;
+    }
     if (display) *display = std::move(shown);
     return image;
 }
@@ -91,7 +120,12 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
     try {
         Thresholds tolerance;
         tolerance.fail = assignment.image_tolerance.fail;
-        grade.comparison = compare_levels(reference, render, tolerance);
+        const bool whole = std::count(reference.region.begin(), reference.region.end(), 1) == 0;
+        grade.comparison = whole || reference.width != render.width ||
+                                   reference.height != render.height || reference.bits != render.bits
+                               ? compare_levels(reference, render, tolerance)
+                               : compare_levels(in_region(reference, reference.region), in_region(render, reference.region),
+                                                tolerance);
         grade.checks.push_back(image_check(assignment, *grade.comparison, nonfinite));
     } catch (const CompareError& e) {
         // A student's display of another size or depth is their mistake, not an error of the run.

@@ -680,6 +680,53 @@ TEST(GradeCheck, ATimeBudgetOfZeroIsRefused) {
     EXPECT_NE(check.err.find("a.json: time_budget: must be in (0, 3600] seconds, got 0"), std::string::npos) << check.err;
 }
 
+TEST(GradeRegion, ObjectsRegionLetsTheBackgroundChangeFreely) {
+    TempDir dir;
+    const std::string all = write_assignment(dir, "all.json", [](json&) {});
+    const std::string objects = write_assignment(dir, "objects.json", [](json& a) { a["image"]["region"] = "objects"; });
+    fs::create_directories(dir.file("subs"));
+    json recoloured = json::parse(good_scene());
+    recoloured["background"] = {0.6, 0.2, 0.2};
+    write_text(dir.file("subs/recoloured.json"), recoloured.dump());
+    write_text(dir.file("subs/weaker.json"), weaker_scene());
+    ASSERT_EQ(run_m3055({"grade", all, dir.file("subs"), "--out", dir.file("all")}).exit_code, 0);
+    const RunResult run = run_m3055({"grade", objects, dir.file("subs"), "--out", dir.file("objects")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto whole = by_student(read_json(dir.file("all/grades.json")));
+    const auto region = by_student(read_json(dir.file("objects/grades.json")));
+    // The whole picture: the new background costs the image points; the objects alone: it does not.
+    EXPECT_EQ(whole.at("recoloured")["checks"][0]["ok"], false);
+    EXPECT_EQ(region.at("recoloured")["checks"][0]["ok"], true) << region.at("recoloured")["checks"][0]["reason"];
+    EXPECT_EQ(region.at("recoloured")["score"], 100);
+    const json& c = region.at("recoloured")["comparison"];
+    EXPECT_EQ(c["same_pixels"], c["pixels"]);
+    EXPECT_GT(c["pixels"].get<long>(), 1000);
+    EXPECT_LT(c["pixels"].get<long>(), 512 * 320 / 2) << "the sphere, not the whole display";
+    const std::string reason = region.at("recoloured")["checks"][0]["reason"];
+    EXPECT_EQ(reason.rfind("image: the objects' " + std::to_string(c["pixels"].get<long>()) + " pixels: 100.00 %", 0), 0u)
+        << reason;
+    // A wrong material still fails inside the region.
+    EXPECT_EQ(region.at("weaker")["checks"][0]["ok"], false);
+}
+
+TEST(GradeRegion, RegionMustBeAllOrObjectsWithASceneReference) {
+    TempDir dir;
+    const std::string bad = write_assignment(dir, "bad.json", [](json& a) { a["image"]["region"] = "sphere"; });
+    const RunResult run = run_m3055({"grade", "--check", bad});
+    EXPECT_EQ(run.exit_code, 1);
+    EXPECT_NE(run.err.find("bad.json: image.region: must be \"all\" or \"objects\", got \"sphere\""), std::string::npos)
+        << run.err;
+    ASSERT_EQ(run_m3055({"render", "--scene", dir.file("reference.json"), "--out", dir.file("ref.png")}).exit_code, 0);
+    const std::string image = write_assignment(dir, "image.json", [](json& a) {
+        a["reference"] = "ref.png";
+        a["image"]["region"] = "objects";
+    });
+    const RunResult png = run_m3055({"grade", "--check", image});
+    EXPECT_EQ(png.exit_code, 1);
+    EXPECT_NE(png.err.find("image.json: image.region: \"objects\" needs a scene as the reference"), std::string::npos)
+        << png.err;
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
