@@ -39,6 +39,12 @@ std::string gradescope_json(const GradeReport& report);
 std::string report_html(const GradeReport& report,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
 
+// OUT/feedback/NAME.html: one self-contained page to hand back to one
+// student: their render, the reference, the difference, the score and every
+// check's line (passed ones too); nothing of any other student.
+std::string feedback_html(const GradeReport& report, const nlohmann::json& student,
+                          const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
+
 std::string base64(const std::vector<std::uint8_t>& bytes);
 
 }  // namespace m3055::grading

@@ -41,7 +41,7 @@ constexpr const char* kTables[] = {"grades.csv", "grades.json", "report.html"};
 // The students' own files, each in a folder of its kind, named after the
 // student alone (submissions.h: output_stem), so no student's name can clash
 // with an output of the run or with another student's file.
-constexpr const char* kStudentFolders[] = {"students", "diffs"};
+constexpr const char* kStudentFolders[] = {"students", "diffs", "feedback"};
 
 void prepare_out_dir(const std::string& out_dir) {
     std::error_code error;
@@ -62,16 +62,18 @@ void prepare_out_dir(const std::string& out_dir) {
 
 std::string join(const std::string& dir, const std::string& name) { return join_path(dir, name); }
 
-// The folder holds one run's output: the students' images of an earlier run
+// The folder holds one run's output: the students' files of an earlier run
 // whose students are not in this one go (only .png files in students/ and
-// diffs/, the run's own folders: nothing else of --out is touched).
+// diffs/ and .html in feedback/, the run's own folders: nothing else of
+// --out is touched).
 void remove_stale_images(const std::string& out_dir, const std::set<std::string>& written) {
     for (const char* folder : kStudentFolders) {
         std::error_code error;
         for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(out_dir) / folder, error)) {
             const std::string name = std::string(folder) + "/" + entry.path().filename().string();
             std::error_code type_error;
-            if (entry.path().extension() == ".png" && entry.is_regular_file(type_error) && !written.count(name))
+            const bool ours = entry.path().extension() == (std::string(folder) == "feedback" ? ".html" : ".png");
+            if (ours && entry.is_regular_file(type_error) && !written.count(name))
                 fs::remove(entry.path(), type_error);
         }
     }
@@ -213,8 +215,19 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
     }
 }
 
+// Each student's feedback page, one file at a time (each holds three images).
+void write_feedback(const std::string& out_dir, const GradeReport& report,
+                    const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    for (const json& s : report.students) {
+        if (!s.contains("feedback")) continue;
+        const std::string page = feedback_html(report, s, image_bytes);
+        write_file_atomic(join(out_dir, s["feedback"].get<std::string>()), page.data(), page.size());
+    }
+}
+
 void write_tables(const std::string& out_dir, const GradeReport& report, const std::string& gradescope,
                   const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    write_feedback(out_dir, report, image_bytes);
     const auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
     std::vector<FileContents> files = {{join(out_dir, "grades.csv"), bytes(grades_csv(report))},
                                        {join(out_dir, "grades.json"), bytes(grades_json(report))},
@@ -291,6 +304,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
         Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir, class_dir);
         const Grade& grade = graded.grade;
         json entry = grade_json(grade, grade.broken.empty() ? s.file_stem : "");
+        entry["feedback"] = "feedback/" + s.file_stem + ".html";
         if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
         report.students.push_back(std::move(entry));
         while (!writing.empty() &&
@@ -311,6 +325,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
         if (student["images"].is_object())
             for (const char* key : {"render", "diff"})
                 if (!student["images"][key].get<std::string>().empty()) written.insert(student["images"][key].get<std::string>());
+    for (const json& student : report.students) written.insert(student["feedback"].get<std::string>());
     remove_stale_images(options.out_dir, written);
     write_tables(options.out_dir, report, options.gradescope,
                  [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
@@ -401,6 +416,14 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
         if (!names.insert(s["student"].get<std::string>()).second)
             throw std::runtime_error("--merge: " + text::quote_name(s["student"].get<std::string>()) +
                                      " is graded in two shards");
+        if (s.contains("feedback")) {
+            // A page of feedback/, never a path out of it.
+            const std::string name = s["feedback"].get<std::string>();
+            const std::string file = name.compare(0, 9, "feedback/") == 0 ? name.substr(9) : "";
+            if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..")
+                throw std::runtime_error(text::quote_name(shard_dirs[shard] + "/grades.json") +
+                                         ": feedback: not a file name: " + text::quote(name));
+        }
         report.students.push_back(s);
         if (s["images"].is_object())
             for (const char* key : {"render", "diff"})
@@ -436,6 +459,10 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
     for (auto& copier : copiers) copier.get();
     std::set<std::string> written;
     for (const auto& [name, dir] : image_dir) written.insert(name);
+    for (const json& student : report.students) {
+        if (!student.contains("feedback")) continue;
+        written.insert(student["feedback"].get<std::string>());
+    }
     remove_stale_images(out_dir, written);
     write_tables(out_dir, report, gradescope, [&](const std::string& name) {
         return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(out_dir, name));

@@ -727,6 +727,66 @@ TEST(GradeRegion, RegionMustBeAllOrObjectsWithASceneReference) {
         << png.err;
 }
 
+// The page after Chromium ran its script (--dump-dom).
+std::string dom_of(TempDir& dir, const std::string& page) {
+    const std::string dom = dir.file("dom.html");
+    const std::string command = "chromium --headless --no-sandbox --disable-gpu --user-data-dir=" + dir.file("profile") +
+                                " --virtual-time-budget=5000 --dump-dom 'file://" + page + "' > " + dom + " 2>/dev/null";
+    if (std::system(command.c_str()) != 0) return "";
+    return read_text(dom);
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+TEST(GradeReport, SummaryCheckColumnsFilterAndFeedbackPagesInHeadlessChromium) {
+    if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed";
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/alice.json"), good_scene());
+    write_text(dir.file("subs/bob.json"), weaker_scene());
+    write_text(dir.file("subs/" + std::string(200, 'L') + ".json"), good_scene_variant(1));  // one long unbroken name
+    write_text(dir.file("subs/broken.json"), "{");
+    write_text(dir.file("roster.txt"), "alice\nbob\nbroken\nzed\n" + std::string(200, 'L') + "\n");
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out"), "--roster",
+                         dir.file("roster.txt")}).exit_code, 0);
+    const std::string dom = dom_of(dir, dir.file("out/report.html"));
+    ASSERT_FALSE(dom.empty());
+    EXPECT_NE(dom.find("id=\"count-graded\">3<"), std::string::npos);
+    EXPECT_NE(dom.find("id=\"count-refused\">1<"), std::string::npos);
+    EXPECT_NE(dom.find("id=\"count-missing\">1<"), std::string::npos);
+    EXPECT_NE(dom.find("id=\"mean\">62.5<"), std::string::npos);     // (100 + 50 + 100 + 0) / 4
+    EXPECT_NE(dom.find("id=\"median\">75<"), std::string::npos);
+    EXPECT_NE(dom.find("id=\"pass-rate\">2 of 4 (50 %)<"), std::string::npos);
+    // One column and one pass rate a check (the image and six rules).
+    const std::string rates = dom.substr(dom.find("id=\"check-rates\""));
+    EXPECT_NE(rates.find("<td>rules[0] (model)</td><td class=\"num\">2 of 3 (67 %)</td>"), std::string::npos);
+    const std::string grades = dom.substr(dom.find("<table id=\"grades\""));
+    EXPECT_EQ(count_of(grades.substr(0, grades.find("</thead>")), "<th data-col"), 3u + 7u);
+    EXPECT_EQ(count_of(grades, "<td class=\"check ok\""), 3u * 7u - 2u);  // bob fails the image and the model
+    EXPECT_EQ(count_of(grades, "<td class=\"check no\""), 2u);
+    EXPECT_EQ(count_of(grades, "data-status=\"missing\""), 1u);
+    EXPECT_EQ(count_of(grades, "data-status=\"refused\""), 1u);
+    // The script ran: the filter shows every row at first.
+    EXPECT_NE(dom.find("id=\"shown\">5 rows<"), std::string::npos);
+    // A feedback page: that student's render, the reference, the difference, every check; no one else.
+    const std::string page = dom_of(dir, dir.file("out/feedback/bob.html"));
+    EXPECT_NE(page.find("<h2 id=\"student\">bob</h2>"), std::string::npos);
+    EXPECT_EQ(count_of(page, "<img"), 3u);
+    EXPECT_EQ(count_of(page.substr(page.find("<ul id=\"checks\"")), "<li"), 7u);
+    EXPECT_EQ(page.find("alice"), std::string::npos);
+    EXPECT_NE(read_text(dir.file("out/feedback/zed.html")).find("no submission"), std::string::npos);
+    // Screenshots to look at (kept when M3055_KEEP_SCREENSHOTS names a folder).
+    if (const char* keep = std::getenv("M3055_KEEP_SCREENSHOTS")) {
+        std::system(("chromium --headless=new --no-sandbox --disable-gpu --user-data-dir=" + dir.file("profile2") +
+                     " --screenshot=" + std::string(keep) + "/report.png --window-size=1280,1000 file://" +
+                     dir.file("out/report.html") + " 2>/dev/null").c_str());
+    }
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
