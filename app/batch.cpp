@@ -187,7 +187,12 @@ std::size_t run_batch(const std::function<Capture&()>& capture, const std::vecto
             // The same steps, and so the same bytes, as Capture::render_to_files.
             auto display = std::make_shared<Rgb8Image>(renderer.read_display());
             auto raw = std::make_shared<RgbFloatImage>();
-            if (!item.raw.empty()) *raw = renderer.read_raw();
+            const bool check_finite = grading::may_render_nonfinite(scene);  // a .brdf material
+            if (!item.raw.empty() || check_finite) *raw = renderer.read_raw();
+            if (check_finite)
+                if (const grading::NonFinite nonfinite = grading::count_nonfinite(*raw); nonfinite.pixels > 0 && options.warned)
+                    options.warned(i, item, nonfinite_warning(item.scene, nonfinite));
+            if (item.raw.empty()) *raw = RgbFloatImage();
             bytes_in_flight += bytes;
             pending.push_back({i, bytes, pool.submit([&item, display, raw, &options]() {
                                    write_capture_files(item.out, *display, item.raw, *raw, options.on_written);

@@ -32,6 +32,10 @@ struct BatchOptions {
     // Runs under the file-commit lock each time an item's files are all in
     // place (app/interrupt.h counts them there, so its count is exact).
     std::function<void()> on_written;
+    // Called (on the rendering thread) for a scene whose render has NaN or
+    // infinite pixels, with the warning line (capture.h: nonfinite_warning);
+    // the scene is written all the same and does not count as failed.
+    std::function<void(std::size_t index, const BatchItem& item, const std::string& warning)> warned;
 };
 
 // Renders every item with one context and renderer, made by `capture` when

@@ -4,6 +4,7 @@
 
 #include "gl/context.h"
 #include "frame/renderer.h"
+#include "grading/nonfinite.h"
 #include "scene/scene.h"
 
 #include <chrono>
@@ -28,13 +29,18 @@ std::optional<std::chrono::steady_clock::time_point> scene_deadline(std::chrono:
 // "SCENE: over its time budget: not drawn within 30 s (--scene-timeout 30)".
 std::string over_budget_message(const std::string& scene_path, double seconds);
 
+// "m3055: warning: SCENE: 12 pixels are NaN in the render (...)": what
+// `render` and `batch` print for a render with non-finite pixels.
+std::string nonfinite_warning(const std::string& scene_path, const grading::NonFinite& nonfinite);
+
 class Capture {
 public:
     explicit Capture(Backend backend);
     // Renders `scene` and writes the PNG (and the PFM when raw_path is not
     // empty), each atomically. Throws on any failure; writes nothing then.
+    // `nonfinite`, when given: the render's NaN and infinite pixels, counted.
     void render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path,
-                         const std::function<void()>& committed = {});
+                         const std::function<void()>& committed = {}, grading::NonFinite* nonfinite = nullptr);
     const HeadlessContext& context() const { return *context_; }
     Renderer& renderer() { return *renderer_; }
 

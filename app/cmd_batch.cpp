@@ -12,6 +12,7 @@
 
 #include "grading/submissions.h"
 #include "image/image.h"
+#include "io/message_text.h"
 #include "io/scene_inputs.h"
 
 #include <nlohmann/json.hpp>
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace m3055 {
@@ -63,9 +65,13 @@ std::vector<BatchItem> batch_items(const BatchCommandOptions& options, std::stri
     return mine;
 }
 
+// Paths are bytes; the report's are shown as grade shows names
+// (grading/submissions.h: shown_name): as they are when valid UTF-8 without
+// controls, a Latin-1 byte as \xE9.
 nlohmann::json report_entry(const BatchItem& item, const std::string& error, double seconds) {
-    return {{"scene", item.scene}, {"status", error.empty() ? "ok" : "failed"}, {"message", error},
-            {"seconds", seconds},   {"out", error.empty() ? item.out : ""},     {"raw", error.empty() ? item.raw : ""}};
+    const auto shown = [](const std::string& path) { return grading::shown_name(path); };
+    return {{"scene", shown(item.scene)}, {"status", error.empty() ? "ok" : "failed"}, {"message", error},
+            {"seconds", seconds}, {"out", error.empty() ? shown(item.out) : ""}, {"raw", error.empty() ? shown(item.raw) : ""}};
 }
 
 }  // namespace
@@ -106,6 +112,15 @@ void add_batch_command(CLI::App& app) {
                    error_line("interrupted by " + signal_name(signal) + ": " + std::to_string(written.load()) + " of " +
                               std::to_string(total.load()) + " scenes written, the rest not");
         });
+        // Usage errors (exit 2), before anything is read or written.
+        try {
+            if (options->out_dir.empty() && options->inputs.size() != 1)
+                throw std::invalid_argument("batch: give one MANIFEST.json, or scenes, folders or patterns with --out DIR");
+            grading::parse_shard(options->shard);
+        } catch (const std::invalid_argument& error) {
+            std::cerr << error_line(error.what()) << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
         std::size_t failures = 0;
         try {
             std::string manifest;
@@ -123,6 +138,12 @@ void add_batch_command(CLI::App& app) {
             BatchOptions batch;
             batch.on_written = [&] { ++written; };
             batch.scene_timeout_s = options->scene_timeout;
+            // A render with NaN or infinite pixels: written, exit status unchanged, one line.
+            std::map<const BatchItem*, std::string> warnings;
+            batch.warned = [&](std::size_t, const BatchItem& item, const std::string& warning) {
+                std::cerr << (interactive ? "\r\033[K" : "") << warning << "\n";
+                warnings[&item] = text::one_line(warning.substr(std::string("m3055: warning: ").size()));
+            };
             // Seconds between one item's report and the next: rendering and
             // writing overlap, so this is each item's share of the run's time.
             nlohmann::json report = nlohmann::json::array();
@@ -132,13 +153,14 @@ void add_batch_command(CLI::App& app) {
                 [&](std::size_t, const BatchItem& item, const std::string& error) {
                     const auto now = std::chrono::steady_clock::now();
                     report.push_back(report_entry(item, error, std::chrono::duration<double>(now - last).count()));
+                    report.back()["warning"] = warnings.count(&item) ? warnings[&item] : "";
                     last = now;
                     progress.step(item.out, error);
                 },
                 batch);
             progress.finish();
             if (!options->report.empty()) {
-                const std::string text = report.dump(1) + "\n";
+                const std::string text = report.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
                 write_file_atomic(options->report, text.data(), text.size());
             }
         } catch (const std::exception& error) {

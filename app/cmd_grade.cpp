@@ -11,10 +11,12 @@
 #include "interrupt.h"
 #include "progress.h"
 
+#include "grading/assignment_check.h"
 #include "grading/grade_run.h"
 #include "io/message_text.h"
 
 #include <cstdio>
+#include <stdexcept>
 #include <iostream>
 #include <memory>
 
@@ -25,31 +27,81 @@ namespace {
 struct GradeOptions {
     std::string assignment, submissions, out, shard = "1/1", gradescope, backend = "auto";
     std::vector<std::string> merge;
-    bool allow_brdf = false;
+    std::string roster;
+    bool allow_brdf = false, follow_symlinks = false, check = false;
 };
 
 void print_grade(const grading::Grade& grade) {
     const std::vector<std::string> reasons = grade.reasons();
-    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", text::quote_name(grade.student).c_str(),
+    // The student as every output shows the name (grading/submissions.h: shown_name:
+    // one line of valid UTF-8, at most 4 x 255 bytes).
+    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", grade.student.c_str(),
                  text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
-                 grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
+                 grade.missing ? "missing" : grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
                  reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+    for (const std::string& note : grade.notes)
+        std::fprintf(stderr, "  note: %s\n", text::one_line(note).c_str());
+}
+
+// What the folder held that was not graded, and the identical submissions: one line each.
+void print_folder(const nlohmann::json& folder) {
+    const std::size_t ignored = folder["ignored"].size();
+    if (ignored)
+        std::fprintf(stderr, "m3055: not graded: %zu entr%s of the folder\n", ignored, ignored == 1 ? "y" : "ies");
+    for (const auto& entry : folder["ignored"])
+        std::fprintf(stderr, "  %s: %s\n", entry["name"].get<std::string>().c_str(),
+                     entry["why"].get<std::string>().c_str());
+    for (const auto& group : folder["identical"]) {
+        std::string names;
+        for (const auto& name : group) names += (names.empty() ? "" : ", ") + name.get<std::string>();
+        std::fprintf(stderr, "m3055: byte-identical submissions: %s\n", text::one_line(names, 1000).c_str());
+    }
+}
+
+// `grade --check ASSIGNMENT.json`: exit 0 when the assignment has no error and
+// its reference earns every point of its rules, 1 otherwise.
+bool run_check(const GradeOptions& options) {
+    const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    for (const std::string& line : check.reference_fails) std::cerr << error_line(line) << "\n";
+    const std::string name = text::quote_name(options.assignment);
+    std::string summary = name + ": " + std::to_string(check.errors.size()) +
+                          (check.errors.size() == 1 ? " error" : " errors");
+    if (check.reference_is_scene)
+        summary += "; the reference scores " + text::format_number(check.reference_score) + " of " +
+                   text::format_number(assignment.max_score()) + " points";
+    else
+        summary += "; the reference is an image: the rules could not be checked against a scene";
+    std::cerr << "m3055: " << text::one_line(summary) << "\n";
+    return check.errors.empty() && check.reference_fails.empty();
 }
 
 void run_grade(const GradeOptions& options) {
     if (!options.merge.empty()) {
         const auto report = grading::merge_grading(options.merge, options.out, options.gradescope);
-        std::fprintf(stderr, "m3055: merged %zu shards, %zu submissions into %s\n", options.merge.size(),
-                     report.students.size(), text::quote_name(options.out).c_str());
+        std::fprintf(stderr, "m3055: merged %zu shard%s, %zu submission%s into %s\n", options.merge.size(),
+                     options.merge.size() == 1 ? "" : "s", report.students.size(),
+                     report.students.size() == 1 ? "" : "s", text::quote_name(options.out).c_str());
         return;
     }
-    if (options.submissions.empty()) throw std::runtime_error("grade: SUBMISSIONS folder is required (or --merge)");
     const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    // The assignment against its own reference: structural errors stop the
+    // run before anything is written; rules the reference fails are said.
+    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    if (!check.errors.empty())
+        throw std::runtime_error(text::quote_name(options.assignment) + ": " + std::to_string(check.errors.size()) +
+                                 (check.errors.size() == 1 ? " error" : " errors") +
+                                 " in the assignment (m3055 grade --check): nothing graded");
+    for (const std::string& line : check.reference_fails) std::cerr << error_line("warning: " + line) << "\n";
     grading::GradeRunOptions run;
     run.out_dir = options.out;
     run.shard = grading::parse_shard(options.shard);
     run.gradescope = options.gradescope;
     run.graded = print_grade;
+    run.class_options.roster = options.roster;
+    run.class_options.follow_symlinks = options.follow_symlinks;
     std::unique_ptr<Capture> capture;  // made when the first scene is drawn
     const Backend backend = parse_backend(options.backend);
     const auto report = grading::run_grading(
@@ -59,11 +111,20 @@ void run_grade(const GradeOptions& options) {
             return capture->renderer();
         },
         run);
-    std::size_t passed = 0;
-    for (const auto& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
-    std::fprintf(stderr, "m3055: graded %zu submission%s, %zu passed; wrote %s\n", report.students.size(),
-                 report.students.size() == 1 ? "" : "s", passed,
-                 text::quote_name(options.out + "/report.html").c_str());
+    print_folder(report.folder);
+    std::size_t passed = 0, missing = 0, refused = 0;
+    for (const auto& s : report.students) {
+        passed += s["passed"].get<bool>() ? 1 : 0;
+        missing += s["missing"].get<bool>() ? 1 : 0;
+        refused += !s["missing"].get<bool>() && !s["broken"].get<std::string>().empty() ? 1 : 0;
+    }
+    const std::size_t submitted = report.students.size() - missing;
+    std::string line = "m3055: graded " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
+    if (refused) line += " (" + std::to_string(refused) + " refused)";
+    if (options.shard != "1/1") line += " of shard " + options.shard;
+    line += ", " + std::to_string(passed) + " passed";
+    if (missing) line += "; " + std::to_string(missing) + " on the roster with no submission";
+    std::fprintf(stderr, "%s; wrote %s\n", line.c_str(), text::quote_name(options.out + "/report.html").c_str());
 }
 
 }  // namespace
@@ -74,7 +135,10 @@ void add_grade_command(CLI::App& app) {
         "grade", "Grade a folder of submitted scenes against an assignment: grades.csv, grades.json, report.html");
     command->add_option("assignment", options->assignment, "Assignment JSON (docs/grading.md)");
     command->add_option("submissions", options->submissions, "Folder of NAME.json or NAME/scene.json submissions, or one NAME.json");
-    command->add_option("--out", options->out, "Output folder")->required();
+    command->add_option("--out", options->out, "Output folder (required, except with --check)");
+    command->add_flag("--check", options->check,
+                      "Check ASSIGNMENT.json against its reference (model names, paths, objects, lights, thresholds) "
+                      "and grade the reference against the rules; exit 1 on a problem");
     command->add_option("--shard", options->shard, "Grade only shard K of N (sorted names), e.g. 2/4")
         ->capture_default_str();
     command->add_option("--merge", options->merge, "Merge the outputs of shard runs (their --out folders)")
@@ -82,6 +146,11 @@ void add_grade_command(CLI::App& app) {
     command->add_option("--gradescope", options->gradescope, "Also write a Gradescope-style results.json here");
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    command->add_option("--roster", options->roster,
+                        "File of the class's names, one a line: a name with no submission gets a row (no submission), "
+                        "a submission not on it a note");
+    command->add_flag("--follow-symlinks", options->follow_symlinks,
+                      "Grade submissions that are symbolic links staying inside the folder (refused otherwise)");
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
     command->callback([options]() {
@@ -92,14 +161,30 @@ void add_grade_command(CLI::App& app) {
         const InterruptGuard interrupt([](int signal) {
             return error_line("interrupted by " + signal_name(signal) + ": grades.csv, grades.json and report.html not written");
         });
+        // Usage errors (docs/grading.md: exit 2), before anything is read or written.
         try {
-            if (options->merge.empty() && options->assignment.empty())
-                throw std::runtime_error("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
-            run_grade(*options);
+            if (options->check && (options->assignment.empty() || !options->submissions.empty() ||
+                                   !options->merge.empty() || !options->out.empty()))
+                throw std::invalid_argument("grade --check takes ASSIGNMENT.json alone");
+            if (!options->check && options->out.empty()) throw std::invalid_argument("grade: --out is required");
+            if (!options->check && options->merge.empty() && (options->assignment.empty() || options->submissions.empty()))
+                throw std::invalid_argument("grade: ASSIGNMENT.json and SUBMISSIONS/ are required (or --merge DIR...)");
+            if (!options->merge.empty() && !options->assignment.empty())
+                throw std::invalid_argument("grade: --merge takes the shards' folders, not ASSIGNMENT.json and SUBMISSIONS/");
+            grading::parse_shard(options->shard);
+        } catch (const std::invalid_argument& error) {
+            std::cerr << error_line(error.what()) << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
+        bool ok = true;
+        try {
+            if (options->check) ok = run_check(*options);
+            else run_grade(*options);
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
-            throw CLI::RuntimeError(kExitFailure);
+            ok = false;
         }
+        if (!ok) throw CLI::RuntimeError(kExitFailure);
     });
 }
 

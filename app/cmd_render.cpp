@@ -56,12 +56,15 @@ void add_render_command(CLI::App& app) {
             // The budget covers loading and drawing, not making the GL context.
             capture.renderer().set_deadline(
                 scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));
+            grading::NonFinite nonfinite;
             try {
-                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; });
+                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, &nonfinite);
             } catch (const RenderTimeout&) {
                 throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +
                                          "; nothing written");
             }
+            // Written all the same (exit 0): the warning says what the PNG's levels there mean.
+            if (nonfinite.pixels > 0) std::cerr << nonfinite_warning(options->scene, nonfinite) << "\n";
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
             throw CLI::RuntimeError(kExitFailure);

@@ -1,9 +1,11 @@
 #include "grading/assignment.h"
 
+#include "grading/image_input.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
 #include "scene/json_parse.h"
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -127,7 +129,9 @@ const char* to_string(RuleKind kind) {
 double Assignment::max_score() const {
     double total = image_points;
     for (const Rule& rule : rules) total += rule.points;
-    return total;
+    // To the hundredth, as scores are (grade.cpp: total): 40 + 0.1 + 0.2 is
+    // 40.3, so a full score passes the default "pass" (the maximum).
+    return std::round(total * 100.0) / 100.0;
 }
 
 Assignment assignment_from_json(const std::string& text, const std::string& path) {
@@ -143,7 +147,11 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     if (top.has("start")) a.start = (folder / top.string("start")).string();
     if (top.has("image")) {
         const Fields image(top.at("image"), source, "image");
-        image.only({"points", "fail_levels", "fail_percent", "zero_percent"});
+        image.only({"points", "fail_levels", "fail_percent", "zero_percent", "region"});
+        const std::string region = image.string("region", std::string("all"));
+        if (region != "all" && region != "objects")
+            image.fail("image.region", "must be \"all\" or \"objects\", got " + text::quote(region));
+        a.image_objects_only = region == "objects";
         a.image_points = image.number("points", 0, 1e6);
         a.image_tolerance.fail = {int(image.number("fail_levels", 0, 255, 0.0)),
                                   image.number("fail_percent", 0, 100, 0.0)};
@@ -155,6 +163,8 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
                                                      text::format_number(a.image_zero_percent));
         }
     }
+    if (a.image_objects_only && input_kind(a.reference) != InputKind::scene)
+        top.fail("image.region", "\"objects\" needs a scene as the reference (its objects say which pixels count)");
     if (top.has("rules")) {
         const json& rules = top.at("rules");
         if (!rules.is_array()) top.fail("rules", "must be an array");
@@ -162,6 +172,8 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     }
     a.pass_score = top.number("pass", 0, a.max_score(), a.max_score());
     a.time_budget_s = top.number("time_budget", 0, 3600, 30.0);
+    // 0 is no budget at all: one hostile scene could hold the whole run.
+    if (!(a.time_budget_s > 0)) top.fail("time_budget", "must be in (0, 3600] seconds, got 0");
     return a;
 }
 

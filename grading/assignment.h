@@ -51,6 +51,9 @@ struct Assignment {
     // Partial credit: with more than fail.percent % of the pixels off, the image
     // points fall linearly to 0 at this share; 0 = none (all or nothing).
     double image_zero_percent = 0;
+    // "region": "objects": only the pixels the reference scene's objects cover
+    // are compared (the background may change freely); false: every pixel.
+    bool image_objects_only = false;
     std::vector<Rule> rules;
     double pass_score = 0;  // a submission passes with at least this score
     double time_budget_s = 30;  // each submission's render budget (capture.h: scene_deadline)

@@ -1,9 +1,11 @@
 #include "grading/grade.h"
 
+#include "analysis/pixel_probe.h"
 #include "grading/image_input.h"
 #include "io/message_text.h"
 #include "scene/load.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -21,7 +23,7 @@ double image_points_earned(const Assignment& assignment, double off) {
     return std::round(assignment.image_points * (zero - off) / (zero - allowed) * 100.0) / 100.0;
 }
 
-Check image_check(const Assignment& assignment, const Comparison& c) {
+Check image_check(const Assignment& assignment, const Comparison& c, const NonFinite& nonfinite) {
     Check check;
     check.label = "image";
     check.points = assignment.image_points;
@@ -31,18 +33,51 @@ Check image_check(const Assignment& assignment, const Comparison& c) {
     char line[200];
     std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
                   100.0 * c.same_share(), off, c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
-    check.reason = std::string("image: ") + line;
+    const std::string region = assignment.image_objects_only && c.pixels > 0
+                                   ? "the objects' " + std::to_string(c.pixels) + " pixels: "
+                                   : std::string();
+    check.reason = "image: " + region + line;
+    if (nonfinite.pixels > 0) {
+        // Whatever levels the display gave them, values that are not numbers
+        // match nothing: the check fails, with no points, partial or not.
+        check.ok = false;
+        check.earned = 0;
+        check.reason = "image: " + nonfinite_text(nonfinite) +
+                       " in the render (a material gives values that are not numbers): no image points; " + region + line;
+        return check;
+    }
     if (!check.ok && assignment.image_zero_percent > 0)
         check.reason += ": " + text::format_number(check.earned) + " of " + text::format_number(check.points) +
                         " points (none at " + text::format_number(assignment.image_zero_percent) + " %)";
     return check;
 }
 
+// The pixels of `image` inside `region`, in order, as one row (the
+// comparison counts and shares only them).
+LevelImage in_region(const LevelImage& image, const std::vector<std::uint8_t>& region) {
+    LevelImage out;
+    out.bits = image.bits;
+    out.height = 1;
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        if (!region[i]) continue;
+        out.levels.insert(out.levels.end(), image.levels.begin() + std::ptrdiff_t(3 * i),
+                          image.levels.begin() + std::ptrdiff_t(3 * i + 3));
+        if (image.has_linear())
+            out.linear.insert(out.linear.end(), image.linear.begin() + std::ptrdiff_t(3 * i),
+                              image.linear.begin() + std::ptrdiff_t(3 * i + 3));
+    }
+    out.width = int(out.levels.size() / 3);
+    return out;
+}
+
 void total(Grade& grade, const Assignment& assignment) {
     grade.max = assignment.max_score();
     grade.score = 0;
     for (const Check& check : grade.checks) grade.score += check.earned;
-    grade.passed = grade.broken.empty() && grade.score >= assignment.pass_score;
+    // To the hundredth, as every output shows it: 53.12, never 53.120000000000005.
+    grade.score = std::round(grade.score * 100.0) / 100.0;
+    grade.max = std::round(grade.max * 100.0) / 100.0;
+    grade.passed = grade.broken.empty() && grade.score >= std::round(assignment.pass_score * 100.0) / 100.0;
 }
 
 }  // namespace
@@ -69,18 +104,29 @@ LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8
     renderer->render(scene);
     Rgb8Image shown = renderer->read_display();
     LevelImage image = levels_from_png(shown, scene.display.bits);
+    if (assignment.image_objects_only) {
+        // The pixels the objects cover, as the CPU picker (the explorer's probe) sees them.
+        const std::vector<int> ids = ScenePicker(scene).object_ids();
+        image.region.resize(ids.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) image.region[i] = ids[i] >= 0 ? 1 : 0;
+    }
     if (display) *display = std::move(shown);
     return image;
 }
 
 Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,
-                  const LevelImage& render) {
+                  const LevelImage& render, const NonFinite& nonfinite) {
     Grade grade;
     try {
         Thresholds tolerance;
         tolerance.fail = assignment.image_tolerance.fail;
-        grade.comparison = compare_levels(reference, render, tolerance);
-        grade.checks.push_back(image_check(assignment, *grade.comparison));
+        const bool whole = std::count(reference.region.begin(), reference.region.end(), 1) == 0;
+        grade.comparison = whole || reference.width != render.width ||
+                                   reference.height != render.height || reference.bits != render.bits
+                               ? compare_levels(reference, render, tolerance)
+                               : compare_levels(in_region(reference, reference.region), in_region(render, reference.region),
+                                                tolerance);
+        grade.checks.push_back(image_check(assignment, *grade.comparison, nonfinite));
     } catch (const CompareError& e) {
         // A student's display of another size or depth is their mistake, not an error of the run.
         grade.checks.push_back({"image", assignment.image_points, 0.0, false, std::string("image: ") + e.what() +
@@ -97,7 +143,8 @@ Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& rend
     renderer.render(scene);
     Rgb8Image display = renderer.read_display();
     LevelImage render = levels_from_png(display, scene.display.bits);  // the levels the display shows
-    Grade grade = grade_scene(assignment, scene, reference, render);
+    const NonFinite nonfinite = may_render_nonfinite(scene) ? count_nonfinite(renderer.read_raw()) : NonFinite{};
+    Grade grade = grade_scene(assignment, scene, reference, render, nonfinite);
     if (render_out) *render_out = std::move(render);
     if (display_out) *display_out = std::move(display);
     return grade;

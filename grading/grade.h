@@ -6,6 +6,7 @@
 
 #include "grading/assignment.h"
 #include "grading/level_compare.h"
+#include "grading/nonfinite.h"
 #include "grading/rules.h"
 #include "frame/renderer.h"
 #include "scene/scene.h"
@@ -25,6 +26,8 @@ struct Grade {
     std::optional<Comparison> comparison;
     std::string screenshot;     // the screenshot check's line when the student sent one, or ""
     bool screenshot_ok = true;
+    bool missing = false;            // on the roster, nothing submitted
+    std::vector<std::string> notes;  // information, no penalty (submissions.h: Submission::notes)
     // One line each: the broken reason, or the reason of each check that
     // failed and a mismatched screenshot; empty for a perfect submission.
     std::vector<std::string> reasons() const;
@@ -36,11 +39,13 @@ struct Grade {
 LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display = nullptr);
 
 // Scores a scene whose render is `render` (levels_from_render of it).
+// `nonfinite`: the render's pixels that are NaN or infinite (before the
+// display quantized them); any fail the image check, with no image points.
 Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelImage& reference,
-                  const LevelImage& render);
+                  const LevelImage& render, const NonFinite& nonfinite = {});
 
 // Renders `scene` with `renderer` (the caller sets its deadline, if any),
-// then grade_scene. The render is left in *render_out when given, and the
+// counts the render's non-finite pixels (its raw readback), then grade_scene. The render is left in *render_out when given, and the
 // display as read back (what `m3055 render` writes) in *display_out.
 Grade grade_one(const Assignment& assignment, const Scene& scene, Renderer& renderer, const LevelImage& reference,
                 LevelImage* render_out = nullptr, Rgb8Image* display_out = nullptr);

@@ -2,6 +2,7 @@
 
 #include "grading/comparison_json.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace m3055::grading {
@@ -37,32 +38,44 @@ std::string joined_reasons(const json& student) {
 }  // namespace
 
 json assignment_json(const Assignment& a) {
-    return {{"title", a.title}, {"max", a.max_score()}, {"pass", a.pass_score}, {"reference_image", "reference.png"}};
+    const auto hundredths = [](double value) { return std::round(value * 100.0) / 100.0; };
+    return {{"title", a.title}, {"max", hundredths(a.max_score())}, {"pass", hundredths(a.pass_score)},
+            {"reference_image", "reference.png"}};
 }
 
-json grade_json(const Grade& g, bool images) {
+json grade_json(const Grade& g, const std::string& image_stem) {
     json checks = json::array();
     for (const Check& c : g.checks)
         checks.push_back({{"label", c.label}, {"points", c.points}, {"earned", c.earned}, {"ok", c.ok}, {"reason", c.reason}});
     json out = {{"student", g.student}, {"score", g.score},   {"max", g.max},       {"passed", g.passed},
-                {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot}};
+                {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot},
+                {"missing", g.missing},   {"notes", g.notes}};
     out["comparison"] = g.comparison ? to_json(*g.comparison) : json();
-    out["images"] = images ? json{{"render", g.student + ".png"}, {"diff", g.student + "-diff.png"}} : json();
+    out["images"] =
+        image_stem.empty() ? json() : json{{"render", "students/" + image_stem + ".png"}, {"diff", "diffs/" + image_stem + ".png"}};
     return out;
 }
 
 std::string grades_csv(const GradeReport& report) {
-    std::string out = "student,score,max,result,reasons\n";
-    for (const json& s : report.students)
+    std::string out = "student,score,max,result,reasons,notes\n";
+    for (const json& s : report.students) {
+        std::string notes;
+        if (s.contains("notes"))
+            for (const json& note : s["notes"]) notes += (notes.empty() ? "" : " | ") + note.get<std::string>();
         out += csv_field(s["student"].get<std::string>()) + "," + number_text(s["score"].get<double>()) + "," +
-               number_text(s["max"].get<double>()) + "," + (s["passed"].get<bool>() ? "pass" : "fail") + "," +
-               csv_field(joined_reasons(s)) + "\n";
+               number_text(s["max"].get<double>()) + "," +
+               (s.value("missing", false) ? "missing" : s["passed"].get<bool>() ? "pass" : "fail") + "," +
+               csv_field(joined_reasons(s)) + "," + csv_field(notes) + "\n";
+    }
     return out;
 }
 
 std::string grades_json(const GradeReport& report) {
-    json out = {{"assignment", report.assignment}, {"students", report.students}};
-    return out.dump(1) + "\n";
+    json out = {{"assignment", report.assignment}, {"folder", report.folder}, {"students", report.students}};
+    // Every name and reason is valid UTF-8 already (submissions.h: shown_name,
+    // text::escape); `replace` only makes sure a slip could never cost the
+    // class its tables.
+    return out.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string gradescope_json(const GradeReport& report) {
@@ -83,7 +96,7 @@ std::string gradescope_json(const GradeReport& report) {
     }
     json out = {{"tests", tests}};
     if (report.students.size() == 1) out["score"] = report.students[0]["score"];
-    return out.dump(1) + "\n";
+    return out.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string base64(const std::vector<std::uint8_t>& bytes) {

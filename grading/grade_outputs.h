@@ -19,12 +19,16 @@ namespace m3055::grading {
 
 struct GradeReport {
     nlohmann::json assignment;             // title, max, pass, reference image name
-    std::vector<nlohmann::json> students;  // sorted by "student"
+    std::vector<nlohmann::json> students;  // in the class's order (bytewise by file name)
+    // The whole class folder's, in every shard: "ignored" [{name, why}] and
+    // "identical" [[student, ...], ...] (submissions.h: ClassFolder).
+    nlohmann::json folder = {{"ignored", nlohmann::json::array()}, {"identical", nlohmann::json::array()}};
 };
 
 nlohmann::json assignment_json(const Assignment& assignment);
-// `images`: whether NAME.png and NAME-diff.png were written for this student.
-nlohmann::json grade_json(const Grade& grade, bool images);
+// `image_stem`: the student's images students/STEM.png and diffs/STEM.png
+// were written (submissions.h: output_stem), or "" when none were.
+nlohmann::json grade_json(const Grade& grade, const std::string& image_stem);
 
 std::string grades_csv(const GradeReport& report);
 std::string grades_json(const GradeReport& report);
@@ -34,6 +38,12 @@ std::string gradescope_json(const GradeReport& report);
 // few lines of inline script sort the table by a column; readable printed.
 std::string report_html(const GradeReport& report,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
+
+// OUT/feedback/NAME.html: one self-contained page to hand back to one
+// student: their render, the reference, the difference, the score and every
+// check's line (passed ones too); nothing of any other student.
+std::string feedback_html(const GradeReport& report, const nlohmann::json& student,
+                          const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
 
 std::string base64(const std::vector<std::uint8_t>& bytes);
 

@@ -7,10 +7,18 @@
 #include "io/input_file.h"
 #include "io/message_text.h"
 #include "passes/draw_chunks.h"
+#include "scene/json_brdf.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <optional>
 #include <chrono>
 #include <deque>
 #include <filesystem>
@@ -27,7 +35,13 @@ using nlohmann::json;
 
 namespace {
 
+std::string join_path(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+
 constexpr const char* kTables[] = {"grades.csv", "grades.json", "report.html"};
+// The students' own files, each in a folder of its kind, named after the
+// student alone (submissions.h: output_stem), so no student's name can clash
+// with an output of the run or with another student's file.
+constexpr const char* kStudentFolders[] = {"students", "diffs", "feedback"};
 
 void prepare_out_dir(const std::string& out_dir) {
     std::error_code error;
@@ -35,12 +49,35 @@ void prepare_out_dir(const std::string& out_dir) {
     if (!fs::is_directory(out_dir, error))
         throw std::runtime_error(text::quote_name(out_dir) + ": --out: cannot make the output folder: " +
                                  (error ? error.message() : "not a folder"));
+    for (const char* folder : kStudentFolders) {
+        fs::create_directories(fs::path(out_dir) / folder, error);
+        if (!fs::is_directory(fs::path(out_dir) / folder, error))
+            throw std::runtime_error(text::quote_name(join_path(out_dir, folder)) +
+                                     ": --out: cannot make the output folder: " + (error ? error.message() : "not a folder"));
+    }
     // Tables of an earlier run go first: after a run that was stopped there
     // are none, rather than old ones beside new images.
     for (const char* table : kTables) fs::remove(fs::path(out_dir) / table, error);
 }
 
-std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+std::string join(const std::string& dir, const std::string& name) { return join_path(dir, name); }
+
+// The folder holds one run's output: the students' files of an earlier run
+// whose students are not in this one go (only .png files in students/ and
+// diffs/ and .html in feedback/, the run's own folders: nothing else of
+// --out is touched).
+void remove_stale_images(const std::string& out_dir, const std::set<std::string>& written) {
+    for (const char* folder : kStudentFolders) {
+        std::error_code error;
+        for (const fs::directory_entry& entry : fs::directory_iterator(fs::path(out_dir) / folder, error)) {
+            const std::string name = std::string(folder) + "/" + entry.path().filename().string();
+            std::error_code type_error;
+            const bool ours = entry.path().extension() == (std::string(folder) == "feedback" ? ".html" : ".png");
+            if (ours && entry.is_regular_file(type_error) && !written.count(name))
+                fs::remove(entry.path(), type_error);
+        }
+    }
+}
 
 std::vector<std::uint8_t> read_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -64,13 +101,73 @@ struct Graded {
     std::size_t bytes = 0;  // what write_images holds until it has run
 };
 
-// Grades one submission: score 0 and its one-line reason for whatever is wrong with it.
+Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
+                              const std::function<Renderer&()>& renderer, const LevelImage& reference,
+                              const std::string& out_dir, const std::string& class_dir);
+
+// Grades one submission: score 0 and its one-line reason for whatever is
+// wrong with it; its notes (roster, links, identical files) carried over.
 Graded grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
-                        const LevelImage& reference, const std::string& out_dir) {
+                        const LevelImage& reference, const std::string& out_dir, const std::string& class_dir) {
+    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir, class_dir);
+    graded.grade.missing = s.missing;
+    graded.grade.notes = s.notes;
+    return graded;
+}
+
+// While one lives, the working folder is the class folder, so that every
+// message of the loader names the submission's files relative to it
+// ("alice/scene.json"), never with the path the teacher typed: the same
+// reasons on every node of a cluster, however each spells the path. Only
+// loading runs in it (rendering and the writer threads never depend on the
+// working folder: the output paths are absolute).
+class InClassFolder {
+public:
+    explicit InClassFolder(const std::string& folder) : saved_(::open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+        if (saved_ < 0 || ::chdir(folder.c_str()) != 0) {
+            if (saved_ >= 0) ::close(saved_);
+            throw std::runtime_error(text::quote_name(folder) + ": cannot enter the submissions folder: " +
+                                     std::strerror(errno));
+        }
+    }
+    ~InClassFolder() {
+        if (::fchdir(saved_) != 0) std::perror("m3055: cannot return to the working folder");
+        ::close(saved_);
+    }
+    InClassFolder(const InClassFolder&) = delete;
+    InClassFolder& operator=(const InClassFolder&) = delete;
+
+private:
+    int saved_;
+};
+
+std::string relative_to(const std::string& path, const std::string& folder) {
+    return path.empty() ? path : fs::path(path).lexically_relative(folder).string();
+}
+
+Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
+                              const std::function<Renderer&()>& renderer, const LevelImage& reference,
+                              const std::string& out_dir, const std::string& class_dir) {
     if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
+    const std::string scene_path = relative_to(s.scene, class_dir);
     try {
         const auto start = std::chrono::steady_clock::now();
-        const Scene scene = load_scene_file(s.scene);
+        Scene scene;
+        std::optional<LevelImage> screenshot;
+        std::string screenshot_error;
+        {
+            const InClassFolder in_class(class_dir);
+            // Nothing outside the submission is read: its .brdf files are its own.
+            const scene_json::BrdfConfinement confined(
+                relative_to(s.folder, class_dir),
+                "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file");
+            scene = load_scene_file(scene_path);
+            if (!s.screenshot.empty()) try {
+                    screenshot = read_level_image(relative_to(s.screenshot, class_dir), scene.display.bits);
+                } catch (const std::exception& e) {
+                    screenshot_error = e.what();
+                }
+        }
         Renderer& r = renderer();
         if (assignment.time_budget_s > 0)
             r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -83,7 +180,7 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         } catch (const RenderTimeout&) {
             r.set_deadline(std::nullopt);
             return {broken_grade(assignment, s.student,
-                                 text::quote_name(s.scene) + ": over its time budget: not drawn within " +
+                                 text::quote_name(scene_path) + ": over its time budget: not drawn within " +
                                      text::format_number(assignment.time_budget_s) +
                                      " s (the assignment's time_budget)"),
                     {}};
@@ -91,16 +188,17 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
         r.set_deadline(std::nullopt);
         grade.student = s.student;
         if (!s.screenshot.empty()) {
-            const std::string shown = text::quote_name(s.student + "/screenshot.png");
-            try {
-                check_screenshot(grade, read_level_image(s.screenshot, scene.display.bits), *render, shown);
-            } catch (const std::exception& e) {
+            const std::string shown = text::quote_name(s.name + "/screenshot.png");
+            if (screenshot) {
+                check_screenshot(grade, *screenshot, *render, shown);
+            } else {
                 grade.screenshot_ok = false;
-                grade.screenshot = e.what();
+                grade.screenshot = screenshot_error;
             }
         }
         const bool diff = grade.comparison.has_value();  // same size and depth as the reference
-        const std::string png = join(out_dir, s.student + ".png"), diff_png = join(out_dir, s.student + "-diff.png");
+        const std::string png = join(out_dir, "students/" + s.file_stem + ".png"),
+                          diff_png = join(out_dir, "diffs/" + s.file_stem + ".png");
         const std::size_t bytes = render->levels.size() * 3;  // levels, display and diff while encoding
         return {std::move(grade),
                 [render, display, diff, png, diff_png, &reference]() {
@@ -117,8 +215,28 @@ Graded grade_submission(const Assignment& assignment, const Submission& s, const
     }
 }
 
+// Each student's feedback page (each holds three images), made and written
+// by a few threads: every file is synced (image/atomic_file.cpp), and one at a
+// time the run would mostly wait for the disk. `image_bytes` only reads files.
+void write_feedback(const std::string& out_dir, const GradeReport& report,
+                    const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    constexpr std::size_t kWriters = 4;
+    std::vector<std::future<void>> writers;
+    for (std::size_t t = 0; t < kWriters; ++t)
+        writers.push_back(std::async(std::launch::async, [&, t]() {
+            for (std::size_t i = t; i < report.students.size(); i += kWriters) {
+                const json& s = report.students[i];
+                if (!s.contains("feedback")) continue;
+                const std::string page = feedback_html(report, s, image_bytes);
+                write_file_atomic(join(out_dir, s["feedback"].get<std::string>()), page.data(), page.size());
+            }
+        }));
+    for (auto& writer : writers) writer.get();
+}
+
 void write_tables(const std::string& out_dir, const GradeReport& report, const std::string& gradescope,
                   const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    write_feedback(out_dir, report, image_bytes);
     const auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
     std::vector<FileContents> files = {{join(out_dir, "grades.csv"), bytes(grades_csv(report))},
                                        {join(out_dir, "grades.json"), bytes(grades_json(report))},
@@ -130,16 +248,27 @@ void write_tables(const std::string& out_dir, const GradeReport& report, const s
 }  // namespace
 
 GradeReport run_grading(const Assignment& assignment, const std::string& submissions_dir,
-                        const std::function<Renderer&()>& renderer, const GradeRunOptions& options) {
+                        const std::function<Renderer&()>& renderer, const GradeRunOptions& given) {
+    // Absolute output paths: the loading of each submission runs inside the
+    // class folder (InClassFolder) while writer threads write.
+    GradeRunOptions options = given;
+    options.out_dir = fs::absolute(given.out_dir).string();
+    if (!given.gradescope.empty()) options.gradescope = fs::absolute(given.gradescope).string();
     std::error_code error;
+    const std::string class_dir = fs::is_directory(submissions_dir, error)
+                                      ? submissions_dir
+                                      : (fs::path(submissions_dir).parent_path().empty()
+                                             ? std::string(".")
+                                             : fs::path(submissions_dir).parent_path().string());
     if (fs::equivalent(submissions_dir, options.out_dir, error))
         throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
-    std::vector<Submission> all = find_submissions(submissions_dir);
+    ClassFolder folder = read_class(submissions_dir, options.class_options);
+    std::vector<Submission>& all = folder.submissions;
     // An --out folder inside the submissions folder (subs/grades/) is not a student.
     all.erase(std::remove_if(all.begin(), all.end(),
                              [&](const Submission& s) {
                                  std::error_code ignored;
-                                 return fs::equivalent(fs::path(submissions_dir) / s.student, options.out_dir, ignored);
+                                 return fs::equivalent(fs::path(submissions_dir) / s.name, options.out_dir, ignored);
                              }),
               all.end());
     const std::vector<Submission> mine = take_shard(all, options.shard);
@@ -155,6 +284,16 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
 
     GradeReport report;
     report.assignment = assignment_json(assignment);
+    for (const Ignored& entry : folder.ignored) report.folder["ignored"].push_back({{"name", entry.name}, {"why", entry.why}});
+    report.folder["identical"] = folder.identical;
+    report.folder["fingerprint"] = folder.fingerprint;
+    // The assignment as graded: its file and its reference's bytes.
+    report.assignment["digest"] =
+        content_digest(io::read_input_file(assignment.path) + '\0' +
+                       [&] {
+                           std::ifstream in(assignment.reference, std::ios::binary);
+                           return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+                       }());
     if (options.shard.n > 1)
         report.assignment["shard"] = std::to_string(options.shard.k) + "/" + std::to_string(options.shard.n);
     // A few writer jobs in flight: images are encoded and written (each file
@@ -171,9 +310,10 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     std::deque<Writing> writing;
     std::size_t bytes_in_flight = 0;
     for (const Submission& s : mine) {
-        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir);
+        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir, class_dir);
         const Grade& grade = graded.grade;
-        json entry = grade_json(grade, grade.broken.empty());
+        json entry = grade_json(grade, grade.broken.empty() ? s.file_stem : "");
+        entry["feedback"] = "feedback/" + s.file_stem + ".html";
         if (grade.broken.empty() && !grade.comparison) entry["images"]["diff"] = "";
         report.students.push_back(std::move(entry));
         while (!writing.empty() &&
@@ -189,6 +329,13 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
         if (options.graded) options.graded(grade);
     }
     for (auto& job : writing) job.done.get();
+    std::set<std::string> written;
+    for (const json& student : report.students)
+        if (student["images"].is_object())
+            for (const char* key : {"render", "diff"})
+                if (!student["images"][key].get<std::string>().empty()) written.insert(student["images"][key].get<std::string>());
+    for (const json& student : report.students) written.insert(student["feedback"].get<std::string>());
+    remove_stale_images(options.out_dir, written);
     write_tables(options.out_dir, report, options.gradescope,
                  [&](const std::string& name) { return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(options.out_dir, name)); });
     return report;
@@ -206,9 +353,10 @@ json read_shard(const std::string& dir) {
 }
 
 // Which shards are there: every K of one N, each once; a missing shard would
-// silently drop students from the class's grades.
-void check_shards(const std::vector<json>& docs, const std::vector<std::string>& dirs) {
-    std::set<int> seen;
+// silently drop students from the class's grades. Returns, for K = 1..N, the
+// index in `docs` of shard K.
+std::vector<std::size_t> check_shards(const std::vector<json>& docs, const std::vector<std::string>& dirs) {
+    std::map<int, std::size_t> seen;
     int n = 0;
     for (std::size_t i = 0; i < docs.size(); ++i) {
         const json& a = docs[i]["assignment"];
@@ -216,9 +364,9 @@ void check_shards(const std::vector<json>& docs, const std::vector<std::string>&
         const Shard parsed = parse_shard(shard);
         if (n && parsed.n != n)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " is not of the same " +
-                                     std::to_string(n) + " shards as the others");
+                                     std::to_string(n) + (n == 1 ? " shard" : " shards") + " as the others");
         n = parsed.n;
-        if (!seen.insert(parsed.k).second)
+        if (!seen.emplace(parsed.k, i).second)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": shard " + shard + " given twice");
         json plain = a;
         plain.erase("shard");
@@ -226,11 +374,31 @@ void check_shards(const std::vector<json>& docs, const std::vector<std::string>&
         first.erase("shard");
         if (plain != first)
             throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another assignment than " +
-                                     text::quote_name(dirs[0]));
+                                     text::quote_name(dirs[0]) + " (its title, points or digest differ)");
+        if (docs[i].value("folder", json()) != docs[0].value("folder", json()))
+            throw std::runtime_error(text::quote_name(dirs[i]) + ": graded another class folder than " +
+                                     text::quote_name(dirs[0]) + " (its fingerprint differs: other names or file contents)");
     }
-    for (int k = 1; k <= n; ++k)
+    std::vector<std::size_t> order;
+    for (int k = 1; k <= n; ++k) {
         if (!seen.count(k))
             throw std::runtime_error("--merge: shard " + std::to_string(k) + "/" + std::to_string(n) + " is missing");
+        order.push_back(seen[k]);
+    }
+    // Shard K holds the students whose index i in the class's sorted list has
+    // i % N == K - 1, so the shards' sizes follow from the class's size.
+    std::size_t total = 0;
+    for (const json& doc : docs) total += doc["students"].size();
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::size_t expected = total / order.size() + (k < total % order.size() ? 1 : 0);
+        const std::size_t held = docs[order[k]]["students"].size();
+        if (held != expected)
+            throw std::runtime_error(text::quote_name(dirs[order[k]]) + ": shard " + std::to_string(k + 1) + "/" +
+                                     std::to_string(n) + " holds " + std::to_string(held) + " submission" +
+                                     (held == 1 ? "" : "s") + ", not " + std::to_string(expected) +
+                                     " as a shard of these " + std::to_string(total) + " would: shards of different classes?");
+    }
+    return order;
 }
 
 }  // namespace
@@ -239,26 +407,45 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
                           const std::string& gradescope) {
     std::vector<json> docs;
     for (const std::string& dir : shard_dirs) docs.push_back(read_shard(dir));
-    check_shards(docs, shard_dirs);
+    const std::vector<std::size_t> order = check_shards(docs, shard_dirs);
     GradeReport report;
     report.assignment = docs[0]["assignment"];
     report.assignment.erase("shard");
+    if (docs[0].contains("folder")) report.folder = docs[0]["folder"];
     std::map<std::string, std::string> image_dir;  // image file name -> the shard folder holding it
     image_dir["reference.png"] = shard_dirs[0];
-    for (std::size_t i = 0; i < docs.size(); ++i)
-        for (const json& s : docs[i]["students"]) {
-            report.students.push_back(s);
-            if (s["images"].is_object())
-                for (const char* key : {"render", "diff"})
-                    if (!s["images"][key].get<std::string>().empty()) image_dir[s["images"][key]] = shard_dirs[i];
-        }
-    std::stable_sort(report.students.begin(), report.students.end(), [](const json& a, const json& b) {
-        return a["student"].get<std::string>() < b["student"].get<std::string>();
-    });
-    for (std::size_t i = 1; i < report.students.size(); ++i)
-        if (report.students[i]["student"] == report.students[i - 1]["student"])
-            throw std::runtime_error("--merge: " + text::quote_name(report.students[i]["student"].get<std::string>()) +
+    // Back in the class's order (bytewise by file name, which grades.json
+    // shows escaped): student i is number i / N of shard i % N + 1.
+    std::size_t total = 0;
+    for (const json& doc : docs) total += doc["students"].size();
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < total; ++i) {
+        const std::size_t shard = order[i % order.size()];
+        const json& s = docs[shard]["students"][i / order.size()];
+        if (!names.insert(s["student"].get<std::string>()).second)
+            throw std::runtime_error("--merge: " + text::quote_name(s["student"].get<std::string>()) +
                                      " is graded in two shards");
+        if (s.contains("feedback")) {
+            // A page of feedback/, never a path out of it.
+            const std::string name = s["feedback"].get<std::string>();
+            const std::string file = name.compare(0, 9, "feedback/") == 0 ? name.substr(9) : "";
+            if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..")
+                throw std::runtime_error(text::quote_name(shard_dirs[shard] + "/grades.json") +
+                                         ": feedback: not a file name: " + text::quote(name));
+        }
+        report.students.push_back(s);
+        if (s["images"].is_object())
+            for (const char* key : {"render", "diff"})
+                if (const std::string name = s["images"][key].get<std::string>(); !name.empty()) {
+                    // A file of the shard's students/ or diffs/, never a path out of them.
+                    const std::string folder = std::string(key) == "render" ? "students/" : "diffs/";
+                    const std::string file = name.compare(0, folder.size(), folder) == 0 ? name.substr(folder.size()) : "";
+                    if (file.empty() || file.find('/') != std::string::npos || file == "." || file == "..")
+                        throw std::runtime_error(text::quote_name(shard_dirs[shard] + "/grades.json") +
+                                                 ": images." + key + ": not a file name: " + text::quote(name));
+                    image_dir[name] = shard_dirs[shard];
+                }
+    }
     prepare_out_dir(out_dir);
     std::error_code error;
     // Copied by a few threads: each file is synced (image/atomic_file.cpp),
@@ -279,6 +466,13 @@ GradeReport merge_grading(const std::vector<std::string>& shard_dirs, const std:
             }
         }));
     for (auto& copier : copiers) copier.get();
+    std::set<std::string> written;
+    for (const auto& [name, dir] : image_dir) written.insert(name);
+    for (const json& student : report.students) {
+        if (!student.contains("feedback")) continue;
+        written.insert(student["feedback"].get<std::string>());
+    }
+    remove_stale_images(out_dir, written);
     write_tables(out_dir, report, gradescope, [&](const std::string& name) {
         return name.empty() ? std::vector<std::uint8_t>{} : read_bytes(join(out_dir, name));
     });

@@ -21,6 +21,7 @@ struct GradeRunOptions {
     std::string out_dir;
     Shard shard;                                // 1/1: every submission
     std::string gradescope;                     // also write this results.json, or ""
+    ClassOptions class_options;                 // --roster, --follow-symlinks
     std::function<void(const Grade&)> graded;  // after each submission (progress)
 };
 

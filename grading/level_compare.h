@@ -23,6 +23,9 @@ struct LevelImage {
     std::vector<std::uint8_t> levels;  // width * height * 3
     std::vector<float> linear;         // width * height * 3, or empty
     bool has_linear() const { return !linear.empty(); }
+    // A reference's region (assignment "region": "objects"): 1 for each
+    // pixel, rows top to bottom, that is compared; empty: every pixel.
+    std::vector<std::uint8_t> region;
 };
 
 // A PNG's bytes mapped back to levels: level = round(png * (2^bits - 1) / 255),

@@ -3,7 +3,10 @@
 // uploaded alone; pixelated scaling keeps the display's dots visible.
 #include "grading/grade_outputs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace m3055::grading {
 
@@ -38,15 +41,31 @@ table{border-collapse:collapse;width:100%}
 th,td{border:1px solid #999;padding:4px 6px;vertical-align:top;text-align:left}
 th{background:#eee;cursor:pointer}
 td.num{text-align:right;white-space:nowrap}
+td.name{overflow-wrap:anywhere;word-break:break-word;max-width:14em;min-width:8em}
+td.check{white-space:nowrap;text-align:center}td.check.ok{color:#060}td.check.no{color:#a00;background:#fdecec}
+#summary table{width:auto}#summary td,#summary th{cursor:auto}
+#controls{margin:0.8em 0}#controls input{width:18em}
+tr.hidden{display:none}
+#grades img{width:128px}
+#grades th,td.check{font-size:85%}#grades th{overflow-wrap:anywhere}#grades th:first-child{min-width:8em}
 img{width:256px;image-rendering:pixelated;display:block}
-.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}
+.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
 @media print{th{cursor:auto}tr{break-inside:avoid}img{width:200px}body{margin:0}}
 </style>
 )";
 
 // Click a header to sort by that column; numbers numerically (data-sort).
+// The filter (all / failed / refused / missing) and the search box hide rows.
 constexpr const char* kScript = R"(<script>
+function m3055filter(){var f=document.getElementById('filter').value,q=document.getElementById('search').value.toLowerCase();
+[].forEach.call(document.querySelectorAll('#grades tbody tr'),function(r){
+var ok=(f==='all'||r.dataset.status===f||(f==='failed'&&r.dataset.status!=='pass'))&&r.cells[0].textContent.toLowerCase().indexOf(q)>=0;
+r.classList.toggle('hidden',!ok);});
+var n=document.querySelectorAll('#grades tbody tr:not(.hidden)').length;document.getElementById('shown').textContent=n+(n===1?' row':' rows');}
+document.getElementById('filter').addEventListener('change',m3055filter);
+document.getElementById('search').addEventListener('input',m3055filter);
+m3055filter();
 document.querySelectorAll('th[data-col]').forEach(function(th){th.addEventListener('click',function(){
 var col=+th.dataset.col,body=document.querySelector('#grades tbody'),rows=[].slice.call(body.rows);
 var dir=th.dataset.dir==='asc'?-1:1;th.dataset.dir=dir===1?'asc':'desc';
@@ -61,16 +80,34 @@ std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& 
     return "<td><img alt=\"" + escape_html(alt) + "\" src=\"data:image/png;base64," + base64(png) + "\"></td>";
 }
 
-std::string student_row(const json& s,
+std::string student_row(const json& s, const std::vector<std::string>& labels,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     const std::string name = s["student"].get<std::string>();
     const bool passed = s["passed"].get<bool>();
     const double score = s["score"].get<double>();
-    std::string row = "<tr><td data-sort=\"" + escape_html(name) + "\">" + escape_html(name) + "</td>";
+    const bool missing = s.value("missing", false), refused = !missing && !s["broken"].get<std::string>().empty();
+    const std::string status = missing ? "missing" : refused ? "refused" : passed ? "pass" : "fail";
+    std::string row = "<tr data-status=\"" + status + "\"><td class=\"name\" data-sort=\"" + escape_html(name) + "\">" +
+                      escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
-    row += std::string("<td data-sort=\"") + (passed ? "pass" : "fail") + "\" class=\"" + (passed ? "pass" : "fail") +
-           "\">" + (passed ? "pass" : "fail") + "</td>";
+    const char* result = s.value("missing", false) ? "missing" : passed ? "pass" : "fail";
+    row += std::string("<td data-sort=\"") + result + "\" class=\"" + (passed ? "pass" : "fail") + "\">" + result + "</td>";
+    // One column a check: passed or not, and the points.
+    for (const std::string& label : labels) {
+        const json* found = nullptr;
+        for (const json& c : s["checks"])
+            if (c["label"] == label) found = &c;
+        if (!found) {
+            row += "<td class=\"check\" data-sort=\"-1\">&mdash;</td>";
+            continue;
+        }
+        const bool ok = (*found)["ok"].get<bool>();
+        row += std::string("<td class=\"check ") + (ok ? "ok" : "no") + "\" data-sort=\"" +
+               score_text((*found)["earned"].get<double>()) + "\" title=\"" +
+               escape_html((*found)["reason"].get<std::string>()) + "\">" + (ok ? "&#10004; " : "&#10008; ") +
+               score_text((*found)["earned"].get<double>()) + "/" + score_text((*found)["points"].get<double>()) + "</td>";
+    }
     std::vector<std::uint8_t> render, diff;
     if (!s["images"].is_null()) {
         render = image_bytes(s["images"]["render"].get<std::string>());
@@ -80,7 +117,101 @@ std::string student_row(const json& s,
     row += "<td data-sort=\"\"><ul>";
     for (const json& reason : s["reasons"]) row += "<li>" + escape_html(reason.get<std::string>()) + "</li>";
     if (s["reasons"].empty()) row += "<li>all checks passed</li>";
+    if (s.contains("notes"))
+        for (const json& note : s["notes"]) row += "<li class=\"note\">note: " + escape_html(note.get<std::string>()) + "</li>";
     return row + "</ul></td></tr>\n";
+}
+
+// The checks' labels, in the assignment's order (the first graded student's).
+std::vector<std::string> check_labels(const GradeReport& report) {
+    std::vector<std::string> labels;
+    for (const json& s : report.students)
+        if (s["checks"].is_array() && !s["checks"].empty()) {
+            for (const json& c : s["checks"]) labels.push_back(c["label"].get<std::string>());
+            break;
+        }
+    return labels;
+}
+
+std::string percent_text(std::size_t part, std::size_t whole) {
+    if (whole == 0) return "&mdash;";
+    char out[32];
+    std::snprintf(out, sizeof out, "%.0f %%", 100.0 * double(part) / double(whole));
+    return out;
+}
+
+// The class at a glance: counts, mean, median, pass rate, each check's pass rate.
+std::string class_summary(const GradeReport& report, const std::vector<std::string>& labels) {
+    std::size_t graded = 0, refused = 0, missing = 0, passed = 0;
+    std::vector<double> scores;
+    std::map<std::string, std::size_t> check_passed, check_total;
+    for (const json& s : report.students) {
+        if (s.value("missing", false)) {
+            ++missing;
+            continue;
+        }
+        scores.push_back(s["score"].get<double>());
+        passed += s["passed"].get<bool>() ? 1 : 0;
+        if (!s["broken"].get<std::string>().empty()) {
+            ++refused;
+            continue;
+        }
+        ++graded;
+        for (const json& c : s["checks"]) {
+            ++check_total[c["label"].get<std::string>()];
+            check_passed[c["label"].get<std::string>()] += c["ok"].get<bool>() ? 1 : 0;
+        }
+    }
+    double mean = 0, median = 0;
+    if (!scores.empty()) {
+        for (double v : scores) mean += v;
+        mean = std::round(mean / double(scores.size()) * 100.0) / 100.0;
+        std::sort(scores.begin(), scores.end());
+        const std::size_t n = scores.size();
+        median = n % 2 ? scores[n / 2] : (scores[n / 2 - 1] + scores[n / 2]) / 2.0;
+        median = std::round(median * 100.0) / 100.0;
+    }
+    std::string out = "<section id=\"summary\"><h2>Class summary</h2><table><tbody>\n";
+    const auto row = [&](const std::string& id, const std::string& name, const std::string& value) {
+        out += "<tr><th>" + name + "</th><td class=\"num\" id=\"" + id + "\">" + value + "</td></tr>\n";
+    };
+    row("count-graded", "graded", std::to_string(graded));
+    row("count-refused", "refused (broken submissions, 0 points)", std::to_string(refused));
+    row("count-missing", "missing (on the roster, no submission)", std::to_string(missing));
+    row("mean", "mean score (of the submissions)", scores.empty() ? "&mdash;" : score_text(mean));
+    row("median", "median score", scores.empty() ? "&mdash;" : score_text(median));
+    row("pass-rate", "passed", std::to_string(passed) + " of " + std::to_string(scores.size()) + " (" +
+                                   percent_text(passed, scores.size()) + ")");
+    out += "</tbody></table>\n<table id=\"check-rates\"><thead><tr><th>check</th><th>passed (of the graded)</th></tr>"
+           "</thead><tbody>\n";
+    for (const std::string& label : labels)
+        out += "<tr><td>" + escape_html(label) + "</td><td class=\"num\">" + std::to_string(check_passed[label]) +
+               " of " + std::to_string(check_total[label]) + " (" + percent_text(check_passed[label], check_total[label]) +
+               ")</td></tr>\n";
+    return out + "</tbody></table></section>\n";
+}
+
+// What the class folder held that was not graded, and byte-identical submissions.
+std::string folder_sections(const json& folder) {
+    std::string out;
+    if (!folder["ignored"].empty()) {
+        out += "<details id=\"ignored\" open><summary>Not graded: " + std::to_string(folder["ignored"].size()) +
+               (folder["ignored"].size() == 1 ? " entry" : " entries") + " of the submissions folder</summary><ul>\n";
+        for (const json& entry : folder["ignored"])
+            out += "<li><code>" + escape_html(entry["name"].get<std::string>()) + "</code>: " +
+                   escape_html(entry["why"].get<std::string>()) + "</li>\n";
+        out += "</ul></details>\n";
+    }
+    if (!folder["identical"].empty()) {
+        out += "<details id=\"identical\" open><summary>Byte-identical submissions (information, no penalty)</summary><ul>\n";
+        for (const json& group : folder["identical"]) {
+            std::string names;
+            for (const json& name : group) names += (names.empty() ? "" : ", ") + escape_html(name.get<std::string>());
+            out += "<li>" + names + "</li>\n";
+        }
+        out += "</ul></details>\n";
+    }
+    return out;
 }
 
 }  // namespace
@@ -89,24 +220,80 @@ std::string report_html(const GradeReport& report,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     const json& a = report.assignment;
     const std::string title = a["title"].get<std::string>();
-    std::size_t passed = 0;
-    for (const json& s : report.students) passed += s["passed"].get<bool>() ? 1 : 0;
+    std::size_t passed = 0, missing = 0;
+    for (const json& s : report.students) {
+        passed += s["passed"].get<bool>() ? 1 : 0;
+        missing += s.value("missing", false) ? 1 : 0;
+    }
+    const std::size_t submitted = report.students.size() - missing;
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        escape_html(title) + ": grades</title>\n" + kStyle + "</head><body>\n";
-    page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(report.students.size()) + " submissions, " +
-            std::to_string(passed) + " passed (at least " + score_text(a["pass"].get<double>()) + " of " +
-            score_text(a["max"].get<double>()) + " points). Click a column's header to sort.</p>\n";
+    page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(submitted) +
+            (submitted == 1 ? " submission, " : " submissions, ") + std::to_string(passed) + " passed (at least " +
+            score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) + " points)" +
+            (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
+            ". Click a column's header to sort.</p>\n";
     const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
     if (!reference.empty())
         page += "<figure><img alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
                 "\"><figcaption>The reference</figcaption></figure>\n";
+    page += folder_sections(report.folder);
+    const std::vector<std::string> labels = check_labels(report);
+    page += class_summary(report, labels);
+    page += "<div id=\"controls\"><label>Show <select id=\"filter\"><option value=\"all\">all</option>"
+            "<option value=\"failed\">failed</option><option value=\"refused\">refused</option>"
+            "<option value=\"missing\">missing</option></select></label> "
+            "<label>Search <input id=\"search\" type=\"search\" placeholder=\"student name\"></label> "
+            "<span id=\"shown\"></span></div>\n";
     page += "<table id=\"grades\"><thead><tr><th data-col=\"0\">Student</th><th data-col=\"1\">Score</th>"
-            "<th data-col=\"2\">Result</th><th>Render</th><th>Levels off the reference</th><th>Reasons</th>"
-            "</tr></thead><tbody>\n";
-    for (const json& s : report.students) page += student_row(s, image_bytes);
+            "<th data-col=\"2\">Result</th>";
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        page += "<th data-col=\"" + std::to_string(3 + i) + "\">" + escape_html(labels[i]) + "</th>";
+    page += "<th>Render</th><th>Levels off the reference</th><th>Reasons</th></tr></thead><tbody>\n";
+    for (const json& s : report.students) page += student_row(s, labels, image_bytes);
     page += "</tbody></table>\n";
     page += kScript;
     return page + "</body></html>\n";
+}
+
+}  // namespace m3055::grading
+
+namespace m3055::grading {
+
+std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
+                          const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+    using nlohmann::json;
+    const json& a = report.assignment;
+    const std::string name = s["student"].get<std::string>();
+    const std::string title = a["title"].get<std::string>();
+    const bool missing = s.value("missing", false);
+    std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape_html(title) +
+                       ": " + escape_html(name) + "</title>\n" + kStyle + "</head><body>\n";
+    page += "<h1>" + escape_html(title) + "</h1>\n<h2 id=\"student\">" + escape_html(name) + "</h2>\n";
+    page += std::string("<p id=\"score\" class=\"") + (s["passed"].get<bool>() ? "pass" : "fail") + "\">" +
+            score_text(s["score"].get<double>()) + " of " + score_text(s["max"].get<double>()) + " points: " +
+            (missing ? "no submission" : s["passed"].get<bool>() ? "passed" : "not passed") + " (" +
+            score_text(a["pass"].get<double>()) + " to pass)</p>\n";
+    page += "<table><thead><tr><th>Your render</th><th>The reference</th><th>Levels off the reference</th></tr></thead>"
+            "<tbody><tr>";
+    std::vector<std::uint8_t> render, diff;
+    if (s["images"].is_object()) {
+        render = image_bytes(s["images"]["render"].get<std::string>());
+        diff = image_bytes(s["images"]["diff"].get<std::string>());
+    }
+    page += image_cell(render, "your render") + image_cell(image_bytes(a["reference_image"].get<std::string>()), "the reference") +
+            image_cell(diff, "levels off the reference");
+    page += "</tr></tbody></table>\n<h3>Checks</h3>\n<ul id=\"checks\">\n";
+    if (!s["broken"].get<std::string>().empty())
+        page += "<li class=\"fail\">" + escape_html(s["broken"].get<std::string>()) + "</li>\n";
+    for (const json& c : s["checks"])
+        page += std::string("<li class=\"") + (c["ok"].get<bool>() ? "pass" : "fail") + "\">" +
+                (c["ok"].get<bool>() ? "&#10004; " : "&#10008; ") + escape_html(c["label"].get<std::string>()) + ": " +
+                score_text(c["earned"].get<double>()) + " of " + score_text(c["points"].get<double>()) + " &mdash; " +
+                escape_html(c["reason"].get<std::string>()) + "</li>\n";
+    if (!s["screenshot"].get<std::string>().empty())
+        page += "<li>" + escape_html(s["screenshot"].get<std::string>()) + "</li>\n";
+    return page + "</ul>\n</body></html>\n";
 }
 
 }  // namespace m3055::grading

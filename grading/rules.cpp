@@ -29,7 +29,7 @@ Check result(const Rule& rule, bool ok, std::string reason) {
 Check check_model(const Rule& rule, const Scene& scene) {
     if (rule.object >= int(scene.objects.size()))
         return result(rule, false, "no " + object_name(rule.object) + " (the scene has " +
-                                       std::to_string(scene.objects.size()) + " objects)");
+                                       std::to_string(scene.objects.size()) + (scene.objects.size() == 1 ? " object)" : " objects)"));
     for (int i = 0; i < int(scene.objects.size()); ++i) {
         if (rule.object >= 0 && i != rule.object) continue;
         const Material& material = scene.objects[std::size_t(i)].material;
@@ -125,7 +125,7 @@ Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& doc
             const int count = enabled_lights(scene);
             const int want = int(rule.min);
             return result(rule, count == want,
-                          std::to_string(count) + " lights enabled" + (count == want ? "" : ", not " + std::to_string(want)));
+                          std::to_string(count) + (count == 1 ? " light enabled" : " lights enabled") + (count == want ? "" : ", not " + std::to_string(want)));
         }
         case RuleKind::warmer: return check_warmer(rule, scene);
         case RuleKind::key_to_fill: return check_key_to_fill(rule, scene);

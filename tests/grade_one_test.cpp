@@ -35,15 +35,15 @@ TEST(GradeOne, ScoresAsGradeDoesWithTheCallersRenderer) {
         grading::LevelImage render;
         grading::Grade grade = grading::grade_one(assignment, load_scene_file(path), renderer, reference, &render);
         grade.student = name;
-        nlohmann::json mine = grading::grade_json(grade, true);
+        nlohmann::json mine = grading::grade_json(grade, name);
         // The screenshot is grade's business (a file beside the scene), not grade_one's.
         mine["screenshot"] = student["screenshot"];
         EXPECT_EQ(mine["score"], student["score"]) << name;
         EXPECT_EQ(mine["checks"], student["checks"]) << name;
         EXPECT_EQ(mine["comparison"], student["comparison"]) << name;
-        // The render is the one grade wrote as NAME.png.
+        // The render is the one grade wrote as students/NAME.png.
         const std::vector<std::uint8_t> png = encode_png(grading::display_of(render));
-        EXPECT_EQ(test::read_text(out.file(name + ".png")), std::string(png.begin(), png.end())) << name;
+        EXPECT_EQ(test::read_text(out.file("students/" + name + ".png")), std::string(png.begin(), png.end())) << name;
     }
 }
 

@@ -39,7 +39,7 @@ TEST(GradeRules, ModelPassesAndFails) {
     EXPECT_FALSE(wrong.ok);
     EXPECT_EQ(wrong.reason, "objects[0] is metal, not metal_blinn");
     EXPECT_EQ(check(R"({"rule": "model", "is": "metal", "object": 3, "points": 1})", doc).reason,
-              "no objects[3] (the scene has 1 objects)");
+              "no objects[3] (the scene has 1 object)");
 }
 
 TEST(GradeRules, LightCountCountsEnabledLights) {
@@ -201,7 +201,7 @@ TEST(GradeOutputs, NamesAndReasonsAreEscapedInHtmlAndCsv) {
     EXPECT_NE(html.find("<title>&lt;T&gt;: grades</title>"), std::string::npos);
     const std::string csv = grades_csv(report);
     // One record: the newline stays inside quotes, the formula is defused, quotes doubled.
-    EXPECT_EQ(csv, "student,score,max,result,reasons\n<b>x&y</b>,0,10,fail,\"'=cmd(), \"\"quoted\"\"\nsecond line\"\n");
+    EXPECT_EQ(csv, "student,score,max,result,reasons,notes\n<b>x&y</b>,0,10,fail,\"'=cmd(), \"\"quoted\"\"\nsecond line\",\n");
 }
 
 TEST(GradeOutputs, Base64) {

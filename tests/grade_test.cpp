@@ -57,7 +57,7 @@ TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
     const auto s = by_student(read_json(dir.file("out/grades.json")));
     ASSERT_TRUE(s.count("zoe"));
     EXPECT_TRUE(s.at("zoe")["broken"].get<std::string>().empty()) << s.at("zoe")["broken"];
-    EXPECT_TRUE(file_exists(dir.file("out/zoe.png")));
+    EXPECT_TRUE(file_exists(dir.file("out/students/zoe.png")));
 }
 
 // A student checks the one file they will submit: the same grade as in the class's folder.
@@ -71,7 +71,7 @@ TEST(Grade, OneSceneFileIsGradedAsInTheFolder) {
     const auto alone = by_student(read_json(dir.file("one/grades.json")));
     ASSERT_EQ(alone.size(), 1u);
     EXPECT_EQ(alone.at("dave"), by_student(read_json(dir.file("all/grades.json"))).at("dave"));
-    EXPECT_EQ(read_text(dir.file("one/dave-diff.png")), read_text(dir.file("all/dave-diff.png")));
+    EXPECT_EQ(read_text(dir.file("one/diffs/dave.png")), read_text(dir.file("all/diffs/dave.png")));
     write_text(dir.file("notes.txt"), "not a scene");
     const RunResult text = run_m3055({"grade", kAssignment, dir.file("notes.txt"), "--out", dir.file("bad")});
     EXPECT_EQ(text.exit_code, 1);
@@ -97,10 +97,10 @@ TEST(Grade, WorkedAssignmentScores) {
     // alice.png is byte for byte what `m3055 render` writes for her scene.
     const RunResult render = run_m3055({"render", "--scene", kSubmissions + "/alice.json", "--out", out.file("r.png")});
     ASSERT_EQ(render.exit_code, 0);
-    EXPECT_EQ(read_text(out.file("r.png")), read_text(out.file("alice.png")));
+    EXPECT_EQ(read_text(out.file("r.png")), read_text(out.file("students/alice.png")));
     const std::string csv = read_text(out.file("grades.csv"));
-    EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max,result,reasons");
-    EXPECT_NE(csv.find("\nalice,100,100,pass,\n"), std::string::npos) << csv;
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max,result,reasons,notes");
+    EXPECT_NE(csv.find("\nalice,100,100,pass,,\n"), std::string::npos) << csv;
     EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
 }
 
@@ -140,7 +140,7 @@ TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
         EXPECT_EQ(s.at(name)["score"], 0) << name;
         EXPECT_NE(s.at(name)["broken"].get<std::string>().find(reason), std::string::npos)
             << name << ": " << s.at(name)["broken"];
-        EXPECT_FALSE(file_exists(dir.file("out/" + name + ".png"))) << name;
+        EXPECT_FALSE(file_exists(dir.file("out/students/" + name + ".png"))) << name;
     }
     EXPECT_TRUE(s.at("ok")["broken"].get<std::string>().empty()) << s.at("ok")["broken"];
 }
@@ -152,16 +152,17 @@ TEST(Grade, KilledHalfwayLeavesNoTables) {
     for (int i = 0; i < 150; ++i) fs::copy_file(kSubmissions + "/bob.json", subs + "/s" + std::to_string(1000 + i) + ".json");
     Running grade({"grade", kAssignment, subs, "--out", dir.file("out")});
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
-    while (!file_exists(dir.file("out/s1003.png")) && !grade.finished() && std::chrono::steady_clock::now() < deadline)
+    while (!file_exists(dir.file("out/students/s1003.png")) && !grade.finished() && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     grade.signal(SIGTERM);
     const RunResult run = grade.wait();
     ASSERT_EQ(run.killed_by, SIGTERM) << "the run ended before the signal: " << run.err;
     for (const char* table : {"grades.csv", "grades.json", "report.html"})
         EXPECT_FALSE(file_exists(dir.file(std::string("out/") + table))) << table;
-    for (const auto& entry : fs::directory_iterator(dir.file("out"))) {
-        const std::string name = entry.path().filename().string();
-        EXPECT_TRUE(std::regex_match(name, std::regex(R"((s\d{4}(-diff)?|reference)\.png)"))) << "left behind: " << name;
+    for (const auto& entry : fs::recursive_directory_iterator(dir.file("out"))) {
+        const std::string name = fs::relative(entry.path(), dir.file("out")).string();
+        EXPECT_TRUE(std::regex_match(name, std::regex(R"(((students|diffs)/s\d{4}|reference)\.png|students|diffs|feedback)")))
+            << "left behind: " << name;
     }
 }
 
@@ -183,9 +184,11 @@ TEST(Grade, ReportOpensInHeadlessChromium) {
     ASSERT_EQ(std::system(command.c_str()), 0);
     const std::string text = read_text(dom);
     EXPECT_NE(text.find("data-broken=\"0\""), std::string::npos) << "a broken image, or the probe did not run";
-    const std::string body = text.substr(text.find("<tbody>"));
+    // The grades table's rows (the class summary's tables come before it).
+    const std::string body = text.substr(text.find("<table id=\"grades\""));
     std::size_t rows = 0;
-    for (std::size_t at = body.find("<tr>"); at != std::string::npos; at = body.find("<tr>", at + 1)) ++rows;
+    for (std::size_t at = body.find("<tr data-status"); at != std::string::npos; at = body.find("<tr data-status", at + 1))
+        ++rows;
     EXPECT_EQ(rows, 6u);
     // Five renders and five difference images (frank's scene is broken), and the reference.
     std::size_t images = 0;
@@ -209,8 +212,9 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
     const RunResult merge = run_m3055({"grade", "--merge", dir.file("shard3"), dir.file("shard1"), dir.file("shard4"),
                                        dir.file("shard2"), "--out", dir.file("merged")});
     ASSERT_EQ(merge.exit_code, 0) << merge.err;
-    for (const auto& entry : fs::directory_iterator(dir.file("one"))) {
-        const std::string name = entry.path().filename().string();
+    for (const auto& entry : fs::recursive_directory_iterator(dir.file("one"))) {
+        if (entry.is_directory()) continue;  // students/, diffs/
+        const std::string name = fs::relative(entry.path(), dir.file("one")).string();
         EXPECT_EQ(read_text(entry.path().string()), read_text(dir.file("merged/" + name))) << name;
     }
     EXPECT_EQ(snapshot(dir.file("one")).size(), snapshot(dir.file("merged")).size());

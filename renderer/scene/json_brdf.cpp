@@ -13,6 +13,30 @@ namespace {
 // Read and rendered from the one thread that renders (models/model_table.h).
 std::string g_folder;
 bool g_allowed = true;
+bool g_confined = false;  // a BrdfConfinement lives
+std::string g_root, g_why_none;
+
+// The refusal of a .brdf path under a BrdfConfinement, or "" when it may be read.
+std::string confinement_problem(const std::string& file, const std::string& resolved) {
+    namespace fs = std::filesystem;
+    if (g_root.empty()) return "a .brdf file is not accepted here: " + g_why_none;
+    const fs::path path(file);
+    if (path.is_absolute()) return "must be a path inside the submission's folder, not an absolute path";
+    for (const fs::path& part : path)
+        if (part == "..") return "must be a path inside the submission's folder, without \"..\"";
+    std::error_code error;
+    const fs::path root = fs::weakly_canonical(g_root, error);
+    if (error) return "the submission's folder cannot be resolved: " + error.message();
+    const fs::path target = fs::weakly_canonical(resolved, error);
+    if (error) return "cannot be resolved: " + error.message();
+    // Inside when the root is a prefix of the target, component by component.
+    auto r = root.begin(), t = target.begin();
+    for (; r != root.end() && t != target.end(); ++r, ++t)
+        if (*r != *t) break;
+    if (r != root.end() || t == target.end())
+        return "leads out of the submission's folder (a symbolic link): a .brdf file must be in it";
+    return "";
+}
 
 std::string resolve(const std::string& file) {
     const std::filesystem::path path(file);
@@ -54,6 +78,19 @@ BrdfScope::~BrdfScope() {
     g_allowed = old_allowed_;
 }
 
+BrdfConfinement::BrdfConfinement(std::string root, std::string why_none)
+    : old_active_(g_confined), old_root_(g_root), old_why_none_(g_why_none) {
+    g_confined = true;
+    g_root = std::move(root);
+    g_why_none = std::move(why_none);
+}
+
+BrdfConfinement::~BrdfConfinement() {
+    g_confined = old_active_;
+    g_root = old_root_;
+    g_why_none = old_why_none_;
+}
+
 void set_brdf_files_allowed(bool allowed) { g_allowed = allowed; }
 
 std::string brdf_not_allowed_reason() {
@@ -69,9 +106,12 @@ Material read_brdf_material(const Node& node) {
     const Node file_node = node.required("file");
     if (!file_node.value().is_string()) file_node.fail("must be the path of a .brdf file");
     if (!g_allowed) file_node.fail(brdf_not_allowed_reason());
+    const std::string file = file_node.value().get<std::string>();
+    if (g_confined)
+        if (const std::string problem = confinement_problem(file, resolve(file)); !problem.empty()) file_node.fail(problem);
     const BrdfModel* model = nullptr;
     try {
-        model = &load_brdf_model(resolve(file_node.value().get<std::string>()));
+        model = &load_brdf_model(resolve(file));
     } catch (const BrdfError& e) {
         file_node.fail(e.what());
     }

@@ -27,6 +27,24 @@ private:
     bool old_allowed_;
 };
 
+// While one lives, a .brdf file must resolve, after symbolic links, inside
+// `root` (m3055 grade: the submission's own folder): an absolute path, a ".."
+// or a link leading out is refused naming the field, before the file is
+// opened, so nothing of a file outside the submission reaches a message.
+// `root` empty: no .brdf file at all, the refusal ending with `why_none` (a
+// submission that is one NAME.json has no folder of its own).
+class BrdfConfinement {
+public:
+    BrdfConfinement(std::string root, std::string why_none);
+    ~BrdfConfinement();
+    BrdfConfinement(const BrdfConfinement&) = delete;
+    BrdfConfinement& operator=(const BrdfConfinement&) = delete;
+
+private:
+    bool old_active_;
+    std::string old_root_, old_why_none_;
+};
+
 // The refusal when .brdf files are not accepted (m3055 explore --assignment
 // gives the same reason for a scene whose material comes from one).
 std::string brdf_not_allowed_reason();
