@@ -298,10 +298,14 @@ protected:
     }
     // The spec example in a window on a screen of its own; false when anything failed.
     bool start(int screen_w, int screen_h, const std::vector<std::string>& extra = {}) {
-        x_ = std::make_unique<XServer>(screen_w, screen_h);
-        if (x_->display().empty()) return false;
         std::vector<std::string> args = {"--scene", test::source_path("scenes/spec_example.json")};
         args.insert(args.end(), extra.begin(), extra.end());
+        return start_with(screen_w, screen_h, args);
+    }
+    // `m3055 explore ARGS` exactly.
+    bool start_with(int screen_w, int screen_h, const std::vector<std::string>& args) {
+        x_ = std::make_unique<XServer>(screen_w, screen_h);
+        if (x_->display().empty()) return false;
         app_ = std::make_unique<RunningExplorer>(x_->display(), dir_.path(), args);
         return app_->wait_for_window();
     }
@@ -364,6 +368,29 @@ TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
     EXPECT_EQ(differing_pixels(crop(app_->screen(dir_.path()), at.x, at.y, w, h), edited), 0);
     EXPECT_EQ(app_->window_name(), title) << "no figure preset replaced the scene";
     EXPECT_TRUE(app_->running());
+}
+
+// Issue 20, item 1: practice on a just-saved scene, a click on an empty
+// area, "0.6" typed: no figure preset replaces the work (plain digits never
+// do, in any mode), the title stays the file's, without an unsaved mark.
+TEST_F(ExplorerInput, PracticeOnASavedSceneSurvivesAStrayNumber) {
+    test::write_text(dir_.file("mine.json"), test::read_text(test::source_path("scenes/spec_example.json")));
+    ASSERT_TRUE(start_with(1920, 1080, {"--assignment", test::source_path("assignments/three-point/assignment.json"),
+                                        dir_.file("mine.json")}));
+    std::string title;
+    for (int i = 0; i < 240 && title.find("mine.json") == std::string::npos; ++i) {
+        sleep_ms(250);
+        title = app_->window_name();
+    }
+    ASSERT_NE(title.find("mine.json"), std::string::npos) << title;
+    app_->screen(dir_.path());  // settled: the first frames drawn, the first grade shown
+    app_->click(kRestX, kRestY);  // an empty area: no field active
+    app_->xdo("type --delay 120 0.6");
+    app_->screen(dir_.path());
+    EXPECT_EQ(app_->window_name(), title) << "no figure preset replaced the saved scene";
+    EXPECT_EQ(title.find("unsaved"), std::string::npos) << title;
+    app_->xdo("key Escape");
+    EXPECT_EQ(app_->wait_exit(30.0), 0) << "nothing unsaved: Esc quits at once";
 }
 
 TEST_F(ExplorerInput, SplitOnKeepsB) {
