@@ -476,5 +476,21 @@ TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
     EXPECT_GT(at.scale, 0) << "the whole 512 x 320 display, whole pixels, inside the 1280 x 720 screen";
 }
 
+// Issue 20, item 5: A/B split at 1280 x 720 with the panels shown: both
+// panes at whole pixels (A over B, the plots beside them), never a fraction.
+TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {
+    test::write_text(dir_.file("ab.txt"), "compare on\n");
+    ASSERT_TRUE(start(1280, 720, {"--script", dir_.file("ab.txt")}));
+    const Rgb8Image expected = headless(dir_);  // B starts as a copy of A's material: the same image
+    Place a;
+    const Rgb8Image screen =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (a = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GE(a.scale, 1) << "A at a whole magnification";
+    const int below = a.y + expected.height * a.scale;
+    const Place b = find_magnified(crop(screen, 0, below, screen.width, screen.height - below), expected);
+    EXPECT_GE(b.scale, 1) << "B at a whole magnification too";
+    EXPECT_EQ(b.scale, a.scale);
+}
+
 }  // namespace
 }  // namespace m3055

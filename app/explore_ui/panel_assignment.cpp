@@ -51,7 +51,7 @@ void check_rows(const PracticeStatus& p) {
 void assignment_section(ExplorerState& state) {
     const PracticeStatus& p = state.practice;
     ImGui::TextWrapped("%s", p.title.c_str());
-    ImGui::TextDisabled("left: your scene; right: the reference (%s)", p.reference.c_str());
+    ImGui::TextDisabled("beside your scene: the reference (%s)", p.reference.c_str());
     score_line(p);
     check_rows(p);
     hint("The score and reasons m3055 grade gives this scene (the same code). Save (Ctrl+S, File > Save As) "
