@@ -14,6 +14,7 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <poll.h>
@@ -490,6 +491,38 @@ TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {
     const Place b = find_magnified(crop(screen, 0, below, screen.width, screen.height - below), expected);
     EXPECT_GE(b.scale, 1) << "B at a whole magnification too";
     EXPECT_EQ(b.scale, a.scale);
+}
+
+// Issue 20, item 4: a light's intensity on a logarithmic slider, and Shift
+// drags it finely: 50 px right from 1 with Shift held gives about 1.2 (a
+// plain drag of 50 px would reach 10, the linear slider 4.4).
+TEST_F(ExplorerInput, ShiftDragSetsALightsIntensityFinely) {
+    test::write_text(dir_.file("mine.json"), test::read_text(test::source_path("scenes/spec_example.json")));
+    test::write_text(dir_.file("l.txt"), "section Display closed\nsection Material closed\nsection Lights open\n");
+    ASSERT_TRUE(start_with(1280, 720, {"--scene", dir_.file("mine.json"), "--script", dir_.file("l.txt")}));
+    app_->screen(dir_.path());
+    constexpr int kGrabX = 259, kIntensityY = 348;  // intensity 1: 3/4 along the slider (152 ... 300)
+    app_->move(kGrabX, kIntensityY);
+    sleep_ms(300);
+    app_->xdo("keydown shift");
+    app_->xdo("mousedown 1");
+    for (int i = 1; i <= 5; ++i) {
+        sleep_ms(120);
+        app_->move(kGrabX + 10 * i, kIntensityY);
+    }
+    sleep_ms(300);
+    app_->xdo("mouseup 1");
+    app_->xdo("keyup shift");
+    app_->screen(dir_.path());
+    app_->xdo("key ctrl+s");
+    double intensity = -1.0;
+    for (int i = 0; i < 120 && intensity < 0.0; ++i) {
+        sleep_ms(250);
+        const nlohmann::json doc = nlohmann::json::parse(test::read_text(dir_.file("mine.json")));
+        if (doc["lights"][0].value("intensity", 1.0) != 1.0) intensity = doc["lights"][0]["intensity"].get<double>();
+    }
+    EXPECT_GT(intensity, 1.05) << "the drag moved it";
+    EXPECT_LT(intensity, 1.6) << "a tenth of the mouse's speed";
 }
 
 }  // namespace
