@@ -60,11 +60,11 @@ bool light_editor(Light& light, int index, const Material* material) {
         tooltip("where the light is, in scene units (docs/spec.md section 7)");
         changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip(kIntensityHelp);
-        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0);
+        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("constant term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (the lecture's equation, spec section 4)");
-        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0);
+        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("linear term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
-        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0);
+        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("quadratic term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
         if (light.type == LightType::spot) {
             ImGui::TextUnformatted("spot direction:");
