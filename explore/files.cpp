@@ -22,6 +22,7 @@ void set_scene(ExplorerState& state, const Scene& scene, const std::string& name
     state.selected_object = 0;
     state.selected_light = 0;
     if (!scene.objects.empty()) state.material_b = scene.objects[0].material;
+    state.b_edited = false;
 }
 
 bool load_scene(ExplorerState& state, const std::string& path) {

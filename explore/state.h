@@ -39,6 +39,7 @@ struct ExplorerState {
     // A/B compare: the selected object rendered a second time with material_b.
     bool compare = false;
     Material material_b;
+    bool b_edited = false;      // B set by the user (an edit, "B = copy of A") since the scene: the split keeps it
     bool compare_diff = false;  // a third pane: |A - B| per channel, scaled
     int diff_scale = 0;         // its whole scale, 1 ... 255; 0: automatic (grading/ab_compare.h)
 

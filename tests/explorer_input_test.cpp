@@ -525,5 +525,20 @@ TEST_F(ExplorerInput, ShiftDragSetsALightsIntensityFinely) {
     EXPECT_LT(intensity, 1.6) << "a tenth of the mouse's speed";
 }
 
+// Issue 20, item 8: A edited (m 40), B never set: switching the split on
+// makes B a copy of A, so both panes show the edited scene.
+TEST_F(ExplorerInput, SplitOnCopiesAIntoAnUntouchedB) {
+    test::write_text(dir_.file("ab.txt"), "set objects[0].material.m 40\ncompare on\n");
+    ASSERT_TRUE(start(1920, 1080, {"--script", dir_.file("ab.txt")}));
+    const Rgb8Image expected = headless(dir_, {"--set", "objects[0].material.m=40"});
+    Place a;
+    const Rgb8Image screen =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (a = find_magnified(s, expected)).scale > 0; });
+    ASSERT_GE(a.scale, 1) << "A shows the edit";
+    const int right = a.x + expected.width * a.scale;
+    const Place b = find_magnified(crop(screen, right, 0, screen.width - right, screen.height), expected);
+    EXPECT_EQ(b.scale, a.scale) << "B is A's copy, beside it";
+}
+
 }  // namespace
 }  // namespace m3055
