@@ -540,5 +540,25 @@ TEST_F(ExplorerInput, SplitOnCopiesAIntoAnUntouchedB) {
     EXPECT_EQ(b.scale, a.scale) << "B is A's copy, beside it";
 }
 
+// Issue 20, item 2: a live regrade that passes checks (their reasons go)
+// leaves the side panel's controls where they were: the Display section's
+// rows are the same pixels before and after.
+TEST_F(ExplorerInput, ARegradeDoesNotMoveTheSidePanelsControls) {
+    test::write_text(dir_.file("mine.json"), test::read_text(test::source_path("scenes/spec_example.json")));
+    test::write_text(dir_.file("warm.txt"), "idle 4\nlight_preset three_point_warm\n");
+    ASSERT_TRUE(start_with(1280, 720, {"--assignment", test::source_path("assignments/three-point/assignment.json"),
+                                       "--script", dir_.file("warm.txt"), dir_.file("mine.json")}));
+    sleep_ms(1500);
+    const Rgb8Image before = app_->screen(dir_.path());
+    sleep_ms(6000);  // the preset, then the regrade once it settles
+    const Rgb8Image after = app_->screen(dir_.path());
+    ASSERT_EQ(before.width, 1280);
+    // The Display section (header, preset buttons, size, bits, background) at 1280 x 720.
+    const Rgb8Image rows_before = crop(before, 0, 430, 420, 200), rows_after = crop(after, 0, 430, 420, 200);
+    EXPECT_GT(differing_pixels(crop(before, 0, 100, 420, 300), crop(after, 0, 100, 420, 300)), 100)
+        << "the regrade changed the Assignment section";
+    EXPECT_EQ(differing_pixels(rows_before, rows_after), 0) << "the controls below it moved";
+}
+
 }  // namespace
 }  // namespace m3055
