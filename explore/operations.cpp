@@ -38,6 +38,7 @@ void take_scene(ExplorerState& state, Scene edited) {
 }  // namespace
 
 void note_edit(ExplorerState& state, const std::string& what, const std::string& from, const std::string& to) {
+    state.status.clear();  // the status line tells the last action: an edit replaces "redid ...", "saved ..."
     PendingEdit& pending = state.pending;
     if (pending.what != what) {
         pending.what = what;
