@@ -22,13 +22,15 @@ void set_scene(ExplorerState& state, const Scene& scene, const std::string& name
     state.selected_object = 0;
     state.selected_light = 0;
     if (!scene.objects.empty()) state.material_b = scene.objects[0].material;
+    state.b_edited = false;
 }
 
 bool load_scene(ExplorerState& state, const std::string& path) {
     try {
         set_scene(state, load_scene_file(path), path);
-        state.scene_file = state.clean_file = path;
-        state.clean_doc = scene_to_json(state.scene);
+        state.scene_file = path;
+        mark_saved(state);
+        state.save_dir = std::filesystem::path(path).parent_path().string();
         state.status = "loaded " + path;
         state.error.clear();
         state.load_error.clear();
@@ -45,11 +47,10 @@ bool load_figure(ExplorerState& state, const std::string& name) {
         try {
             const std::string source = "scenes/" + name + ".json";
             set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
-            // Built in: nothing to lose yet (digit keys may flip through the
-            // figures); Ctrl+S asks where to save.
+            // Built in: unsaved once edited; Ctrl+S asks where to save
+            // (proposing NAME.json, never the file of the scene it replaced).
             state.scene_file.clear();
-            state.clean_file.clear();
-            state.clean_doc = scene_to_json(state.scene);
+            mark_saved(state);
             note_edit(state, "figure preset " + name);
             state.status = "figure preset " + name;
             state.error.clear();
@@ -67,11 +68,13 @@ bool save_scene(ExplorerState& state, const std::string& path) {
     try {
         const std::string text = scene_to_json(state.scene).dump(2) + "\n";
         write_file_atomic(path, text.data(), text.size());
-        state.scene_file = state.clean_file = path;
-        state.clean_doc = scene_to_json(state.scene);
+        state.scene_file = path;
+        state.overwrite_warned.clear();
+        state.save_dir = std::filesystem::path(path).parent_path().string();
         state.scene_name = std::filesystem::path(path).filename().string();
         commit_edits(state);  // the edits before the save are a step; the save itself is none
         state.history.set_head_file(state.scene_name, path);
+        mark_saved(state);
         std::error_code ec;
         const auto full = std::filesystem::absolute(path, ec);
         state.status = "saved " + (ec ? path : full.string());
@@ -83,8 +86,33 @@ bool save_scene(ExplorerState& state, const std::string& path) {
 }
 
 void save_or_ask(ExplorerState& state) {
-    if (state.scene_file.empty()) state.save_as_requested = true;
+    if (state.scene_file.empty()) request_save_as(state);
     else save_scene(state, state.scene_file);
+}
+
+std::string save_as_proposal(const ExplorerState& state) {
+    if (!state.scene_file.empty()) return state.scene_file;
+    std::string name = state.save_name;
+    const std::filesystem::path from(state.scene_name);
+    if (from.extension() == ".json") name = from.filename().string();  // a figure preset: fig10.json
+    return state.save_dir.empty() ? name : (std::filesystem::path(state.save_dir) / name).string();
+}
+
+void request_save_as(ExplorerState& state) {
+    state.save_path = save_as_proposal(state);
+    state.overwrite_warned.clear();
+    state.save_as_requested = true;
+}
+
+bool save_as(ExplorerState& state, const std::string& path) {
+    std::error_code ec;
+    const bool own = !state.scene_file.empty() && std::filesystem::equivalent(path, state.scene_file, ec);
+    if (!own && std::filesystem::exists(path, ec) && state.overwrite_warned != path) {
+        state.overwrite_warned = path;
+        state.error = path + " exists and is not this scene's file: Save again to overwrite it";
+        return false;
+    }
+    return save_scene(state, path);
 }
 
 std::string next_screenshot_path(const ExplorerState& state) {

@@ -26,8 +26,19 @@ bool load_figure(ExplorerState& state, const std::string& name);
 
 // Writes the scene JSON (atomically); it becomes the scene's own file. Errors go to state.error.
 bool save_scene(ExplorerState& state, const std::string& path);
-// Ctrl+S: to the scene's own file, or (none yet) asks for one (save_as_requested).
+// Ctrl+S: to the scene's own file, or (none yet) asks for one (request_save_as).
 void save_or_ask(ExplorerState& state);
+// Save As's proposal: the scene's own file; without one, its name in the
+// folder of the last file loaded or saved (a figure preset: "fig10.json"; the
+// start of a practice: state.save_name, "submission.json") -- never the file
+// of a scene it replaced.
+std::string save_as_proposal(const ExplorerState& state);
+// Opens Save As (save_as_requested) with the field set to save_as_proposal.
+void request_save_as(ExplorerState& state);
+// The Save As dialog's Save: an existing file other than the scene's own is
+// written only when asked twice (the first time state.error says so and false
+// is returned); then save_scene.
+bool save_as(ExplorerState& state, const std::string& path);
 // F12: the next free DIR/NAME-0001.png (NAME: the scene file's stem, or "m3055"),
 // neither it nor its .json existing yet.
 std::string next_screenshot_path(const ExplorerState& state);

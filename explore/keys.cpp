@@ -34,14 +34,11 @@ bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus
     if (press.ctrl) return control_shortcut(state, press);
     if (focus.wants_keyboard || focus.item_active) return false;
     switch (press.key) {
-        case Key::digit: {
+        case Key::digit: {  // typed, not a shortcut: a number meant for a field must not replace the scene
             const std::string digit = std::to_string(press.digit);
-            if (unsaved(state)) {
-                state.status = "key " + digit + " ignored: the scene has unsaved edits (Ctrl+" + digit +
-                               " replaces it, undoably)";
-                return false;
-            }
-            return load_figure(state, kFigureKeys[press.digit]);
+            state.status = "key " + digit + " does nothing: Ctrl+" + digit + " (or Objects > Fig. buttons) loads " +
+                           kFigureKeys[press.digit] + ", undoably";
+            return false;
         }
         case Key::escape: state.quit_requested = true; return true;
         case Key::r: reset_camera(state); return true;

@@ -31,11 +31,11 @@ struct KeyFocus {
 // Ctrl+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo, Ctrl+S saves (to the scene's
 // file, or asks), Ctrl+0..9 load a figure preset; single keys, only when no
 // widget takes the keyboard: Esc quits (asking first when there are unsaved
-// edits), R resets the camera, F1 toggles the panels, F12 takes a screenshot,
-// 1-9 load the figure presets Fig. 5-13 and 0 the spec example -- unless the
-// scene has unsaved edits (a number typed with no field active must not
-// replace the scene; Ctrl+digit does, undoably). None act while a text field
-// is being typed into. Returns true when the key did something.
+// edits), R resets the camera, F1 toggles the panels, F12 takes a screenshot.
+// A plain digit never loads anything, in any mode (a number typed with no
+// field active must not replace the scene): it says in the status line that
+// Ctrl+digit loads Fig. 5-13 (1-9) or the spec example (0), undoably. None act
+// while a text field is being typed into. Returns true when the key did something.
 bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus& focus = {});
 
 // The figure preset a digit key loads: "spec_example" (0), "fig05" (1) ... "fig13" (9).

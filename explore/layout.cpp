@@ -28,6 +28,28 @@ Layout layout_for(float width, float height, bool panels) {
     return l;
 }
 
+Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
+                        float label_h) {
+    const Layout under = layout_for(width, height, panels);
+    if (!panels || panes < 1 || w <= 0 || h <= 0 || fb_scale <= 0.0f) return under;
+    if (best_grid(panes, w, h, under.display, fb_scale, label_h).scale >= 1) return under;
+    // The panes in one column (or two) at the whole height; the plots beside them.
+    for (const int columns : {1, 2}) {
+        if (columns > panes) break;
+        Layout beside;
+        beside.plots_beside = true;
+        beside.side = under.side;
+        const float right = std::max(0.0f, width - under.side.w);
+        const float column_w = float(columns) * float(w) / fb_scale + kCompareGap * float(columns + 1);
+        beside.display = {under.side.w, 0, std::min(column_w, right), height};
+        beside.bottom = {under.side.w + beside.display.w, 0, right - beside.display.w, height};
+        if (beside.bottom.w >= kMinPlotsBesideWidth &&
+            fit_grid(panes, columns, w, h, beside.display, fb_scale, label_h).scale >= 1)
+            return beside;
+    }
+    return under;
+}
+
 // Labels sit above their row. Exceptions that keep a whole magnification
 // where it matters: one row keeps its labels in the margin above, and a
 // second row of one pane (A, B and |A - B|) has its label in the free cell to
@@ -36,7 +58,7 @@ Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale
     Grid g;
     g.columns = columns;
     g.rows = (n + columns - 1) / columns;
-    g.label_right = g.rows == 2 && n == columns + 1;
+    g.label_right = columns >= 2 && g.rows == 2 && n == columns + 1;
     const int label_rows = g.rows == 1 ? 0 : g.label_right ? 1 : g.rows;
     g.row_label_h = g.rows > 1 && !g.label_right ? label_h : 0.0f;
     const float room_h = area.h - label_h * float(label_rows) - kCompareGap * float(g.rows - 1);
@@ -50,6 +72,10 @@ Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale
 
 Grid best_grid(int n, int w, int h, const Rect& area, float fb_scale, float label_h) {
     Grid g = fit_grid(n, n, w, h, area, fb_scale, label_h);
+    if (n >= 2) {  // stacked, one column
+        const Grid column = fit_grid(n, 1, w, h, area, fb_scale, label_h);
+        if (column.shown > g.shown) g = column;
+    }
     if (n >= 3) {  // two columns (e.g. A and B, |A - B| under A) when that magnifies more
         const Grid two_rows = fit_grid(n, 2, w, h, area, fb_scale, label_h);
         if (two_rows.shown > g.shown) g = two_rows;

@@ -17,13 +17,26 @@ struct Rect {
 };
 
 // The side panel, the bottom strip and the display's area (ImGui units).
+// plots_beside: the strip (polar plot, profile, statistics) is a column right
+// of the display's area, which then has the window's whole height.
 struct Layout {
     Rect side, bottom, display;
+    bool plots_beside = false;
 };
 
 inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
 
 Layout layout_for(float width, float height, bool panels);
+// The layout that shows `panes` panes of w x h dots at a whole magnification
+// of at least 1 with the panels shown, when one does: the plots under the
+// display (layout_for) when the panes fit there; else the panes stacked at
+// the window's full height and the plots in a column beside them (A over B
+// at 1280 x 720; practice: your scene over the reference). Never a fraction
+// when a layout avoids it; layout_for's when none does (the statistics say
+// "shrunk"; F1 hides the panels).
+Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
+                        float label_h);
+inline constexpr float kMinPlotsBesideWidth = 300.0f;  // the narrowest column the plots are useful in
 
 // The largest whole-pixel magnification of a w x h image that fits
 // area_w x area_h (framebuffer pixels); 0 when even 1:1 does not fit.
@@ -41,7 +54,8 @@ struct Grid {
 // n panes of w x h dots in `columns` columns within `area` (ImGui units,
 // `fb_scale` framebuffer pixels each), with label_h of room for a row of labels.
 Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale, float label_h);
-// One row, or (three panes or more) two columns when that magnifies more.
+// One row, or (two panes or more) one column, or (three panes or more) two
+// columns, whichever magnifies more.
 Grid best_grid(int n, int w, int h, const Rect& area, float fb_scale, float label_h);
 
 // The display pixel (x, y; y = 0 the top row) under window point (mx, my)

@@ -38,6 +38,7 @@ void take_scene(ExplorerState& state, Scene edited) {
 }  // namespace
 
 void note_edit(ExplorerState& state, const std::string& what, const std::string& from, const std::string& to) {
+    state.status.clear();  // the status line tells the last action: an edit replaces "redid ...", "saved ..."
     PendingEdit& pending = state.pending;
     if (pending.what != what) {
         pending.what = what;
@@ -65,6 +66,7 @@ void edit_material_b(ExplorerState& state, const Material& edited, const std::st
     if (!action.empty()) note_edit(state, "B " + action);
     else note(state, describe_change(state.material_b, edited));
     state.material_b = edited;
+    state.b_edited = true;
 }
 
 void set_model(ExplorerState& state, const std::string& model_name) {
@@ -203,12 +205,19 @@ void edit_camera(ExplorerState& state, const Camera& edited) {
 // ---- A/B compare ------------------------------------------------------------------------
 
 void set_compare(ExplorerState& state, bool on) {
+    // A B nobody has set yet starts as A (a metal against a metal, not an unrelated highlight).
+    const Material* a = selected_material(state);
+    if (on && !state.compare && !state.b_edited && a && !(state.material_b == *a)) {
+        state.material_b = *a;
+        note_edit(state, "B = copy of A (split on)");
+    }
     state.compare = on;
     state.changed();  // B is rendered (or not): no edit of the scene, no undo step
 }
 
 void copy_a_to_b(ExplorerState& state) {
     if (const Material* a = selected_material(state)) state.material_b = *a;
+    state.b_edited = true;  // the user's choice of B: the split keeps it
     note_edit(state, "B = copy of A");
 }
 

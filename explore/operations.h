@@ -74,7 +74,10 @@ void zoom_camera(ExplorerState& state, double wheel_steps);
 void reset_camera(ExplorerState& state);
 
 // ---- A/B compare ------------------------------------------------------------------------
-// Turns the split on or off; B stays what it was (only copy_a_to_b copies).
+// Turns the split on or off; B stays what it was once the user has set it
+// (edit_material_b, copy_a_to_b); a B not set since the scene was loaded
+// becomes a copy of A when the split is switched on (one undo step
+// "B = copy of A (split on)" when that changes B).
 void set_compare(ExplorerState& state, bool on);
 void copy_a_to_b(ExplorerState& state);
 

@@ -119,7 +119,7 @@ std::string grade_line(const PracticeStatus& status) {
 
 grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given) {
     grading::Assignment assignment = grading::load_assignment(path);
-    state.save_path = "submission.json";
+    state.save_path = state.save_name = "submission.json";
     if (!scene_given && !assignment.start.empty()) {
         Scene start;
         try {

@@ -22,6 +22,7 @@ std::optional<grading::Assignment> start_scene(ExplorerState& state, const std::
         set_scene(state, load_scene_file(scene_path), scene_path);
         state.scene_file = scene_path;
     }
+    if (!scene_path.empty()) state.save_dir = std::filesystem::path(scene_path).parent_path().string();
     std::optional<grading::Assignment> assignment;
     if (!assignment_path.empty()) {
         assignment = open_assignment(state, assignment_path, !scene_path.empty() && !new_submission);

@@ -39,6 +39,7 @@ struct ExplorerState {
     // A/B compare: the selected object rendered a second time with material_b.
     bool compare = false;
     Material material_b;
+    bool b_edited = false;      // B set by the user (an edit, "B = copy of A") since the scene: the split keeps it
     bool compare_diff = false;  // a third pane: |A - B| per channel, scaled
     int diff_scale = 0;         // its whole scale, 1 ... 255; 0: automatic (grading/ab_compare.h)
 
@@ -52,7 +53,9 @@ struct ExplorerState {
     bool save_as_requested = false;  // Ctrl+S without a file of its own: the Save As dialog
     bool quit_after_save = false;    // the unsaved-edits dialog's Save went to Save As
 
-    std::string save_path = "m3055-scene.json";        // Save As's proposal
+    std::string save_path = "m3055-scene.json";        // Save As's field (request_save_as proposes it)
+    std::string save_name = "m3055-scene.json";  // Save As's proposal for a scene without a file (practice: submission.json)
+    std::string save_dir;  // the folder of the last scene file loaded or saved: Save As proposes it
     std::string screenshot_path;  // set (script `screenshot PATH`): F12 writes exactly there once
     std::string screenshot_dir = ".";  // F12: the next free NAME-0001.png in this folder
     std::string load_path;             // the File panel's text field
@@ -63,8 +66,14 @@ struct ExplorerState {
     // next step's label, set by explore/operations.cpp note_edit).
     History history;
     PendingEdit pending;
-    nlohmann::json clean_doc;  // the scene as last loaded or saved (the title's unsaved mark)
-    std::string clean_file;
+    // What each file held when last loaded or saved here (key: the path), and
+    // for a scene without a file what it started as (key: "\n" + its name, e.g.
+    // a figure preset): "unsaved" is whether the scene differs from that
+    // (explore/undo.h), so undoing back to the saved scene is clean again.
+    std::map<std::string, nlohmann::json> saved_docs;
+    // The Save As dialog's overwrite check: the existing file the user was
+    // warned about (a second Save writes it).
+    std::string overwrite_warned;
 
     std::string status;  // last message (saved ..., loaded ...)
     std::string error;   // last error, shown in red until dismissed

@@ -26,8 +26,7 @@ void restore(ExplorerState& state, const Snapshot& s) {
 void start_history(ExplorerState& state) {
     state.history.reset(snapshot(state));
     state.pending.clear();
-    state.clean_doc = state.history.head().doc;
-    state.clean_file = state.scene_file;
+    mark_saved(state);
 }
 
 bool commit_edits(ExplorerState& state) {
@@ -52,8 +51,18 @@ bool redo(ExplorerState& state) {
     return true;
 }
 
+namespace {
+// A file by its path; a scene without one by its name (no path holds a newline).
+std::string saved_key(const ExplorerState& state) {
+    return state.scene_file.empty() ? "\n" + state.scene_name : state.scene_file;
+}
+}  // namespace
+
+void mark_saved(ExplorerState& state) { state.saved_docs[saved_key(state)] = scene_to_json(state.scene); }
+
 bool unsaved(const ExplorerState& state) {
-    return state.scene_file != state.clean_file || scene_to_json(state.scene) != state.clean_doc;
+    const auto saved = state.saved_docs.find(saved_key(state));
+    return saved == state.saved_docs.end() || scene_to_json(state.scene) != saved->second;
 }
 
 std::string title_name(const ExplorerState& state) {

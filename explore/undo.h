@@ -20,9 +20,12 @@ void start_history(ExplorerState& state);
 bool commit_edits(ExplorerState& state);
 bool undo(ExplorerState& state);
 bool redo(ExplorerState& state);
-// The scene differs from its file (or has none it was loaded from or saved
-// to): undoing back to the saved scene makes it clean again.
+// The scene differs from what its file held when last loaded or saved here
+// (a scene without a file: from what it started as, e.g. its figure preset):
+// undoing back to the saved scene makes it clean again, whichever way it came.
 bool unsaved(const ExplorerState& state);
+// Records the current scene as what its file (or, without one, its origin) holds.
+void mark_saved(ExplorerState& state);
 // "NAME" or "NAME * (unsaved edits)" for the title bar.
 std::string title_name(const ExplorerState& state);
 

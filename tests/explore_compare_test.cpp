@@ -55,6 +55,28 @@ TEST(ExploreCompare, SplitOnAndOffKeepsB) {
     EXPECT_FALSE(commit_edits(state)) << "the split is a view, no undo step";
 }
 
+// Issue 20, item 8: a B nobody has set is a copy of A when the split is
+// first switched on (object 1 selected, a metal: not object 0's highlight).
+TEST(ExploreCompare, SplitOnCopiesAIntoAnUntouchedB) {
+    ExplorerState state = started();
+    set_model(state, "metal");
+    commit_edits(state);
+    ASSERT_NE(state.material_b, *selected_material(state));
+    set_compare(state, true);
+    EXPECT_EQ(state.material_b, *selected_material(state));
+    EXPECT_TRUE(commit_edits(state));
+    EXPECT_EQ(state.history.undo_label(), "B = copy of A (split on)");
+    set_compare(state, false);
+    set_model(state, "metal_blinn");
+    set_compare(state, true);
+    EXPECT_EQ(state.material_b.model().name, "metal_blinn") << "still untouched: A again";
+    set_model_b(state, "half_lambert");
+    set_compare(state, false);
+    set_model(state, "metal");
+    set_compare(state, true);
+    EXPECT_EQ(state.material_b.model().name, "half_lambert") << "set by the user: kept";
+}
+
 TEST(ExploreCompare, OnlyCopyAToBCopiesAndItIsUndoable) {
     ExplorerState state = started();
     set_model(state, "metal");

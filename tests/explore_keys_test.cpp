@@ -1,6 +1,8 @@
 // Which key does what in the explorer (explore/keys.h), without a window: a
-// plain digit never replaces an edited scene, Ctrl+digit does (undoably), and
-// no shortcut steals a key from a text field.
+// plain digit never replaces the scene (edited or just saved), Ctrl+digit does
+// (undoably), "unsaved" is whether the scene differs from its file, Save As
+// never proposes the file of a replaced scene, and no shortcut steals a key
+// from a text field.
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
@@ -36,38 +38,91 @@ void edit_m(ExplorerState& state, double m) {
     commit_edits(state);
 }
 
-TEST(ExploreKeys, DigitsPickTheFigurePresetsInThePapersOrder) {
+TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
     EXPECT_STREQ(figure_for_digit(0), "spec_example");
     EXPECT_STREQ(figure_for_digit(1), "fig05");
     EXPECT_STREQ(figure_for_digit(9), "fig13");
     ExplorerState state = started();
-    EXPECT_TRUE(handle_shortcut(state, key("2")));
+    EXPECT_TRUE(handle_shortcut(state, key("ctrl+2")));
     EXPECT_EQ(state.scene_name, "scenes/fig06.json");
-    EXPECT_FALSE(unsaved(state)) << "a preset has nothing to lose: digits may flip through the figures";
-    EXPECT_TRUE(handle_shortcut(state, key("3")));
+    EXPECT_FALSE(unsaved(state)) << "a preset as it came has nothing to lose";
+    EXPECT_TRUE(handle_shortcut(state, key("ctrl+3")));
     EXPECT_EQ(state.scene_name, "scenes/fig07.json");
 }
 
-TEST(ExploreKeys, APlainDigitNeverReplacesAnEditedScene) {
+TEST(ExploreKeys, APlainDigitNeverReplacesTheSceneEditedOrNot) {
     ExplorerState state = started();
-    ASSERT_TRUE(handle_shortcut(state, key("1")));
+    const nlohmann::json fresh = scene_to_json(state.scene);
+    for (const char* digit : {"0", "6"}) {  // "0.6" typed with no field active, nothing edited
+        EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
+        EXPECT_EQ(scene_to_json(state.scene), fresh) << digit;
+        EXPECT_EQ(state.scene_name, "spec example");
+    }
+    EXPECT_NE(state.status.find("Ctrl+6"), std::string::npos) << "the status says what does: " << state.status;
+    ASSERT_TRUE(handle_shortcut(state, key("ctrl+1")));
     edit_m(state, 40);
     const nlohmann::json edited = scene_to_json(state.scene);
-    for (const char* digit : {"0", "6"}) {  // "0.6" typed with no field active
+    for (const char* digit : {"0", "6"}) {
         EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
         EXPECT_EQ(scene_to_json(state.scene), edited) << digit;
     }
-    EXPECT_NE(state.status.find("ignored: the scene has unsaved edits"), std::string::npos) << state.status;
 }
 
-TEST(ExploreKeys, UndoingBackToAPresetLetsDigitsFlipThroughFiguresAgain) {
+// The student: a saved practice scene, then a stray "0.6".
+TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
     ExplorerState state = started();
-    ASSERT_TRUE(load_figure(state, "fig05"));
-    commit_edits(state);
+    const std::string file = ::testing::TempDir() + "explore_keys_mine.json";
+    std::remove(file.c_str());
     edit_m(state, 40);
-    ASSERT_TRUE(undo(state));  // back to the preset as it came: nothing to lose again
-    EXPECT_TRUE(handle_shortcut(state, key("2")));
-    EXPECT_EQ(state.scene_name, "scenes/fig06.json");
+    ASSERT_TRUE(save_scene(state, file));
+    ASSERT_FALSE(unsaved(state));
+    const nlohmann::json saved = scene_to_json(state.scene);
+    EXPECT_FALSE(handle_shortcut(state, key("0")));
+    EXPECT_FALSE(handle_shortcut(state, key("6")));
+    EXPECT_EQ(scene_to_json(state.scene), saved);
+    EXPECT_EQ(state.scene_file, file);
+    EXPECT_FALSE(unsaved(state));
+
+    // Ctrl+6 on purpose: Fig. 10, Save As proposes fig10.json beside mine, not mine.
+    ASSERT_TRUE(handle_shortcut(state, key("ctrl+6")));
+    commit_edits(state);
+    EXPECT_TRUE(handle_shortcut(state, key("ctrl+s")));
+    EXPECT_TRUE(state.save_as_requested);
+    EXPECT_EQ(state.save_path, ::testing::TempDir() + "fig10.json");
+    EXPECT_FALSE(save_as(state, file)) << "an existing other file: asked twice";
+    EXPECT_NE(state.error.find("exists"), std::string::npos) << state.error;
+    EXPECT_EQ(load_scene_file(file).objects[0].material.number("m"), 40.0);
+
+    // Undo back to the saved scene: clean, its own file again.
+    ASSERT_TRUE(undo(state));
+    EXPECT_EQ(scene_to_json(state.scene), saved);
+    EXPECT_EQ(state.scene_file, file);
+    EXPECT_FALSE(unsaved(state)) << "identical to the file: nothing unsaved";
+    edit_m(state, 41);
+    EXPECT_TRUE(unsaved(state));
+    edit_m(state, 40);  // set back by hand: the same as the file again
+    EXPECT_FALSE(unsaved(state));
+    std::remove(file.c_str());
+}
+
+TEST(ExploreKeys, SaveAsOverwritesAnotherFileOnlyWhenAskedTwice) {
+    ExplorerState state = started();
+    const std::string other = ::testing::TempDir() + "explore_keys_other.json";
+    {
+        ExplorerState writer = started();
+        ASSERT_TRUE(save_scene(writer, other));
+    }
+    edit_m(state, 40);
+    request_save_as(state);
+    EXPECT_EQ(state.save_path, "m3055-scene.json") << "no file yet, nothing loaded: the default name";
+    EXPECT_FALSE(save_as(state, other));
+    EXPECT_TRUE(save_as(state, other)) << "the second Save overwrites";
+    EXPECT_EQ(state.scene_file, other);
+    edit_m(state, 41);
+    EXPECT_TRUE(save_as(state, other)) << "the scene's own file: no question";
+    request_save_as(state);
+    EXPECT_EQ(state.save_path, other) << "Save As proposes the scene's own file";
+    std::remove(other.c_str());
 }
 
 TEST(ExploreKeys, CtrlDigitReplacesAnEditedSceneUndoably) {

@@ -50,5 +50,29 @@ TEST(ExploreLayout, PixelUnderTheMouseFollowsTheShownMagnification) {
     EXPECT_FALSE(pixel_at(d, Rect{}, 0, 0)) << "nothing drawn yet";
 }
 
+// Issue 20, item 5: at 1280 x 720 with the panels shown, A and B (or your
+// scene and the practice reference) at a whole magnification: stacked at the
+// window's height, the plots in a column beside them; never a fraction.
+TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
+    const float label_h = 21.0f;
+    const Layout one = layout_for_panes(1280, 720, true, 1, 512, 320, 1.0f, label_h);
+    EXPECT_FALSE(one.plots_beside) << "one pane fits above the plots";
+    EXPECT_GE(best_grid(1, 512, 320, one.display, 1.0f, label_h).scale, 1);
+    const Layout two = layout_for_panes(1280, 720, true, 2, 512, 320, 1.0f, label_h);
+    EXPECT_TRUE(two.plots_beside);
+    const Grid g = best_grid(2, 512, 320, two.display, 1.0f, label_h);
+    EXPECT_EQ(g.scale, 1);
+    EXPECT_EQ(g.columns, 1) << "A over B";
+    EXPECT_GE(two.bottom.w, kMinPlotsBesideWidth);
+    EXPECT_FLOAT_EQ(two.bottom.x + two.bottom.w, 1280.0f);
+    EXPECT_GE(two.bottom.x, two.display.x + 512.0f) << "the plots never over a pane";
+    // At 1920 x 1080 the two fit side by side above the plots.
+    const Layout big = layout_for_panes(1920, 1080, true, 2, 512, 320, 1.0f, label_h);
+    EXPECT_FALSE(big.plots_beside);
+    EXPECT_GE(best_grid(2, 512, 320, big.display, 1.0f, label_h).scale, 1);
+    // With the panels hidden (F1) the display has the whole window.
+    EXPECT_FALSE(layout_for_panes(1280, 720, false, 2, 512, 320, 1.0f, label_h).plots_beside);
+}
+
 }  // namespace
 }  // namespace m3055::explore

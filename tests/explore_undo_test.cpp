@@ -173,5 +173,21 @@ TEST(ExploreUndo, UndoingBackToTheSavedSceneLeavesNothingUnsaved) {
     std::filesystem::remove(file);
 }
 
+// Issue 20, item 9: the status line tells only the last action: an edit
+// after an undo clears "undid ..." (no stale "redid ... m" after a model switch).
+TEST(ExploreUndo, AnEditClearsTheLastActionsStatus) {
+    ExplorerState state;
+    set_scene(state, default_scene(), "spec example");
+    start_history(state);
+    Material m = *selected_material(state);
+    m.set_number("m", 40);
+    edit_material(state, m);
+    commit_edits(state);
+    ASSERT_TRUE(undo(state));
+    EXPECT_NE(state.status.find("undid"), std::string::npos);
+    set_model(state, "metal");
+    EXPECT_EQ(state.status, "");
+}
+
 }  // namespace
 }  // namespace m3055::explore

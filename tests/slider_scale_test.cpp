@@ -38,5 +38,31 @@ TEST(SliderScale, TextKeepsThreeSignificantDigits) {
     EXPECT_EQ(significant_text(1234.4), "1234");
 }
 
+// Issue 20, item 4: a light's intensity on 4 decades (0.001 ... 10, 0 at
+// the left end): from 0.4 the fill's 4:1 ratio (0.25) is a short, sure move.
+TEST(SliderScale, IntensityHasFourDecadesAndRoomBetweenFillValues) {
+    EXPECT_DOUBLE_EQ(log_slider_floor(0.0, 10.0, kIntensityDecades), 1e-3);
+    EXPECT_EQ(log_slider_position(0.0, 0.0, 10.0, kIntensityDecades), 0.0);
+    EXPECT_NEAR(log_slider_position(1.0, 0.0, 10.0, kIntensityDecades), 0.75, 1e-12);
+    const double px = 150.0;  // the Lights panel's slider
+    const double from_04_to_025 =
+        (log_slider_position(0.4, 0.0, 10.0, kIntensityDecades) - log_slider_position(0.25, 0.0, 10.0, kIntensityDecades)) * px;
+    EXPECT_GT(from_04_to_025, 7.0) << "pixels between 0.4 and 0.25 (the linear slider had 2)";
+    EXPECT_NEAR(log_slider_value(log_slider_position(0.4, 0.0, 10.0, kIntensityDecades), 0.0, 10.0, kIntensityDecades), 0.4,
+                1e-12);
+    // 13 px from 0.4 (the issue's slip to 0) is less than half a decade.
+    EXPECT_GT(log_slider_value(log_slider_position(0.4, 0.0, 10.0, kIntensityDecades) - 13.0 / px, 0.0, 10.0,
+                               kIntensityDecades),
+              0.15);
+}
+
+TEST(SliderScale, ShiftDragMovesATenthAsFastFromWhereShiftWentDown) {
+    EXPECT_DOUBLE_EQ(fine_drag_position(0.5, 100.0, 100.0, 150.0), 0.5);
+    EXPECT_NEAR(fine_drag_position(0.5, 100.0, 250.0, 150.0), 0.6, 1e-12) << "the whole width: a tenth of it";
+    EXPECT_NEAR(fine_drag_position(0.5, 100.0, 85.0, 150.0), 0.49, 1e-12);
+    EXPECT_EQ(fine_drag_position(0.99, 0.0, 1000.0, 150.0), 1.0);
+    EXPECT_EQ(fine_drag_position(0.01, 1000.0, 0.0, 150.0), 0.0);
+}
+
 }  // namespace
 }  // namespace m3055::explore

@@ -66,7 +66,7 @@ void save_as_dialog(ExplorerState& state) {
     if (!state.error.empty()) ImGui::TextColored(ImVec4(1, 0.43f, 0.43f, 1), "%s", state.error.c_str());
     if (ImGui::Button("Save") || enter) {
         state.error.clear();
-        if (save_scene(state, state.save_path)) {
+        if (save_as(state, state.save_path)) {
             ImGui::CloseCurrentPopup();
             if (state.quit_after_save) state.quit = true;
         }
@@ -100,7 +100,7 @@ void draw_menu_bar(ExplorerState& state) {
     if (!ImGui::BeginMenuBar()) return;
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("Save", "Ctrl+S")) save_or_ask(state);
-        if (ImGui::MenuItem("Save as...")) state.save_as_requested = true;
+        if (ImGui::MenuItem("Save as...")) request_save_as(state);
         if (ImGui::MenuItem("Open BRDF...")) state.open_brdf_requested = true;
         if (ImGui::MenuItem("Screenshot", "F12")) state.screenshot_requested = true;
         ImGui::Separator();

@@ -176,8 +176,12 @@ public:
         imgui_.new_frame();
         apply_keys();
         const ImGuiIO& io = ImGui::GetIO();
-        const Layout layout = layout_for(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels);
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+        const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0);
+        const Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
+                                               renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
+                                               renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
+                                               ImGui::GetTextLineHeight() + 4.0f);
         note_free_area(layout, fb_scale);
         apply_mouse();
         note_hovered_row();
@@ -194,7 +198,8 @@ public:
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             info_.profile_b = profile_of_b();
-            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h);
+            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h,
+                              layout.plots_beside);
             draw_brdf_views(state_, brdf_views_.get());
         }
         if (state_.screenshot_requested && renderer_a_) {

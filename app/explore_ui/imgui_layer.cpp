@@ -1,8 +1,12 @@
 #include "explore_ui/imgui_layer.h"
 
+#include "explore_ui/window.h"
+
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+
+#include <GLFW/glfw3.h>
 
 #include <cstdio>
 
@@ -10,9 +14,42 @@ namespace m3055::explore {
 
 namespace {
 constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+WindowEvents& events_of(GLFWwindow* window) {
+    return *static_cast<WindowEvents*>(glfwGetWindowUserPointer(window));
 }
 
-ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
+bool is_modifier(int key) {
+    return (key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER) || key == GLFW_KEY_CAPS_LOCK;
+}
+
+// Queued instead of given to ImGui at once (Dear ImGui 1.86 would lose a
+// press and release between two frames); the frame loop wakes.
+void queue_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    InputEvent event;
+    event.key = key;
+    event.scancode = scancode;
+    event.action = action;
+    event.mods = mods;
+    event.press = action == GLFW_PRESS;
+    event.edit_key = key >= GLFW_KEY_ESCAPE && !is_modifier(key);  // GLFW: printable keys are below 256
+    WindowEvents& events = events_of(window);
+    events.input.push_back(event);
+    events.frames_owed = kFramesAfterInput;
+}
+
+void queue_char(GLFWwindow* window, unsigned codepoint) {
+    InputEvent event;
+    event.kind = InputEvent::Kind::character;
+    event.codepoint = codepoint;
+    WindowEvents& events = events_of(window);
+    events.input.push_back(event);
+    events.frames_owed = kFramesAfterInput;
+}
+
+}  // namespace
+
+ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -24,7 +61,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) {
         std::fclose(f);
         io.Fonts->AddFontFromFileTTF(kFont, 15.0f);
     }
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);  // its key and char callbacks chain to the window's
+    glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)
+    glfwSetCharCallback(window, queue_char);
     ImGui_ImplOpenGL3_Init("#version 330");
 }
 
@@ -35,6 +74,14 @@ ImGuiLayer::~ImGuiLayer() {
 }
 
 void ImGuiLayer::new_frame() {
+    std::deque<InputEvent>& queue = events_of(window_).input;
+    for (std::size_t n = events_for_this_frame(queue); n > 0; --n) {
+        const InputEvent event = queue.front();
+        queue.pop_front();
+        if (event.kind == InputEvent::Kind::character) ImGui_ImplGlfw_CharCallback(window_, event.codepoint);
+        else ImGui_ImplGlfw_KeyCallback(window_, event.key, event.scancode, event.action, event.mods);
+    }
+    if (!queue.empty()) events_of(window_).frames_owed = kFramesAfterInput;  // the rest: the next frames
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

@@ -1,5 +1,9 @@
 // Dear ImGui on the explorer's window (GLFW platform, OpenGL 3 renderer),
 // set up and torn down as one object; its callbacks chain to the window's.
+// Key and character events wait in the window's queue (WindowEvents::input)
+// and reach ImGui at most one transition per key per frame
+// (explore/input_queue.h): a key pressed and released between two frames is
+// not lost.
 #pragma once
 
 struct GLFWwindow;
@@ -13,8 +17,11 @@ public:
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-    void new_frame();  // the backends' and ImGui's NewFrame
+    void new_frame();  // this frame's queued keys, then the backends' and ImGui's NewFrame
     void render();     // ImGui::Render and the OpenGL backend's draw into the bound framebuffer
+
+private:
+    GLFWwindow* window_;
 };
 
 }  // namespace m3055::explore

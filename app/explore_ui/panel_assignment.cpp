@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 namespace m3055::explore {
@@ -15,9 +16,11 @@ namespace {
 
 const ImVec4 kGood(0.45f, 0.9f, 0.45f, 1.0f), kBad(1.0f, 0.45f, 0.45f, 1.0f), kStale(0.6f, 0.6f, 0.6f, 1.0f);
 
+// Always two lines: the controls below keep their place when a grade comes in.
 void score_line(const PracticeStatus& p) {
     if (!p.graded) {
         ImGui::TextColored(kStale, "grading ...");
+        ImGui::TextDisabled(" ");
         return;
     }
     const ImVec4 colour = p.pending ? kStale : p.passed ? kGood : kBad;
@@ -27,15 +30,23 @@ void score_line(const PracticeStatus& p) {
     else ImGui::TextDisabled("graded in %.0f ms (render, compare, rules)", p.grade_ms);
 }
 
-// Every check with its points; a failed one in red with the reason `grade` writes.
+// Every check with its points; a failed one in red with the reason `grade`
+// writes (a passed one's in its tooltip). In a box of fixed height (two lines
+// a check, the most seen; it scrolls when reasons wrap more), so a regrade
+// that passes or fails a check never moves the controls below it.
 void check_rows(const PracticeStatus& p) {
+    static float reserved = 0.0f;
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    reserved = std::max(reserved, line * float(2 * std::max<std::size_t>(p.checks.size(), 1) + 1));
+    ImGui::BeginChild("checks", ImVec2(0.0f, reserved), false);
     for (const grading::Check& c : p.checks) {
         ImGui::TextColored(c.ok ? kGood : kBad, "%s %g/%g", c.ok ? "ok  " : "FAIL", c.earned, c.points);
         ImGui::SameLine();
         ImGui::TextWrapped("%s", c.label.c_str());
-        if (!c.ok || ImGui::IsItemHovered()) {
+        if (c.ok && ImGui::IsItemHovered() && !c.reason.empty()) ImGui::SetTooltip("%s", c.reason.c_str());
+        if (!c.ok) {
             ImGui::Indent();
-            ImGui::PushStyleColor(ImGuiCol_Text, c.ok ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled) : kBad);
+            ImGui::PushStyleColor(ImGuiCol_Text, kBad);
             ImGui::TextWrapped("%s", c.reason.c_str());
             ImGui::PopStyleColor();
             ImGui::Unindent();
@@ -44,6 +55,7 @@ void check_rows(const PracticeStatus& p) {
     // A reason that is no check's (the time budget) stands alone.
     if (p.checks.empty())
         for (const std::string& reason : p.reasons) ImGui::TextColored(kBad, "%s", reason.c_str());
+    ImGui::EndChild();
 }
 
 }  // namespace
@@ -51,7 +63,7 @@ void check_rows(const PracticeStatus& p) {
 void assignment_section(ExplorerState& state) {
     const PracticeStatus& p = state.practice;
     ImGui::TextWrapped("%s", p.title.c_str());
-    ImGui::TextDisabled("left: your scene; right: the reference (%s)", p.reference.c_str());
+    ImGui::TextDisabled("beside your scene: the reference (%s)", p.reference.c_str());
     score_line(p);
     check_rows(p);
     hint("The score and reasons m3055 grade gives this scene (the same code). Save (Ctrl+S, File > Save As) "

@@ -33,16 +33,12 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("M3055 material explorer", nullptr, kFixed | ImGuiWindowFlags_MenuBar);
     draw_menu_bar(state);
+    // The sections scroll in a region of their own; an error shows under it
+    // (never inserted above the controls: they keep their place).
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float error_h = state.error.empty() ? 0.0f : 4.0f * line;
+    ImGui::BeginChild("sections", ImVec2(0.0f, -error_h), false);
     ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
-
-    if (!state.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
-        ImGui::TextWrapped("Error: %s", state.error.c_str());
-        ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) state.error.clear();
-        tooltip("Hides this message (it changes nothing in the scene).");
-        ImGui::Separator();
-    }
 
     if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
     if (header(state, "Display", true)) display_section(state, info);
@@ -53,8 +49,19 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
     if (header(state, "A/B compare", false)) compare_section(state);
     if (header(state, "File", true)) file_section(state);
     state.section_requests.clear();
-
     ImGui::PopItemWidth();
+    ImGui::EndChild();
+
+    if (!state.error.empty()) {
+        ImGui::BeginChild("error", ImVec2(0.0f, 0.0f), false);
+        ImGui::Separator();
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
+        ImGui::TextWrapped("Error: %s", state.error.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) state.error.clear();
+        tooltip("Hides this message (it changes nothing in the scene).");
+        ImGui::EndChild();
+    }
     ImGui::End();
 }
 
@@ -108,11 +115,24 @@ void stats_column(const ExplorerState& state, const FrameInfo& info) {
 // Three columns sized from the room there is (1280 x 720 included): the polar
 // plot, the scanline profile, the statistics.
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
-                       float width, float height) {
+                       float width, float height, bool column) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Plane of incidence", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const ImVec2 room = ImGui::GetContentRegionAvail();
+    if (column) {  // beside the stacked panes (explore/layout.h): the three one under another
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        const float plot_h = std::max(200.0f, room.y * 0.45f), profile_h = std::max(100.0f, room.y * 0.22f);
+        ImGui::BeginGroup();
+        plot_section(state, info.plane_curves, room.x, plot_h);
+        ImGui::EndGroup();
+        profile_plot(info.profile, info.profile_b, room.x, profile_h - 2.0f * line);
+        ImGui::BeginChild("stats", ImVec2(0.0f, 0.0f));
+        stats_column(state, info);
+        ImGui::EndChild();
+        ImGui::End();
+        return;
+    }
     const float gap = 16.0f, stats_w = std::clamp(room.x * 0.28f, 220.0f, 330.0f);
     const float plots_w = std::max(200.0f, room.x - stats_w - 2.0f * gap);
 

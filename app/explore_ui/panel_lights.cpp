@@ -13,7 +13,8 @@ namespace m3055::explore {
 
 namespace {
 
-const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term)";
+const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term); "
+                                   "logarithmic, 0.001 ... 10 (0 at the left end); Shift drags finely, Ctrl+click types";
 
 // The scene format's light "name": what is typed is kept to what the format allows (state.h).
 bool name_field(Light& light) {
@@ -46,7 +47,7 @@ bool light_editor(Light& light, int index, const Material* material) {
         ImGui::BeginGroup();
         ImGui::PushItemWidth(150);
         changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
-        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip(kIntensityHelp);
         ImGui::PopItemWidth();
         ImGui::EndGroup();
@@ -57,13 +58,13 @@ bool light_editor(Light& light, int index, const Material* material) {
             changed = true;
         }
         tooltip("where the light is, in scene units (docs/spec.md section 7)");
-        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0);
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip(kIntensityHelp);
-        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0);
+        changed |= slider_double("S_c", &light.att_constant, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("constant term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (the lecture's equation, spec section 4)");
-        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0);
+        changed |= slider_double("S_l", &light.att_linear, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("linear term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
-        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0);
+        changed |= slider_double("S_q", &light.att_quadratic, 0.0, 10.0, "%.3f", true, kIntensityDecades);
         tooltip("quadratic term of the attenuation 1/(S_c + S_l r + S_q r^2), in [0, 10] (spec section 4)");
         if (light.type == LightType::spot) {
             ImGui::TextUnformatted("spot direction:");

@@ -42,7 +42,7 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
 }
 
 void objects_section(ExplorerState& state) {
-    ImGui::TextUnformatted("figure presets (keys 1-9, 0 = spec example):");
+    ImGui::TextUnformatted("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;
@@ -153,7 +153,7 @@ void file_section(ExplorerState& state) {
     if (ImGui::Button("Save (Ctrl+S)")) save_or_ask(state);
     tooltip("Writes the scene JSON to its own file (asks for one when it has none).");
     ImGui::SameLine();
-    if (ImGui::Button("Save as...")) state.save_as_requested = true;
+    if (ImGui::Button("Save as...")) request_save_as(state);
     tooltip("Writes the scene JSON to a file you name; it becomes the scene's own file.");
     ImGui::InputText("screenshot folder", &state.screenshot_dir);
     tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");

@@ -42,7 +42,7 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
                      float height);
 // Bottom strip: the polar plot of the selected material and the frame statistics.
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
-                       float width, float height);
+                       float width, float height, bool column = false);
 
 // The side panel's menu bar (File, Edit: undo/redo by name) and the modal
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.

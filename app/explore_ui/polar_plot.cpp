@@ -84,6 +84,18 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
     bool clipped = draw_curve(draw, curve, scale, top, radius, at, false);
     if (b) clipped |= draw_curve(draw, *b, scale, top, radius, at, true);
     draw->AddText(ImVec2(origin.x + 4, corner.y), IM_COL32(255, 255, 255, 140), "N");
+    // Legend, top left: the curves are the colour's channels; L the light, R its mirror; B dashed.
+    {
+        const ImU32 channel[3] = {IM_COL32(255, 80, 80, 255), IM_COL32(80, 230, 80, 255), IM_COL32(90, 140, 255, 255)};
+        const char* names[3] = {"red", "green", "blue"};
+        const float line = ImGui::GetTextLineHeight();
+        float x = corner.x;
+        for (int c = 0; c < 3; ++c) {
+            draw->AddText(ImVec2(x, corner.y), channel[c], names[c]);
+            x += ImGui::CalcTextSize(names[c]).x + 6.0f;
+        }
+        draw->AddText(ImVec2(corner.x, corner.y + line), IM_COL32(255, 255, 255, 140), b ? "channels; B dashed" : "channels");
+    }
     if (curve.light_behind) {
         const char* text = "light behind the surface: no lobe";
         const ImVec2 extent = ImGui::CalcTextSize(text);

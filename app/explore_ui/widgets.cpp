@@ -35,9 +35,31 @@ std::string literal_format(const std::string& text) {
 ImGuiID typing_id = 0;
 bool typing_focus = false;  // give the field the keyboard in its first frame
 
+// Shift held on a held slider: the slider's last item moves a tenth as fast
+// as the mouse from where it was when Shift went down (slider_scale.h's
+// fine_drag_position). `position` is the item's position before this frame's
+// slider call; set to the fine one. False when no fine drag is on.
+ImGuiID fine_id = 0;
+double fine_anchor_position = 0.0, fine_anchor_x = 0.0;
+
+bool fine_drag(ImGuiID id, double before, double* position) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!ImGui::IsItemActive() || !io.KeyShift) {
+        if (fine_id == id) fine_id = 0;
+        return false;
+    }
+    if (fine_id != id) {
+        fine_id = id;
+        fine_anchor_position = before;
+        fine_anchor_x = io.MousePos.x;
+    }
+    *position = fine_drag_position(fine_anchor_position, fine_anchor_x, io.MousePos.x, ImGui::GetItemRectSize().x);
+    return true;
+}
+
 // A slider over the position (slider_scale.h) that shows the value with three
-// significant digits; Ctrl+click types the value.
-bool log_slider(const char* label, double* value, double lo, double hi, const char* format) {
+// significant digits; Ctrl+click types the value; Shift drags finely.
+bool log_slider(const char* label, double* value, double lo, double hi, const char* format, double decades) {
     const ImGuiID id = ImGui::GetID(label);
     if (typing_id == id) {
         if (typing_focus) ImGui::SetKeyboardFocusHere();
@@ -53,26 +75,41 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
     }
     const auto [before, after] = around_conversion(format);
     const std::string shown = literal_format(before + significant_text(*value) + after);
-    float position = static_cast<float>(log_slider_position(*value, lo, hi));
-    const bool moved = ImGui::SliderFloat(label, &position, 0.0f, 1.0f, shown.c_str(),
-                                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    const double at = log_slider_position(*value, lo, hi, decades);
+    float position = static_cast<float>(at);
+    bool moved = ImGui::SliderFloat(label, &position, 0.0f, 1.0f, shown.c_str(),
+                                    ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    double fine = at;
+    if (fine_drag(id, at, &fine)) {
+        if (fine == at) return false;
+        *value = log_slider_value(fine, lo, hi, decades);
+        return true;
+    }
     if (ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::GetIO().KeyCtrl) {
         typing_id = id;  // and the click does not move the value
         typing_focus = true;
         return false;
     }
     if (!moved) return false;
-    *value = log_slider_value(position, lo, hi);
+    *value = log_slider_value(position, lo, hi, decades);
     return true;
 }
 
 }  // namespace
 
 bool slider_double(const char* label, double* value, double lo, double hi, const char* format,
-                   bool logarithmic) {
-    if (logarithmic) return log_slider(label, value, lo, hi, format);
-    const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
-                                             ImGuiSliderFlags_AlwaysClamp);
+                   bool logarithmic, double decades) {
+    if (logarithmic) return log_slider(label, value, lo, hi, format, decades);
+    const ImGuiID id = ImGui::GetID(label);
+    const double old = *value;
+    const double before = hi > lo ? (old - lo) / (hi - lo) : 0.0;
+    bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
+                                       ImGuiSliderFlags_AlwaysClamp);
+    double fine = before;
+    if (fine_drag(id, before, &fine)) {
+        *value = lo + fine * (hi - lo);
+        changed = *value != old;
+    }
     *value = std::clamp(*value, lo, hi);
     return changed;
 }

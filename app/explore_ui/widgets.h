@@ -3,6 +3,7 @@
 // parameter spans decades).
 #pragma once
 
+#include "explore/slider_scale.h"
 #include "models/model_spec.h"
 #include "scene/scene.h"
 
@@ -11,10 +12,12 @@
 
 namespace m3055::explore {
 
-// A slider on a double; Ctrl+click types a value. Returns true when changed.
-// The result is clamped to [lo, hi], so the scene always stays valid.
+// A slider on a double; Ctrl+click types a value; Shift while dragging moves
+// it a tenth as fast (explore/slider_scale.h). Returns true when changed.
+// The result is clamped to [lo, hi], so the scene always stays valid. A
+// logarithmic one from lo = 0 spans `decades` below hi.
 bool slider_double(const char* label, double* value, double lo, double hi,
-                   const char* format = "%.3f", bool logarithmic = false);
+                   const char* format = "%.3f", bool logarithmic = false, double decades = kLogSliderDecades);
 
 // Colour picker for a [0,1]^3 colour.
 bool color_edit(const char* label, dvec3* color);

@@ -3,6 +3,9 @@
 // frame loop (which acts on them; the callbacks only record and wake it).
 #pragma once
 
+#include "explore/input_queue.h"
+
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,8 @@ struct WindowEvents {
     struct Key {
         int key, mods;
     };
-    std::vector<Key> keys;  // key presses, in order
+    std::vector<Key> keys;  // key presses, in order (as fed to ImGui)
+    std::deque<InputEvent> input;  // key and character events not yet fed to ImGui (imgui_layer.cpp)
 };
 
 class Window {

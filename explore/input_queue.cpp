@@ -1,0 +1,23 @@
+#include "explore/input_queue.h"
+
+#include <set>
+
+namespace m3055::explore {
+
+std::size_t events_for_this_frame(const std::deque<InputEvent>& queue) {
+    std::set<int> keys_fed;
+    bool key_pressed = false;
+    std::size_t n = 0;
+    for (const InputEvent& event : queue) {
+        if (event.kind == InputEvent::Kind::key) {
+            if (!keys_fed.insert(event.key).second) break;  // its second transition: next frame
+            if (event.press && event.edit_key) key_pressed = true;
+        } else if (key_pressed) {
+            break;  // a character after a key press: next frame, so the order holds
+        }
+        ++n;
+    }
+    return n == 0 && !queue.empty() ? 1 : n;
+}
+
+}  // namespace m3055::explore

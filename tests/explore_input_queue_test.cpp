@@ -1,0 +1,74 @@
+// The keyboard queue (explore/input_queue.h): a burst of presses and releases
+// reaches Dear ImGui one transition per key per frame, characters stay in
+// order with the keys around them, and nothing is dropped.
+#include "explore/input_queue.h"
+
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <string>
+
+namespace m3055::explore {
+namespace {
+
+constexpr int kBackspace = 259, kShift = 340, kA = 65;
+
+InputEvent key(int code, bool down) {
+    InputEvent e;
+    e.key = code;
+    e.action = down ? 1 : 0;
+    e.press = down;
+    e.edit_key = code == kBackspace;
+    return e;
+}
+
+InputEvent character(unsigned c) {
+    InputEvent e;
+    e.kind = InputEvent::Kind::character;
+    e.codepoint = c;
+    return e;
+}
+
+// Feeds the queue frame by frame; each frame's events as a string
+// ("B+" press, "B-" release, "'a'" character), frames separated by "|".
+std::string frames(std::deque<InputEvent> queue) {
+    std::string out;
+    while (!queue.empty()) {
+        const std::size_t n = events_for_this_frame(queue);
+        EXPECT_GE(n, 1u);
+        if (!out.empty()) out += "|";
+        for (std::size_t i = 0; i < n; ++i) {
+            const InputEvent& e = queue.front();
+            if (e.kind == InputEvent::Kind::character) out += "'" + std::string(1, char(e.codepoint)) + "'";
+            else out += (e.key == kBackspace ? "B" : e.key == kShift ? "S" : "K") + std::string(e.press ? "+" : "-");
+            queue.pop_front();
+        }
+    }
+    return out;
+}
+
+TEST(ExploreInputQueue, ABurstOfBackspacesIsOnePressAndReleaseAFrameEach) {
+    std::deque<InputEvent> queue;
+    for (int i = 0; i < 5; ++i) {
+        queue.push_back(key(kBackspace, true));
+        queue.push_back(key(kBackspace, false));
+    }
+    EXPECT_EQ(frames(queue), "B+|B-|B+|B-|B+|B-|B+|B-|B+|B-") << "10 transitions, 10 frames: none lost";
+}
+
+TEST(ExploreInputQueue, CharactersGoTogetherButNeverAfterAKeyPressInTheSameFrame) {
+    std::deque<InputEvent> queue = {character('0'), character('.'), character('6'), key(kBackspace, true),
+                                    key(kBackspace, false), character('7')};
+    EXPECT_EQ(frames(queue), "'0''.''6'B+|B-'7'") << "'7' after the BackSpace's release, never before its press";
+}
+
+TEST(ExploreInputQueue, ALetterAndItsCharacterShareAFrameItsReleaseWaits) {
+    std::deque<InputEvent> queue = {key(kShift, true), key(kA, true), character('A'), key(kA, false),
+                                    key(kShift, false), key(kA, true), character('a'), key(kA, false)};
+    EXPECT_EQ(frames(queue), "S+K+'A'|K-S-|K+'a'|K-");
+}
+
+TEST(ExploreInputQueue, AnEmptyQueueFeedsNothing) { EXPECT_EQ(events_for_this_frame({}), 0u); }
+
+}  // namespace
+}  // namespace m3055::explore
