@@ -37,6 +37,21 @@
 namespace m3055 {
 namespace {
 
+// The sanitizer build (scripts/test-sanitize) draws frames several times
+// slower: the two tests paced by wall-clock sleeps (a Shift drag's steps, a
+// regrade's settling time) run in the Release suite only, and say so.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
 using test::TempDir;
 
 bool on_path(const std::string& program) {
@@ -497,6 +512,7 @@ TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {
 // drags it finely: 50 px right from 1 with Shift held gives about 1.2 (a
 // plain drag of 50 px would reach 10, the linear slider 4.4).
 TEST_F(ExplorerInput, ShiftDragSetsALightsIntensityFinely) {
+    if (kSanitized) GTEST_SKIP() << "paced by wall-clock sleeps: Release suite only (see kSanitized)";
     test::write_text(dir_.file("mine.json"), test::read_text(test::source_path("scenes/spec_example.json")));
     test::write_text(dir_.file("l.txt"), "section Display closed\nsection Material closed\nsection Lights open\n");
     ASSERT_TRUE(start_with(1280, 720, {"--scene", dir_.file("mine.json"), "--script", dir_.file("l.txt")}));
@@ -544,6 +560,7 @@ TEST_F(ExplorerInput, SplitOnCopiesAIntoAnUntouchedB) {
 // leaves the side panel's controls where they were: the Display section's
 // rows are the same pixels before and after.
 TEST_F(ExplorerInput, ARegradeDoesNotMoveTheSidePanelsControls) {
+    if (kSanitized) GTEST_SKIP() << "paced by wall-clock sleeps: Release suite only (see kSanitized)";
     test::write_text(dir_.file("mine.json"), test::read_text(test::source_path("scenes/spec_example.json")));
     test::write_text(dir_.file("warm.txt"), "idle 4\nlight_preset three_point_warm\n");
     ASSERT_TRUE(start_with(1280, 720, {"--assignment", test::source_path("assignments/three-point/assignment.json"),
