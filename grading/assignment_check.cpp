@@ -44,24 +44,6 @@ std::string objects_text(std::size_t count) {
     return std::to_string(count) + (count == 1 ? " object" : " objects");
 }
 
-// "objects[0].material.m" -> the JSON pointer "/objects/0/material/m" (as rules.cpp reads it).
-const nlohmann::json* find_path(const nlohmann::json& document, const std::string& path) {
-    std::string pointer = "/";
-    for (char c : path) {
-        if (c == '.' || c == '[') {
-            if (pointer.back() != '/') pointer += '/';
-        } else if (c != ']') {
-            pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-        }
-    }
-    try {
-        const nlohmann::json::json_pointer at(pointer);
-        if (document.contains(at)) return &document.at(at);
-    } catch (const nlohmann::json::exception&) {
-    }
-    return nullptr;
-}
-
 }  // namespace
 
 AssignmentCheck check_assignment(const Assignment& a) {
@@ -117,7 +99,7 @@ AssignmentCheck check_assignment(const Assignment& a) {
             error(field, "key_to_fill compares the lights named \"key\" and \"fill\"; the reference scene's lights are " +
                              joined(light_names(*scene)));
         if (rule.kind == RuleKind::range) {
-            const nlohmann::json* value = find_path(document, rule.text);
+            const nlohmann::json* value = find_scene_value(document, rule.text);
             if (!value)
                 error(field + ".path", text::quote(rule.text, text::kMaxPathBytes) + " is not in the reference scene");
             else if (!value->is_number())

@@ -87,28 +87,10 @@ Check check_eq14(const Rule& rule, const Scene& scene) {
                                 fixed(off, 2) + " % from 1 (eq. 14), allowed " + format_number(rule.max) + " %");
 }
 
-// "objects[0].material.m" -> the JSON pointer "/objects/0/material/m".
-nlohmann::json::json_pointer pointer_of(const std::string& path) {
-    std::string pointer = "/";
-    for (char c : path) {
-        if (c == '.' || c == '[') {
-            if (pointer.back() != '/') pointer += '/';
-        } else if (c != ']') {
-            pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
-        }
-    }
-    return nlohmann::json::json_pointer(pointer);
-}
-
 Check check_range(const Rule& rule, const nlohmann::json& document) {
     const std::string name = text::cut_end(rule.text, text::kMaxPathBytes);
     const std::string range = "[" + format_number(rule.min) + ", " + format_number(rule.max) + "]";
-    const nlohmann::json* value = nullptr;
-    try {
-        const auto pointer = pointer_of(rule.text);
-        if (document.contains(pointer)) value = &document.at(pointer);
-    } catch (const nlohmann::json::exception&) {
-    }
+    const nlohmann::json* value = find_scene_value(document, rule.text);
     if (!value) return result(rule, false, name + ": not in the scene");
     if (!value->is_number()) return result(rule, false, name + ": not a number");
     const double v = value->get<double>();
@@ -133,6 +115,32 @@ Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& doc
         case RuleKind::range: return check_range(rule, document);
     }
     return result(rule, false, "unknown rule");
+}
+
+namespace {
+
+// "objects[0].material.m" -> the JSON pointer "/objects/0/material/m".
+nlohmann::json::json_pointer pointer_of(const std::string& path) {
+    std::string pointer = "/";
+    for (char c : path) {
+        if (c == '.' || c == '[') {
+            if (pointer.back() != '/') pointer += '/';
+        } else if (c != ']') {
+            pointer += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+        }
+    }
+    return nlohmann::json::json_pointer(pointer);
+}
+
+}  // namespace
+
+const nlohmann::json* find_scene_value(const nlohmann::json& document, const std::string& path) {
+    try {
+        const auto pointer = pointer_of(path);
+        if (document.contains(pointer)) return &document.at(pointer);
+    } catch (const nlohmann::json::exception&) {
+    }
+    return nullptr;
 }
 
 }  // namespace m3055::grading

@@ -23,4 +23,9 @@ struct Check {
 // out, so a range rule finds a parameter the student left at its default.
 Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& document);
 
+// The value at a rule's path ("objects[0].material.m") in a scene's JSON, or
+// nullptr when the path is not there or not a path: the range rule and
+// `grade --check` read paths the same way.
+const nlohmann::json* find_scene_value(const nlohmann::json& document, const std::string& path);
+
 }  // namespace m3055::grading
