@@ -85,7 +85,7 @@ Generated random_material(std::mt19937& rng, bool hostile) {
 
 dvec3 random_unit(std::mt19937& rng) {
     std::normal_distribution<double> g(0.0, 1.0);
-    return glm::normalize(dvec3(g(rng), g(rng), g(rng)));
+    return glm::normalize(dvec3{g(rng), g(rng), g(rng)});
 }
 
 TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {

@@ -2,6 +2,7 @@
 // loads back equal, a bad file keeps the current scene and says why, a load
 // is one undo step, and screenshots never overwrite.
 #include "explore/files.h"
+#include "test_paths.h"
 #include "explore/operations.h"
 #include "explore/start.h"
 #include "explore/undo.h"

@@ -2,6 +2,7 @@
 // the grade goes stale on an edit and is recomputed once the edit has
 // settled, and a scene `grade` refuses scores what `grade` gives it.
 #include "explore/practice.h"
+#include "test_paths.h"
 
 #include "brdf_file/brdf_model.h"
 #include "image/image.h"

@@ -11,6 +11,7 @@
 // test first checks that its action changed what it should, so a moved
 // widget fails the test instead of passing it vacuously.
 #include "image/image.h"
+#include "test_paths.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -30,9 +31,6 @@
 #include <sstream>
 #include <thread>
 
-#ifndef M3055_BINARY
-#define M3055_BINARY "m3055"
-#endif
 
 namespace m3055 {
 namespace {

@@ -2,6 +2,7 @@
 // save a screenshot byte-identical to `m3055 render` of the saved scene, show
 // panels and the emulated display in its window, and sleep when idle.
 #include "image/image.h"
+#include "test_paths.h"
 #include "models/model_table.h"
 #include "scene/load.h"
 #include "scene/presets.h"
@@ -22,9 +23,6 @@
 #include <set>
 #include <sstream>
 
-#ifndef M3055_BINARY
-#define M3055_BINARY "m3055"
-#endif
 
 namespace m3055 {
 namespace {

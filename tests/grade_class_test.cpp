@@ -3,6 +3,7 @@
 // bytes from Windows zip files, spaces, newlines, 240-character names, names
 // differing only by case.
 #include "grading/submissions.h"
+#include "test_paths.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -158,7 +159,7 @@ std::string write_assignment(TempDir& dir, const std::string& name, const std::f
 
 // Runs m3055 from `cwd` through the shell; the exit status.
 int run_in(const std::string& cwd, const std::string& args) {
-    return std::system(("cd '" + cwd + "' && " M3055_BINARY " " + args + " 2>/dev/null").c_str());
+    return std::system(("cd '" + cwd + "' && " + std::string(M3055_BINARY) + " " + args + " 2>/dev/null").c_str());
 }
 
 TEST(GradeClass, ShardsRunFromDifferentFoldersMergeToTheUnshardedBytes) {

@@ -3,6 +3,7 @@
 // stopping the run, a run killed halfway leaving no tables, report.html in
 // headless Chromium, and 4 shards under GNU parallel merged to the same bytes.
 #include "grading/grade_outputs.h"
+#include "test_paths.h"
 #include "image/image.h"
 #include "test_support.h"
 #include "untrusted_harness.h"
@@ -205,7 +206,7 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
         fs::copy(entry.path(), subs + "/" + entry.path().filename().string(), fs::copy_options::recursive);
     for (int i = 0; i < 5; ++i) fs::copy_file(kSubmissions + "/bob.json", subs + "/extra" + std::to_string(i) + ".json");
     ASSERT_EQ(run_m3055({"grade", kAssignment, subs, "--out", dir.file("one")}).exit_code, 0);
-    const std::string command = "parallel --will-cite -j 4 '" M3055_BINARY " grade " + kAssignment + " " + subs +
+    const std::string command = "parallel --will-cite -j 4 '" + std::string(M3055_BINARY) + " grade " + kAssignment + " " + subs +
                                 " --out " + dir.path() + "/shard{} --shard {}/4 2>/dev/null' ::: 1 2 3 4";
     ASSERT_EQ(std::system(command.c_str()), 0);
     // Shards in any order on the command line.

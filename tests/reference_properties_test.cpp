@@ -86,7 +86,7 @@ void expect_near(dvec3 actual, dvec3 expected, double tol, const char* what) {
 dvec3 random_direction(std::mt19937& rng, dvec3 axis, double min_cos) {
     std::normal_distribution<double> g(0.0, 1.0);
     for (;;) {
-        const dvec3 v = glm::normalize(dvec3(g(rng), g(rng), g(rng)));
+        const dvec3 v = glm::normalize(dvec3{g(rng), g(rng), g(rng)});
         if (glm::dot(v, axis) >= min_cos) return v;
     }
 }

@@ -1,6 +1,7 @@
 // Scene loader (docs/spec.md#7-scene-files): exact values, defaults, one-line error messages
 // naming file and JSON path, --set overrides, and the scene_to_json round trip.
 #include "material_support.h"
+#include "test_paths.h"
 #include "scene/json_node.h"
 #include "scene/load.h"
 #include "test_support.h"
@@ -47,8 +48,6 @@ std::string error_after(const std::function<void(json&)>& edit) {
     return "no error";
 }
 
-// test_support's source_path falls back to "." when its own library is built
-// without the M3055_SOURCE_DIR definition; this executable always has it.
 std::string repo_path(const std::string& relative) { return std::string(M3055_SOURCE_DIR) + "/" + relative; }
 
 Scene load_text(const std::string& text) { return scene_from_json(json::parse(text), "scene.json"); }

@@ -2,6 +2,7 @@
 // 512 x 320 at 5 bits with every sphere inside the frame, the swept
 // parameters are the paper's (docs/spec.md#6-figures), and the metal weights meet eq. 14.
 #include "scene/load.h"
+#include "test_paths.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
@@ -21,8 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// tests/CMakeLists.txt defines M3055_SOURCE_DIR on this executable (the copy in
-// the support library falls back to "."), so build the path here.
 std::string scene_path(const std::string& name) {
     return std::string(M3055_SOURCE_DIR) + "/scenes/" + name;
 }

@@ -92,7 +92,7 @@ double t_p_value(Rng& rng) {  // [0, 10]
 // not depend on the model); the material takes those its model has.
 Material random_material(Rng& rng, const char* model) {
     Material m = Material::of(model);
-    m.set_vec3("color", dvec3(unit_value(rng), unit_value(rng), unit_value(rng)));
+    m.set_vec3("color", dvec3{unit_value(rng), unit_value(rng), unit_value(rng)});
     const double d = unit_value(rng), w = unit_value(rng), exponent = exponent_value(rng);
     const double t_n = unit_value(rng), t_p = t_p_value(rng);
     m.set_number("d", d);
@@ -110,8 +110,8 @@ Material random_material(Rng& rng, const char* model) {
 
 dvec3 random_unit(Rng& rng) {
     std::normal_distribution<double> g;
-    dvec3 v(g(rng), g(rng), g(rng));
-    while (glm::length(v) < 1e-6) v = dvec3(g(rng), g(rng), g(rng));
+    dvec3 v{g(rng), g(rng), g(rng)};
+    while (glm::length(v) < 1e-6) v = dvec3{g(rng), g(rng), g(rng)};
     return glm::normalize(v);
 }
 
@@ -352,6 +352,10 @@ std::string describe(const StressInput& in, const StressOutput& gpu, const Stres
 //    set to 0 (llvmpipe flushes denormals, also in products);
 //  - kind 1: nearly (anti)parallel directions (within 2^-19) made exactly so
 //    (normalize can round two such vectors to the same one);
+//  - kinds 2 and 3: L and V moved along N by +-2^-22 of their length, so that
+//    the side of the surface a grazing light or view is on flips whichever
+//    way the random moves below happen to go (the jump of a light at
+//    N.L = 0: a highlight at R.V ~ 1 switches on at once);
 //  - otherwise every direction moved by |v| 2^-k u, u in [-1, 1]^3, k = 21..24:
 //    a few ulps of a unit vector, what the GPU's normalize, L / |L|, L + V and
 //    dot products may be off by. (Relative changes of each component would
@@ -375,18 +379,22 @@ StressInput perturbed(const StressInput& in, Rng& rng, int kind) {
         snap_pair(out.L, out.V);
         snap_pair(out.N, out.V);
         snap_pair(out.N, out.L);
+    } else if (kind == 2 || kind == 3) {
+        const dvec3 N = glm::normalize(dvec3(in.N));
+        const double step = std::ldexp(kind == 2 ? 1.0 : -1.0, -22);
+        for (glm::vec3* v : {&out.L, &out.V}) *v = glm::vec3(dvec3(*v) + glm::length(dvec3(*v)) * step * N);
     } else if (kind % 2 == 0) {
         // H = normalize(L + V) from float unit vectors is off in direction by
         // about 2^-23 / |L + V| (their lengths are off by an ulp, and L + V
         // cancels): the lobes see that as N turned by as much.
         const dvec3 L = glm::normalize(dvec3(in.L)), V = glm::normalize(dvec3(in.V));
         const double turn = std::min(1.0, std::ldexp(1.0, -22) / std::max(glm::length(L + V), 1e-300));
-        const dvec3 u(uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0));
+        const dvec3 u{uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0)};
         out.N = glm::vec3(glm::normalize(dvec3(in.N)) + turn * u);
     } else {
         const double size = std::ldexp(1.0, -std::uniform_int_distribution<int>(21, 24)(rng));
         for (glm::vec3* v : {&out.N, &out.V, &out.L}) {
-            const dvec3 u(uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0));
+            const dvec3 u{uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0)};
             *v = glm::vec3(dvec3(*v) + glm::length(dvec3(*v)) * size * u);
         }
     }
@@ -395,7 +403,7 @@ StressInput perturbed(const StressInput& in, Rng& rng, int kind) {
 
 // Per channel (colour 0-2, transmittance 3-5): how far the reference moves
 // under kPerturbations such perturbations, and the metal bound's largest value.
-constexpr int kPerturbations = 16;
+constexpr int kPerturbations = 18;
 struct Conditioning {
     double spread[6] = {0, 0, 0, 0, 0, 0};
     dvec3 metal_bound{0.0};

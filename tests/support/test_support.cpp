@@ -1,4 +1,5 @@
 #include "test_support.h"
+#include "test_paths.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -14,15 +15,6 @@
 #include <thread>
 #include <chrono>
 
-#ifndef M3055_BINARY
-#define M3055_BINARY "m3055"
-#endif
-#ifndef M3055_MEASURE_CHILD
-#define M3055_MEASURE_CHILD "m3055_measure_child"
-#endif
-#ifndef M3055_SOURCE_DIR
-#define M3055_SOURCE_DIR "."
-#endif
 
 namespace m3055::test {
 
