@@ -187,10 +187,10 @@ std::size_t run_batch(const std::function<Capture&()>& capture, const std::vecto
             // The same steps, and so the same bytes, as Capture::render_to_files.
             auto display = std::make_shared<Rgb8Image>(renderer.read_display());
             auto raw = std::make_shared<RgbFloatImage>();
-            const bool check_finite = grading::may_render_nonfinite(scene);  // a .brdf material
+            const bool check_finite = may_render_nonfinite(scene);  // a .brdf material
             if (!item.raw.empty() || check_finite) *raw = renderer.read_raw();
             if (check_finite)
-                if (const grading::NonFinite nonfinite = grading::count_nonfinite(*raw); nonfinite.pixels > 0 && options.warned)
+                if (const NonFinite nonfinite = count_nonfinite(*raw); nonfinite.pixels > 0 && options.warned)
                     options.warned(i, item, nonfinite_warning(item.scene, nonfinite));
             if (item.raw.empty()) *raw = RgbFloatImage();
             bytes_in_flight += bytes;

@@ -28,13 +28,13 @@ Capture::Capture(Backend backend)
     : context_(make_context(backend)), renderer_(std::make_unique<Renderer>(context_->gl())) {}
 
 void Capture::render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path,
-                              const std::function<void()>& committed, grading::NonFinite* nonfinite) {
+                              const std::function<void()>& committed, NonFinite* nonfinite) {
     renderer_->render(scene);
     // Read both images before writing either, so a GL failure leaves no file.
     const Rgb8Image display = renderer_->read_display();
     RgbFloatImage raw;
     if (!raw_path.empty() || nonfinite) raw = renderer_->read_raw();
-    if (nonfinite) *nonfinite = grading::count_nonfinite(raw);
+    if (nonfinite) *nonfinite = count_nonfinite(raw);
     write_capture_files(png_path, display, raw_path, raw, committed);
 }
 
@@ -44,8 +44,8 @@ std::optional<std::chrono::steady_clock::time_point> scene_deadline(std::chrono:
     return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
 }
 
-std::string nonfinite_warning(const std::string& scene_path, const grading::NonFinite& nonfinite) {
-    return text::one_line("m3055: warning: " + text::quote_name(scene_path) + ": " + grading::nonfinite_text(nonfinite) +
+std::string nonfinite_warning(const std::string& scene_path, const NonFinite& nonfinite) {
+    return text::one_line("m3055: warning: " + text::quote_name(scene_path) + ": " + nonfinite_text(nonfinite) +
                           " in the render (a material gives values that are not numbers; the display shows them as "
                           "some level)");
 }

@@ -4,7 +4,7 @@
 
 #include "gl/context.h"
 #include "frame/renderer.h"
-#include "grading/nonfinite.h"
+#include "analysis/nonfinite.h"
 #include "scene/scene.h"
 
 #include <chrono>
@@ -31,7 +31,7 @@ std::string over_budget_message(const std::string& scene_path, double seconds);
 
 // "m3055: warning: SCENE: 12 pixels are NaN in the render (...)": what
 // `render` and `batch` print for a render with non-finite pixels.
-std::string nonfinite_warning(const std::string& scene_path, const grading::NonFinite& nonfinite);
+std::string nonfinite_warning(const std::string& scene_path, const NonFinite& nonfinite);
 
 class Capture {
 public:
@@ -40,7 +40,7 @@ public:
     // empty), each atomically. Throws on any failure; writes nothing then.
     // `nonfinite`, when given: the render's NaN and infinite pixels, counted.
     void render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path,
-                         const std::function<void()>& committed = {}, grading::NonFinite* nonfinite = nullptr);
+                         const std::function<void()>& committed = {}, NonFinite* nonfinite = nullptr);
     const HeadlessContext& context() const { return *context_; }
     Renderer& renderer() { return *renderer_; }
 

@@ -56,7 +56,7 @@ void add_render_command(CLI::App& app) {
             // The budget covers loading and drawing, not making the GL context.
             capture.renderer().set_deadline(
                 scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));
-            grading::NonFinite nonfinite;
+            NonFinite nonfinite;
             try {
                 capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, &nonfinite);
             } catch (const RenderTimeout&) {

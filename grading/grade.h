@@ -6,7 +6,7 @@
 
 #include "grading/assignment.h"
 #include "grading/level_compare.h"
-#include "grading/nonfinite.h"
+#include "analysis/nonfinite.h"
 #include "grading/rules.h"
 #include "frame/renderer.h"
 #include "scene/scene.h"

@@ -1,10 +1,10 @@
-#include "grading/nonfinite.h"
+#include "analysis/nonfinite.h"
 
 #include "brdf_file/brdf_model.h"
 
 #include <cmath>
 
-namespace m3055::grading {
+namespace m3055 {
 
 NonFinite count_nonfinite(const RgbFloatImage& raw) {
     NonFinite out;
@@ -36,4 +36,4 @@ std::string nonfinite_text(const NonFinite& c) {
     return count + "not finite (" + std::to_string(c.nan) + " NaN, " + std::to_string(c.inf) + " infinite)";
 }
 
-}  // namespace m3055::grading
+}  // namespace m3055

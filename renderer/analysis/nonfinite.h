@@ -1,6 +1,7 @@
 // Pixels of a render that are not finite numbers (issue 19 item 3): any .brdf
 // material can make NaN or infinite values, which the display's quantization
-// turns into some level or other; grading fails the image check on them and
+// turns into some level or other; grading fails the image check on them,
+// the explorer warns and its probe marks them, and
 // `render` and `batch` warn.
 #pragma once
 
@@ -10,7 +11,7 @@
 #include <cstddef>
 #include <string>
 
-namespace m3055::grading {
+namespace m3055 {
 
 struct NonFinite {
     std::size_t pixels = 0;  // pixels with a channel NaN or infinite
@@ -31,4 +32,4 @@ bool may_render_nonfinite(const Scene& scene);
 // (2 NaN, 1 infinite)"; "" when none.
 std::string nonfinite_text(const NonFinite& counts);
 
-}  // namespace m3055::grading
+}  // namespace m3055
