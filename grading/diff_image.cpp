@@ -1,8 +1,13 @@
 #include "grading/diff_image.h"
 
+#include "grading/legend_font.h"
 #include "grading/tiny_font.h"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
+#include <memory>
+#include <string>
 #include <mutex>
 #include <vector>
 
@@ -70,27 +75,68 @@ void difference_row(const std::uint8_t* la, const std::uint8_t* lb, std::uint8_t
     }
 }
 
+// The legend's layout: "levels off:", then a swatch and its label a class.
+// With the real font (legend_font.h) at kLegendTextHeight pixels, readable
+// where the report and a feedback page show the image at half size; the
+// 3 x 5 glyphs at scale 2 only when the font file is missing.
+constexpr float kLegendTextHeight = 25.0f;
+constexpr int kSwatch = 20, kGap = 5, kSpace = 12;
+constexpr const char* kTitle = "levels off:";
+
+struct LegendText {
+    const LegendFont* font = LegendFont::get();
+    int width(const std::string& text) const {
+        return font ? font->width(text, kLegendTextHeight) : text_width(upper(text), 2);
+    }
+    void draw(Rgb8Image& image, int x, int top, const std::string& text, const std::uint8_t rgb[3]) const {
+        if (font) font->draw(image, x, top + (kLegendHeight - int(kLegendTextHeight)) / 2, text, kLegendTextHeight, rgb);
+        else draw_text(image, x, top + (kLegendHeight - 10) / 2, upper(text), 2, rgb);
+    }
+    static std::string upper(std::string text) {
+        for (char& c : text) c = char(std::toupper((unsigned char)c));
+        return text;
+    }
+};
+
 int legend_width() {
-    int width = text_width("LEVELS OFF:", 2) + 4;
-    for (const char* label : kLabels) width += 14 + text_width(label, 2) + 6;
-    return width;
+    const LegendText text;
+    int width = 4 + text.width(kTitle) + kSpace;
+    for (const char* label : kLabels) width += kSwatch + kGap + text.width(label) + kSpace;
+    return width - kSpace + 4;
 }
 
-void draw_legend(Rgb8Image& image, int top) {
+Rgb8Image make_legend(int image_width) {
+    const LegendText text;
+    Rgb8Image band;
+    band.width = image_width;
+    band.height = kLegendHeight;
+    band.pixels.assign(std::size_t(band.width) * std::size_t(band.height) * 3, 0);
     const std::uint8_t white[3] = {255, 255, 255};
-    draw_text(image, 2, top + 4, "LEVELS OFF:", 2, white);
-    int x = 2 + text_width("LEVELS OFF:", 2) + 4;
+    text.draw(band, 4, 0, kTitle, white);
+    int x = 4 + text.width(kTitle) + kSpace;
+    const int swatch_top = (kLegendHeight - kSwatch) / 2;
     for (int k = 0; k < kDiffClasses; ++k) {
         std::uint8_t rgb[3] = {50, 50, 50};
         if (k > 0) std::copy_n(kPalette[k - 1], 3, rgb);
-        for (int y = top + 3; y < top + 15; ++y)
-            for (int dx = 0; dx < 12; ++dx) {
-                std::uint8_t* p = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x + dx)) * 3];
-                std::copy_n(rgb, 3, p);
-            }
-        draw_text(image, x + 14, top + 4, kLabels[k], 2, white);
-        x += 14 + text_width(kLabels[k], 2) + 6;
+        for (int y = swatch_top; y < swatch_top + kSwatch; ++y)
+            for (int dx = 0; dx < kSwatch && x + dx < band.width; ++dx)
+                std::copy_n(rgb, 3, &band.pixels[(std::size_t(y) * std::size_t(band.width) + std::size_t(x + dx)) * 3]);
+        text.draw(band, x + kSwatch + kGap, 0, kLabels[k], white);
+        x += kSwatch + kGap + text.width(kLabels[k]) + kSpace;
     }
+    return band;
+}
+
+// The legend band of an image `width` wide, drawn once a width: grading makes
+// a difference image a student, and rasterizing the text each time would
+// cost more than the picture.
+const Rgb8Image& legend_band(int width) {
+    static std::mutex mutex;
+    static std::map<int, std::unique_ptr<Rgb8Image>> bands;
+    const std::lock_guard<std::mutex> lock(mutex);
+    std::unique_ptr<Rgb8Image>& band = bands[width];
+    if (!band) band = std::make_unique<Rgb8Image>(make_legend(width));
+    return *band;
 }
 
 }  // namespace
@@ -114,7 +160,8 @@ Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     for (int y = 0; y < a.height; ++y)
         difference_row(a.levels.data() + std::size_t(y) * in_row, b.levels.data() + std::size_t(y) * in_row,
                        image.pixels.data() + std::size_t(y) * out_row, a.width, dim);
-    draw_legend(image, a.height);
+    const Rgb8Image& band = legend_band(image.width);
+    std::copy(band.pixels.begin(), band.pixels.end(), image.pixels.begin() + std::ptrdiff_t(a.height) * std::ptrdiff_t(out_row));
     return image;
 }
 

@@ -1,7 +1,8 @@
 // The false-colour difference image of `m3055 compare --diff` and of grading:
 // each pixel coloured by how many display levels it is off (the largest of its
 // three channels), over a dimmed grey copy of image A so the eye finds where
-// the differences are; a legend band under the picture names the colours.
+// the differences are; a legend band under the picture names the colours
+// (in DejaVu Sans through stb_truetype: legend_font.h).
 #pragma once
 
 #include "grading/level_compare.h"
@@ -20,6 +21,6 @@ void diff_colour(int off, std::uint8_t rgb[3]);
 Rgb8Image difference_image(const LevelImage& a, const LevelImage& b);
 
 // Height in pixels of the legend band under the picture.
-inline constexpr int kLegendHeight = 18;
+inline constexpr int kLegendHeight = 36;
 
 }  // namespace m3055::grading

@@ -3,6 +3,9 @@
 // uploaded alone; pixelated scaling keeps the display's dots visible.
 #include "grading/grade_outputs.h"
 
+#include "grading/diff_image.h"
+#include "grading/score_histogram.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,17 +44,28 @@ table{border-collapse:collapse;width:100%}
 th,td{border:1px solid #999;padding:4px 6px;vertical-align:top;text-align:left}
 th{background:#eee;cursor:pointer}
 td.num{text-align:right;white-space:nowrap}
-td.name{overflow-wrap:anywhere;word-break:break-word;max-width:14em;min-width:8em}
+td.name{overflow-wrap:anywhere;word-break:break-word;max-width:12em;min-width:6em}
 td.check{white-space:nowrap;text-align:center}td.check.ok{color:#060}td.check.no{color:#a00;background:#fdecec}
 #summary table{width:auto}#summary td,#summary th{cursor:auto}
 #controls{margin:0.8em 0}#controls input{width:18em}
 tr.hidden{display:none}
-#grades img{width:128px}
-#grades th,td.check{font-size:85%}#grades th{overflow-wrap:anywhere}#grades th:first-child{min-width:8em}
+#grades img{width:112px}#grades{font-size:92%}#grades td,#grades th{padding:3px 4px}
+.swatch{display:inline-block;width:0.8em;height:0.8em;border:1px solid #666;vertical-align:middle;margin:0 1px 0 4px}
+#grades th,td.check{font-size:85%}#grades th{overflow-wrap:normal;word-break:normal}#grades th:first-child{min-width:6em}
+#grades td.reasons{min-width:12em}li.note{max-height:3.8em;overflow-y:auto}
 img{width:256px;image-rendering:pixelated;display:block}
 .pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
-@media print{th{cursor:auto}tr{break-inside:avoid}img{width:200px}body{margin:0}}
+#top{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}#top figcaption{font-size:90%;color:#444}#top figure{margin:0}
+#histogram svg{display:block;max-width:100%;height:auto}
+#grades img,.shots img{cursor:zoom-in}
+#viewer{position:fixed;inset:0;background:rgba(20,20,20,0.92);color:#fff;display:flex;flex-direction:column;align-items:center;justify-content:center;z-index:10}
+#viewer[hidden]{display:none}
+#viewer img{width:auto;image-rendering:pixelated;cursor:zoom-out;box-shadow:0 0 0 1px #888}
+#viewer .bar{margin:0.6em;display:flex;gap:0.5em;align-items:center;flex-wrap:wrap;justify-content:center}
+#viewer button{font-size:100%;padding:0.3em 0.8em;cursor:pointer}#viewer button[aria-pressed=true]{background:#ffd54a;font-weight:bold}
+#viewer-title{font-weight:bold;overflow-wrap:anywhere;max-width:90vw}
+@media print{#viewer{display:none}th{cursor:auto}tr{break-inside:avoid}img{width:200px}body{margin:0}}
 </style>
 )";
 
@@ -75,9 +89,55 @@ rows.forEach(function(r){body.appendChild(r);});});});
 </script>
 )";
 
-std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& alt) {
+// The magnifier of both pages: a click on a render (or on the reference or a
+// difference) shows it at the largest whole magnification that fits the
+// window, nearest-neighbour (image-rendering: pixelated: every dot of the
+// M3055's 512 x 320 display a square), and the buttons or keys 1 2 3 (r f d,
+// arrows, space) flip between that student's render, the reference and the
+// difference in place; Esc or a click on the picture closes it. The images
+// are the page's own (data: URIs), so the page stays one file.
+constexpr const char* kViewer = R"(<div id="viewer" hidden role="dialog" aria-label="magnified view">
+<div id="viewer-title"></div>
+<div class="bar"><button type="button" data-kind="render">1 / r: render</button><button type="button" data-kind="reference">2 / f: reference</button><button type="button" data-kind="diff">3 / d: difference</button><span id="viewer-scale"></span><button type="button" id="viewer-close">Esc: close</button></div>
+<img id="viewer-img" alt="">
+</div>
+<script>
+(function(){
+var v=document.getElementById('viewer'),img=document.getElementById('viewer-img'),shots={},kind='render',order=['render','reference','diff'];
+var names={render:'render',reference:'the reference',diff:'levels off the reference'},title='';
+function ref(){var r=document.getElementById('reference-image');return r?r.src:'';}
+function fit(){var w=img.naturalWidth,h=img.naturalHeight;if(!w||!h)return;
+var used=document.getElementById('viewer-title').offsetHeight+v.querySelector('.bar').offsetHeight+32;
+var k=Math.max(1,Math.floor(Math.min((window.innerWidth-32)/w,(window.innerHeight-used)/h)));
+img.style.width=(w*k)+'px';img.style.height=(h*k)+'px';document.getElementById('viewer-scale').textContent='\u00d7'+k;}
+function show(k){if(!shots[k])return;kind=k;img.onload=fit;img.src=shots[k];img.alt=title+': '+names[k];
+document.getElementById('viewer-title').textContent=title+' \u2014 '+names[k];
+[].forEach.call(v.querySelectorAll('button[data-kind]'),function(b){b.setAttribute('aria-pressed',b.dataset.kind===k);b.disabled=!shots[b.dataset.kind];});
+if(img.complete)fit();}
+function open(row,k){shots={reference:ref()};title=row?row.dataset.student:'';
+if(row)[].forEach.call(row.querySelectorAll('img[data-view]'),function(i){shots[i.dataset.view]=i.src;});
+v.hidden=false;show(shots[k]?k:'reference');}
+function close(){v.hidden=true;img.removeAttribute('src');}
+window.m3055view=open;
+document.addEventListener('click',function(e){var t=e.target;
+if(t.matches&&t.matches('img[data-view]')&&!v.contains(t)){var row=t.closest('[data-student]');open(row,t.dataset.view);}
+else if(t===img||t.id==='viewer-close'||t===v)close();
+else if(t.dataset&&t.dataset.kind&&v.contains(t))show(t.dataset.kind);});
+document.addEventListener('keydown',function(e){if(v.hidden)return;var k=e.key,i=order.indexOf(kind);
+var to={'1':'render','r':'render','2':'reference','f':'reference','3':'diff','d':'diff'}[k];
+if(k==='Escape')close();else if(to)show(to);
+else if(k==='ArrowRight'||k===' '){do{i=(i+1)%3;}while(!shots[order[i]]);show(order[i]);}
+else if(k==='ArrowLeft'){do{i=(i+2)%3;}while(!shots[order[i]]);show(order[i]);}else return;e.preventDefault();});
+window.addEventListener('resize',function(){if(!v.hidden)fit();});
+})();
+</script>
+)";
+
+// `view`: the image's kind for the magnifier (render, reference, diff).
+std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& alt, const char* view) {
     if (png.empty()) return "<td>&mdash;</td>";
-    return "<td><img alt=\"" + escape_html(alt) + "\" src=\"data:image/png;base64," + base64(png) + "\"></td>";
+    return "<td><img alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" title=\"click to magnify\" "
+           "src=\"data:image/png;base64," + base64(png) + "\"></td>";
 }
 
 std::string student_row(const json& s, const std::vector<std::string>& labels,
@@ -87,7 +147,7 @@ std::string student_row(const json& s, const std::vector<std::string>& labels,
     const double score = s["score"].get<double>();
     const bool missing = s.value("missing", false), refused = !missing && !s["broken"].get<std::string>().empty();
     const std::string status = missing ? "missing" : refused ? "refused" : passed ? "pass" : "fail";
-    std::string row = "<tr data-status=\"" + status + "\"><td class=\"name\" data-sort=\"" + escape_html(name) + "\">" +
+    std::string row = "<tr data-status=\"" + status + "\" data-student=\"" + escape_html(name) + "\"><td class=\"name\" data-sort=\"" + escape_html(name) + "\">" +
                       escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
@@ -113,8 +173,8 @@ std::string student_row(const json& s, const std::vector<std::string>& labels,
         render = image_bytes(s["images"]["render"].get<std::string>());
         diff = image_bytes(s["images"]["diff"].get<std::string>());
     }
-    row += image_cell(render, name + ": render") + image_cell(diff, name + ": difference");
-    row += "<td data-sort=\"\"><ul>";
+    row += image_cell(render, name + ": render", "render") + image_cell(diff, name + ": difference", "diff");
+    row += "<td class=\"reasons\" data-sort=\"\"><ul>";
     for (const json& reason : s["reasons"]) row += "<li>" + escape_html(reason.get<std::string>()) + "</li>";
     if (s["reasons"].empty()) row += "<li>all checks passed</li>";
     if (s.contains("notes"))
@@ -141,7 +201,7 @@ std::string percent_text(std::size_t part, std::size_t whole) {
 }
 
 // The class at a glance: counts, mean, median, pass rate, each check's pass rate.
-std::string class_summary(const GradeReport& report, const std::vector<std::string>& labels) {
+std::string class_summary(const GradeReport& report, const std::vector<std::string>& labels, const std::string& reference_figure) {
     std::size_t graded = 0, refused = 0, missing = 0, passed = 0;
     std::vector<double> scores;
     std::map<std::string, std::size_t> check_passed, check_total;
@@ -171,7 +231,9 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
         median = n % 2 ? scores[n / 2] : (scores[n / 2 - 1] + scores[n / 2]) / 2.0;
         median = std::round(median * 100.0) / 100.0;
     }
-    std::string out = "<section id=\"summary\"><h2>Class summary</h2><table><tbody>\n";
+    const json& a = report.assignment;
+    const HistogramSvg histogram = score_histogram_svg(scores, a["max"].get<double>(), a["pass"].get<double>());
+    std::string out = "<section id=\"summary\"><h2>Class summary</h2><div id=\"top\"><div><table><tbody>\n";
     const auto row = [&](const std::string& id, const std::string& name, const std::string& value) {
         out += "<tr><th>" + name + "</th><td class=\"num\" id=\"" + id + "\">" + value + "</td></tr>\n";
     };
@@ -182,20 +244,47 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
     row("median", "median score", scores.empty() ? "&mdash;" : score_text(median));
     row("pass-rate", "passed", std::to_string(passed) + " of " + std::to_string(scores.size()) + " (" +
                                    percent_text(passed, scores.size()) + ")");
-    out += "</tbody></table>\n<table id=\"check-rates\"><thead><tr><th>check</th><th>passed (of the graded)</th></tr>"
+    out += "</tbody></table>\n</div>";
+    // The scores' distribution (gnuplot's SVG inline), or one line saying why not.
+    out += histogram.svg.empty() ? "<p id=\"histogram\" class=\"note\">" + escape_html(histogram.problem) + "</p>\n"
+                                 : "<figure id=\"histogram\">" + histogram.svg + "<figcaption>Scores of the " +
+                                       std::to_string(scores.size()) + (scores.size() == 1 ? " submission" : " submissions") +
+                                       "</figcaption></figure>\n";
+    out += reference_figure + "<table id=\"check-rates\"><thead><tr><th>check</th><th>passed (of the graded)</th></tr>"
            "</thead><tbody>\n";
     for (const std::string& label : labels)
         out += "<tr><td>" + escape_html(label) + "</td><td class=\"num\">" + std::to_string(check_passed[label]) +
                " of " + std::to_string(check_total[label]) + " (" + percent_text(check_passed[label], check_total[label]) +
                ")</td></tr>\n";
-    return out + "</tbody></table></section>\n";
+    return out + "</tbody></table></div></section>\n";
 }
+
+// The difference image's legend again in the column's header, for the
+// thumbnails (the image's own legend is readable at the feedback page's and
+// the magnifier's sizes, not at a thumbnail's).
+std::string html_legend() {
+    static const char* const labels[kDiffClasses] = {"0", "1", "2", "3", "4-7", "8+"};
+    static const int levels_off[kDiffClasses] = {0, 1, 2, 3, 4, 8};  // one of each class
+    std::string out;
+    for (int k = 0; k < kDiffClasses; ++k) {
+        std::uint8_t rgb[3];
+        diff_colour(levels_off[k], rgb);
+        char colour[8];
+        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+        out += std::string("<span class=\"swatch\" style=\"background:") + colour + "\"></span>" + labels[k];
+    }
+    return out;
+}
+
+// A list open on the page when short; a long one (a class that hands in one
+// template) folded, so the grades stay near the top.
+const char* open_if_short(const json& list) { return list.size() <= 10 ? " open" : ""; }
 
 // What the class folder held that was not graded, and byte-identical submissions.
 std::string folder_sections(const json& folder) {
     std::string out;
     if (!folder["ignored"].empty()) {
-        out += "<details id=\"ignored\" open><summary>Not graded: " + std::to_string(folder["ignored"].size()) +
+        out += std::string("<details id=\"ignored\"") + open_if_short(folder["ignored"]) + "><summary>Not graded: " + std::to_string(folder["ignored"].size()) +
                (folder["ignored"].size() == 1 ? " entry" : " entries") + " of the submissions folder</summary><ul>\n";
         for (const json& entry : folder["ignored"])
             out += "<li><code>" + escape_html(entry["name"].get<std::string>()) + "</code>: " +
@@ -203,7 +292,9 @@ std::string folder_sections(const json& folder) {
         out += "</ul></details>\n";
     }
     if (!folder["identical"].empty()) {
-        out += "<details id=\"identical\" open><summary>Byte-identical submissions (information, no penalty)</summary><ul>\n";
+        out += std::string("<details id=\"identical\"") + open_if_short(folder["identical"]) + "><summary>" +
+               std::to_string(folder["identical"].size()) + (folder["identical"].size() == 1 ? " group" : " groups") +
+               " of byte-identical submissions (information, no penalty)</summary><ul>\n";
         for (const json& group : folder["identical"]) {
             std::string names;
             for (const json& name : group) names += (names.empty() ? "" : ", ") + escape_html(name.get<std::string>());
@@ -232,14 +323,16 @@ std::string report_html(const GradeReport& report,
             (submitted == 1 ? " submission, " : " submissions, ") + std::to_string(passed) + " passed (at least " +
             score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) + " points)" +
             (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
-            ". Click a column's header to sort.</p>\n";
+            ". Click a column's header to sort, a picture to magnify it.</p>\n";
     const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
-    if (!reference.empty())
-        page += "<figure><img alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
-                "\"><figcaption>The reference</figcaption></figure>\n";
-    page += folder_sections(report.folder);
+    const std::string reference_figure =
+        reference.empty() ? std::string()
+                          : "<figure><img id=\"reference-image\" data-view=\"reference\" title=\"click to magnify\" "
+                            "alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
+                                "\"><figcaption>The reference</figcaption></figure>\n";
     const std::vector<std::string> labels = check_labels(report);
-    page += class_summary(report, labels);
+    page += class_summary(report, labels, reference_figure);
+    page += folder_sections(report.folder);
     page += "<div id=\"controls\"><label>Show <select id=\"filter\"><option value=\"all\">all</option>"
             "<option value=\"failed\">failed</option><option value=\"refused\">refused</option>"
             "<option value=\"missing\">missing</option></select></label> "
@@ -249,10 +342,11 @@ std::string report_html(const GradeReport& report,
             "<th data-col=\"2\">Result</th>";
     for (std::size_t i = 0; i < labels.size(); ++i)
         page += "<th data-col=\"" + std::to_string(3 + i) + "\">" + escape_html(labels[i]) + "</th>";
-    page += "<th>Render</th><th>Levels off the reference</th><th>Reasons</th></tr></thead><tbody>\n";
+    page += "<th>Render</th><th>Levels off the reference<br>" + html_legend() + "</th><th>Reasons</th></tr></thead><tbody>\n";
     for (const json& s : report.students) page += student_row(s, labels, image_bytes);
     page += "</tbody></table>\n";
     page += kScript;
+    page += kViewer;
     return page + "</body></html>\n";
 }
 
@@ -274,15 +368,18 @@ std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
             score_text(s["score"].get<double>()) + " of " + score_text(s["max"].get<double>()) + " points: " +
             (missing ? "no submission" : s["passed"].get<bool>() ? "passed" : "not passed") + " (" +
             score_text(a["pass"].get<double>()) + " to pass)</p>\n";
-    page += "<table><thead><tr><th>Your render</th><th>The reference</th><th>Levels off the reference</th></tr></thead>"
+    page += "<p>Click a picture to magnify it and flip between your render, the reference and the difference.</p>\n";
+    page += "<table class=\"shots\" data-student=\"" + escape_html(name) +
+            "\"><thead><tr><th>Your render</th><th>The reference</th><th>Levels off the reference</th></tr></thead>"
             "<tbody><tr>";
     std::vector<std::uint8_t> render, diff;
     if (s["images"].is_object()) {
         render = image_bytes(s["images"]["render"].get<std::string>());
         diff = image_bytes(s["images"]["diff"].get<std::string>());
     }
-    page += image_cell(render, "your render") + image_cell(image_bytes(a["reference_image"].get<std::string>()), "the reference") +
-            image_cell(diff, "levels off the reference");
+    std::string reference = image_cell(image_bytes(a["reference_image"].get<std::string>()), "the reference", "reference");
+    if (reference.rfind("<td><img ", 0) == 0) reference.insert(9, "id=\"reference-image\" ");
+    page += image_cell(render, "your render", "render") + reference + image_cell(diff, "levels off the reference", "diff");
     page += "</tr></tbody></table>\n<h3>Checks</h3>\n<ul id=\"checks\">\n";
     if (!s["broken"].get<std::string>().empty())
         page += "<li class=\"fail\">" + escape_html(s["broken"].get<std::string>()) + "</li>\n";
@@ -293,7 +390,7 @@ std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
                 escape_html(c["reason"].get<std::string>()) + "</li>\n";
     if (!s["screenshot"].get<std::string>().empty())
         page += "<li>" + escape_html(s["screenshot"].get<std::string>()) + "</li>\n";
-    return page + "</ul>\n</body></html>\n";
+    return page + "</ul>\n" + kViewer + "</body></html>\n";
 }
 
 }  // namespace m3055::grading

@@ -1,5 +1,6 @@
 // A 3 x 5 pixel font for the few characters the difference image's legend
-// writes ("LEVELS OFF 0 1 2 3 4-7 8+"): no font file or library for a legend.
+// writes ("LEVELS OFF 0 1 2 3 4-7 8+"): the fallback when the legend's real
+// font (legend_font.h) is missing.
 #pragma once
 
 #include "image/image.h"

@@ -9,6 +9,9 @@
 #include "test_support.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
 #include <nlohmann/json.hpp>
 
 using namespace m3055;
@@ -240,6 +243,37 @@ TEST(CompareCommand, JsonIsOneObjectAndDiffIsWritten) {
     EXPECT_EQ(image.height, 8 + kLegendHeight);
     // --diff may not overwrite an input.
     EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--diff", f.png_a}).exit_code, 2);
+}
+
+// The legend's font (grading/legend_font.h) missing: one line naming the
+// file and the package, and the difference image is still written (in the
+// 3 x 5 letters), the same size.
+TEST(CompareCommand, MissingLegendFontIsOneLineAndTheDiffIsStillWritten) {
+    Files f;
+    const std::string diff = f.dir.file("diff.png"), font = f.dir.file("no-such-font.ttf");
+    setenv("M3055_LEGEND_FONT", font.c_str(), 1);
+    const auto run = test::run_m3055({"compare", f.png_a, f.png_b, "--diff", diff});
+    unsetenv("M3055_LEGEND_FONT");
+    EXPECT_EQ(run.exit_code, 1) << run.err;  // the images differ: as with the font
+    EXPECT_NE(run.err.find("m3055: warning: " + font + ": cannot read the file (the difference legend's font; Debian: "
+                           "apt-get install fonts-dejavu-core, or set M3055_LEGEND_FONT)"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(read_png(diff).height, 8 + kLegendHeight);
+}
+
+// With the font, the legend's text is anti-aliased: grey levels between the
+// band's black and the text's white, which the 3 x 5 letters never make.
+TEST(DiffImage, LegendTextIsDrawnWithARealFont) {
+    const Rgb8Image image = difference_image(flat(512, 4, 0), flat(512, 4, 0));
+    std::set<int> greys;
+    for (int y = 4; y < image.height; ++y)
+        for (int x = 0; x < 120; ++x) {  // "levels off:"
+            const std::uint8_t* p = &image.pixels[(std::size_t(y) * 512 + std::size_t(x)) * 3];
+            if (p[0] == p[1] && p[1] == p[2] && p[0] > 0 && p[0] < 255) greys.insert(p[0]);
+        }
+    EXPECT_GT(greys.size(), 20u) << "the legend's font is missing? (fonts-dejavu-core)";
 }
 
 TEST(CompareCommand, SceneAgainstItsOwnPngAndPfm) {

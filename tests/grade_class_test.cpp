@@ -743,6 +743,45 @@ std::size_t count_of(const std::string& text, const std::string& what) {
     return n;
 }
 
+// Drives a copy of `page` in Chromium at 1280 x 900: `script` runs after the
+// page loaded and writes what it saw into <pre id="probe">; returns that text.
+std::string probe_page(TempDir& dir, const std::string& page, const std::string& script) {
+    const std::string copy = dir.file("probe.html");
+    write_text(copy, read_text(page) + "<pre id=\"probe\"></pre><script>window.addEventListener('load',function(){" +
+                         "var out=[];function note(x){out.push(x);}" + script +
+                         "document.getElementById('probe').textContent=out.join(' ');});</script>\n");
+    const std::string dom = dir.file("probe-dom.html");
+    const std::string command = "chromium --headless=new --no-sandbox --disable-gpu --user-data-dir=" + dir.file("profile3") +
+                                " --window-size=1280,900 --virtual-time-budget=5000 --dump-dom 'file://" + copy + "' > " +
+                                dom + " 2>/dev/null";
+    if (std::system(command.c_str()) != 0) return "";
+    const std::string text = read_text(dom);
+    const std::size_t begin = text.find("<pre id=\"probe\">");
+    if (begin == std::string::npos) return "";
+    const std::size_t from = begin + std::string("<pre id=\"probe\">").size();
+    return text.substr(from, text.find("</pre>", from) - from);
+}
+
+// The magnifier: a click on a render opens it magnified by whole pixels
+// (pixelated), the keys flip between the student's render, the reference and
+// the difference, Esc closes it; the page is no wider than the window.
+const char* kViewerProbe = R"(
+var v=document.getElementById('viewer'),img=document.getElementById('viewer-img');
+var row=document.querySelector('[data-student="bob"]'),ref=document.getElementById('reference-image');
+function src(kind){return row.querySelector('img[data-view="'+kind+'"]').src;}
+function key(k){document.dispatchEvent(new KeyboardEvent('keydown',{key:k,bubbles:true}));}
+function seen(){return v.hidden?'hidden':img.src===src('render')?'render':img.src===ref.src?'reference':img.src===src('diff')?'diff':'other';}
+note('closed:'+seen());
+row.querySelector('img[data-view="render"]').click();
+note('click:'+seen()+':'+getComputedStyle(img).imageRendering+':'+document.getElementById('viewer-scale').textContent);
+note('title:'+document.getElementById('viewer-title').textContent.split(' ')[0]);
+key('f');note('f:'+seen());key('d');note('d:'+seen());key('ArrowRight');note('right:'+seen());
+key('3');note('3:'+seen());
+v.querySelector('button[data-kind="reference"]').click();note('button:'+seen());
+key('Escape');note('esc:'+seen());
+note('overflow:'+(document.documentElement.scrollWidth>document.documentElement.clientWidth));
+)";
+
 TEST(GradeReport, SummaryCheckColumnsFilterAndFeedbackPagesInHeadlessChromium) {
     if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed";
     TempDir dir;
@@ -773,13 +812,30 @@ TEST(GradeReport, SummaryCheckColumnsFilterAndFeedbackPagesInHeadlessChromium) {
     EXPECT_EQ(count_of(grades, "data-status=\"refused\""), 1u);
     // The script ran: the filter shows every row at first.
     EXPECT_NE(dom.find("id=\"shown\">5 rows<"), std::string::npos);
+    // The histogram drawn by gnuplot, inline; the magnifier's parts.
+    const std::string summary = dom.substr(dom.find("<section id=\"summary\""));
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
+        EXPECT_EQ(summary.find("<figure id=\"histogram\"><svg"), summary.find("id=\"histogram\"") - 8);
+    EXPECT_LT(summary.find("id=\"histogram\""), summary.find("<table id=\"grades\""));
+    EXPECT_EQ(count_of(dom, "data-view=\"render\""), 3u);  // alice, bob and L...L: not the refused or missing
+    EXPECT_EQ(count_of(dom, "data-view=\"diff\""), 3u);
+    EXPECT_EQ(count_of(dom, "id=\"reference-image\""), 1u);
+    EXPECT_NE(dom.find("<div id=\"viewer\" hidden=\"\""), std::string::npos);
+    EXPECT_EQ(probe_page(dir, dir.file("out/report.html"), kViewerProbe),
+              "closed:hidden click:render:pixelated:\u00d72 title:bob f:reference d:diff right:render 3:diff "
+              "button:reference esc:hidden overflow:false");
     // A feedback page: that student's render, the reference, the difference, every check; no one else.
     const std::string page = dom_of(dir, dir.file("out/feedback/bob.html"));
     EXPECT_NE(page.find("<h2 id=\"student\">bob</h2>"), std::string::npos);
-    EXPECT_EQ(count_of(page, "<img"), 3u);
+    EXPECT_EQ(count_of(page, "<img"), 4u);  // the three pictures and the magnifier's
+    EXPECT_EQ(count_of(page, "data-view="), 3u);
     EXPECT_EQ(count_of(page.substr(page.find("<ul id=\"checks\"")), "<li"), 7u);
     EXPECT_EQ(page.find("alice"), std::string::npos);
     EXPECT_NE(read_text(dir.file("out/feedback/zed.html")).find("no submission"), std::string::npos);
+    // The same magnifier on the feedback page.
+    EXPECT_EQ(probe_page(dir, dir.file("out/feedback/bob.html"), kViewerProbe),
+              "closed:hidden click:render:pixelated:\u00d72 title:bob f:reference d:diff right:render 3:diff "
+              "button:reference esc:hidden overflow:false");
     // Screenshots to look at (kept when M3055_KEEP_SCREENSHOTS names a folder).
     if (const char* keep = std::getenv("M3055_KEEP_SCREENSHOTS")) {
         std::system(("chromium --headless=new --no-sandbox --disable-gpu --user-data-dir=" + dir.file("profile2") +

@@ -2,6 +2,7 @@
 #include "plot.h"
 
 #include "image/image.h"
+#include "io/find_program.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -17,15 +18,7 @@ namespace m3055::bench {
 
 namespace fs = std::filesystem;
 
-std::string find_gnuplot() {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "/usr/bin:/bin");
-    for (std::string dir; std::getline(dirs, dir, ':');) {
-        const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/gnuplot";
-        if (access(candidate.c_str(), X_OK) == 0) return candidate;
-    }
-    return "";
-}
+std::string find_gnuplot() { return find_program("gnuplot"); }
 
 int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script,
                 const std::string& out, const std::string& log) {
