@@ -17,6 +17,18 @@ PixelProbe Readouts::probe(const ExplorerState& state, Renderer& renderer, int x
     return probe_pixel(state.scene, picker(state.scene), *raw_, display(renderer), x, y, state.plotted_light);
 }
 
+const NonFiniteView& Readouts::nonfinite(const ExplorerState& state, Renderer& renderer) {
+    if (!nonfinite_) {
+        if (may_render_nonfinite(state.scene)) {
+            if (!raw_) raw_ = renderer.read_raw();
+            nonfinite_ = nonfinite_view(*raw_);
+        } else {
+            nonfinite_ = NonFiniteView{};
+        }
+    }
+    return *nonfinite_;
+}
+
 const RowProfile* Readouts::profile(const ExplorerState& state, Renderer& renderer) {
     const int row = state.profile_row;
     if (row < 0 || row >= state.scene.display.height) return nullptr;  // none yet, or the display shrank

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "analysis/pixel_probe.h"
+#include "explore/nonfinite_view.h"
 #include "explore/state.h"
 #include "frame/renderer.h"
 
@@ -25,9 +26,14 @@ public:
         ids_.clear();
         histogram_fresh_ = false;
         profile_.reset();
+        nonfinite_.reset();
     }
 
+    // The probe; a pixel whose value is NaN or infinite says so (PixelProbe::text).
     PixelProbe probe(const ExplorerState& state, Renderer& renderer, int x, int y);
+    // A's NaN and infinite pixels: read back once a render, and only for a
+    // scene that can hold them (a .brdf material); none for the others.
+    const NonFiniteView& nonfinite(const ExplorerState& state, Renderer& renderer);
     // A's display as read back (PNG values, rows top to bottom): what the A/B difference uses.
     const Rgb8Image& display_image(Renderer& renderer) { return display(renderer); }
     // The scanline profile of state.profile_row, from the same readback as the
@@ -52,6 +58,7 @@ private:
     LevelHistogram histogram_;
     bool histogram_fresh_ = false;
     std::optional<RowProfile> profile_;
+    std::optional<NonFiniteView> nonfinite_;
 };
 
 }  // namespace m3055::explore

@@ -92,6 +92,13 @@ std::string histogram_gnuplot_commands(const std::vector<int>& counts, double ma
         colours += sep + std::to_string(colour);
     }
     c += n + "]; " + labels + "]; " + colours + "]; ";
+    // Whole students on the y axis: a step of 1, 2, 5, 10, 20, 50 ... giving at most 6 ticks.
+    const int most = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+    long step = 1;
+    for (long decade = 1; step * 6 < most; decade *= 10)
+        for (long m : {1L, 2L, 5L})
+            if ((step = m * decade) * 6 >= most) break;
+    c += "set ytics " + std::to_string(step) + "; ";
     const double pass_x = pass / width - 0.5;  // bar i is centred on x = i
     c += "set style fill solid 0.85 border rgb \"#444444\"; set boxwidth 0.85; set yrange [0:*]; "
          "set offsets 0,0,graph 0.15,0; set xrange [-0.6:" + number(kHistogramBins - 0.4) + "]; "

@@ -32,6 +32,10 @@ TEST(ScoreHistogram, CommandsColourBarsByThePassMarkAndDrawIt) {
     EXPECT_NE(c.find("set arrow from 5, graph 0 to 5, graph 1"), std::string::npos) << c;  // 55 / 10 - 0.5
     EXPECT_NE(c.find("pass: 55"), std::string::npos) << c;
     EXPECT_EQ(c.find('\n'), std::string::npos) << "one line, given to gnuplot -e";
+    // Whole students on the y axis, at most 6 ticks.
+    EXPECT_NE(c.find("set ytics 2;"), std::string::npos) << c;  // 7 students: 0 2 4 6 8
+    EXPECT_NE(histogram_gnuplot_commands({350, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 100, 60).find("set ytics 100;"), std::string::npos);
+    EXPECT_NE(histogram_gnuplot_commands({1, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 100, 60).find("set ytics 1;"), std::string::npos);
 }
 
 TEST(ScoreHistogram, GnuplotDrawsAnInlineSvgOrTheReportSaysWhyNot) {

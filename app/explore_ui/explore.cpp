@@ -12,6 +12,7 @@
 #include "explore/keys.h"
 #include "explore/operations.h"
 #include "explore/practice.h"
+#include "explore/nonfinite_view.h"
 #include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/start.h"
@@ -190,6 +191,8 @@ public:
         // A finished edit (no widget held, no drag on the display) is one undo step.
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
         render_if_changed();
+        // A .brdf material's NaN or infinite pixels: one line over the display (read back once a render).
+        nonfinite_line_ = renderer_a_ ? nonfinite_warning(readouts_.nonfinite(state_, *renderer_a_).counts) : "";
         answer_probes();
         update_compare();  // the difference pane shows with the panels hidden too
         answer_grade_print();
@@ -375,9 +378,25 @@ private:
                                    state_.scene.display.height, shown_a_);
         const PixelProbe probe = readouts_.probe(state_, *renderer_a_, pixel->first, pixel->second);
         ImGui::BeginTooltip();
-        ImGui::TextUnformatted(probe.text().c_str());
+        const std::string text = probe.text();
+        const std::size_t mark = text.find("\nNOT FINITE");
+        ImGui::TextUnformatted(text.substr(0, mark).c_str());
+        // The probe marks a NaN or infinite pixel in the warning's colour.
+        if (mark != std::string::npos) ImGui::TextColored(ImVec4(1.0f, 0.67f, 0.16f, 1.0f), "%s", text.c_str() + mark + 1);
         ImGui::TextDisabled("light %d; click selects the object", state_.plotted_light);
         ImGui::EndTooltip();
+    }
+
+    // The non-finite warning, on a dark band at the top of A so it reads over any picture.
+    void draw_nonfinite_warning() {
+        if (nonfinite_line_.empty()) return;
+        ImDrawList* draw = ImGui::GetForegroundDrawList();
+        const ImVec2 at(shown_a_.x + 4.0f, shown_a_.y + 4.0f);
+        const ImVec2 size = ImGui::CalcTextSize(nonfinite_line_.c_str(), nullptr, false, shown_a_.w - 16.0f);
+        draw->AddRectFilled(ImVec2(at.x - 2.0f, at.y - 2.0f), ImVec2(at.x + size.x + 4.0f, at.y + size.y + 2.0f),
+                            IM_COL32(0, 0, 0, 210));
+        draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(255, 170, 40, 255), nonfinite_line_.c_str(),
+                      nullptr, shown_a_.w - 16.0f);
     }
 
     // The scene (and B in compare) is rendered only when something changed.
@@ -412,6 +431,7 @@ private:
             info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
                                        &shown_a_);
             hover_readouts();
+            draw_nonfinite_warning();
         }
         if (!state_.show_panels && !state_.error.empty())
             ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), state_.error.c_str());
@@ -468,6 +488,7 @@ private:
     std::unique_ptr<Practice> practice_;  // --assignment
     std::unique_ptr<PaneTexture> reference_;  // its reference, shown beside A
     Rect shown_a_;           // where A was drawn last (ImGui units)
+    std::string nonfinite_line_;  // "" or the warning over A (explore/nonfinite_view.h)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release
     bool pointer_moved_ = false;     // the pointer has moved in the window at least once
     std::string pending_capture_;  // write the window here after the next frame is drawn

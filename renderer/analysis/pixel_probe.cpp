@@ -90,7 +90,12 @@ std::string PixelProbe::text() const {
     if (object < 0) n += std::snprintf(buffer + n, sizeof buffer - n, "background");
     else n += std::snprintf(buffer + n, sizeof buffer - n, "object %d (%s)", object, model.c_str());
     if (lit) std::snprintf(buffer + n, sizeof buffer - n, "\nN.L %.4f  R.V %.4f", NoL, RoV);
-    return buffer;
+    std::string out = buffer;
+    // A NaN or infinite value (a .brdf material can make one) is quantized
+    // to some level: the level and PNG lines above would pass for a colour.
+    if (!finite()) out += "\nNOT FINITE: " + std::string(std::isnan(linear.r) || std::isnan(linear.g) || std::isnan(linear.b) ? "NaN" : "infinite") +
+                          " (the display's level here means nothing)";
+    return out;
 }
 
 LevelHistogram level_histogram(const Rgb8Image& display, int bits) {

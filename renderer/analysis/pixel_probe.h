@@ -14,6 +14,7 @@
 #include "scene/scene.h"
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,7 +48,9 @@ struct PixelProbe {
     std::string model;
     bool lit = false;          // a light was given and the pixel shows an object
     double NoL = 0.0, RoV = 0.0;  // for that light; R the mirror of L about N
-    std::string text() const;  // several lines, for the tooltip and --script's `probe`
+    // Every channel of `linear` a finite number (a .brdf material can make NaN or Inf).
+    bool finite() const { return std::isfinite(linear.r) && std::isfinite(linear.g) && std::isfinite(linear.b); }
+    std::string text() const;  // several lines, for the tooltip and --script's `probe`; "NOT FINITE: ..." last when not finite()
 };
 
 // `raw` rows bottom to top (Renderer::read_raw), `display` top to bottom
