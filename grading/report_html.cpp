@@ -292,9 +292,9 @@ std::string folder_sections(const json& folder) {
         out += "</ul></details>\n";
     }
     if (!folder["identical"].empty()) {
-        out += std::string("<details id=\"identical\"") + open_if_short(folder["identical"]) + "><summary>" +
+        out += std::string("<details id=\"identical\"") + open_if_short(folder["identical"]) + "><summary>Byte-identical submissions: " +
                std::to_string(folder["identical"].size()) + (folder["identical"].size() == 1 ? " group" : " groups") +
-               " of byte-identical submissions (information, no penalty)</summary><ul>\n";
+               " (information, no penalty)</summary><ul>\n";
         for (const json& group : folder["identical"]) {
             std::string names;
             for (const json& name : group) names += (names.empty() ? "" : ", ") + escape_html(name.get<std::string>());
