@@ -77,19 +77,25 @@ double Practice::settle_left(const PracticeStatus& status, double now) const {
     return std::max(0.0, changed_at_ + kSettleSeconds - now);
 }
 
-std::optional<grading::Grade> Practice::refusal(const Scene& scene) const {
-    // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
-    const int brdf_object = allow_brdf_ ? -1 : first_brdf_object(scene);
+std::optional<grading::Grade> Practice::refusal(const Scene& scene, const std::string& scene_file) const {
+    const int brdf_object = first_brdf_object(scene);
     if (brdf_object < 0) return std::nullopt;
-    return grading::broken_grade(assignment_, "", "objects[" + std::to_string(brdf_object) + "].material.file: " +
-                                                      scene_json::brdf_not_allowed_reason());
+    const std::string field = "objects[" + std::to_string(brdf_object) + "].material.file: ";
+    // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
+    if (!allow_brdf_) return grading::broken_grade(assignment_, "", field + scene_json::brdf_not_allowed_reason());
+    // With it, grade reads a .brdf only inside a folder submission NAME/ (its
+    // scene.json beside the file); a single NAME.json is refused.
+    if (std::filesystem::path(scene_file).filename() == "scene.json") return std::nullopt;
+    return grading::broken_grade(assignment_, "",
+                                 field + scene_json::brdf_without_folder_reason(scene_json::kBrdfNeedsAFolder));
 }
 
-void Practice::regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const {
+void Practice::regrade(PracticeStatus& status, const Scene& scene, const std::string& scene_file,
+                       Renderer& renderer) const {
     const auto start = std::chrono::steady_clock::now();
     grading::Grade grade;
     try {
-        if (std::optional<grading::Grade> refused = refusal(scene)) grade = std::move(*refused);
+        if (std::optional<grading::Grade> refused = refusal(scene, scene_file)) grade = std::move(*refused);
         else grade = timed_grade(assignment_, scene, renderer, reference_);
     } catch (const std::exception& e) {
         grade = grading::broken_grade(assignment_, "", text::one_line(e.what()));

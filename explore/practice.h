@@ -40,10 +40,13 @@ public:
     // grade_one of `scene` with `renderer` (its display is left showing
     // `scene`), under the assignment's time budget as `grade` has it; the
     // result and its time into `status`.
-    void regrade(PracticeStatus& status, const Scene& scene, Renderer& renderer) const;
-    // The grade of a scene `grade` refuses before rendering it (a .brdf
-    // material without allow_brdf: 0 with grade's reason); none otherwise.
-    std::optional<grading::Grade> refusal(const Scene& scene) const;
+    // `scene_file`: the file the scene was loaded from or saved to ("" for none).
+    void regrade(PracticeStatus& status, const Scene& scene, const std::string& scene_file, Renderer& renderer) const;
+    // The grade of a scene `grade` refuses before rendering it, 0 with
+    // grade's reason: a .brdf material without allow_brdf; with it, a .brdf
+    // material in a scene that is not a folder submission's NAME/scene.json
+    // (a single NAME.json, or no file yet), which grade refuses too. None otherwise.
+    std::optional<grading::Grade> refusal(const Scene& scene, const std::string& scene_file) const;
 
     // The reference as shown beside the student's display (the PNG, the
     // render, a PFM's display; rows top to bottom), and its label.

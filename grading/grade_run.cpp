@@ -158,9 +158,7 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
         {
             const InClassFolder in_class(class_dir);
             // Nothing outside the submission is read: its .brdf files are its own.
-            const scene_json::BrdfConfinement confined(
-                relative_to(s.folder, class_dir),
-                "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file");
+            const scene_json::BrdfConfinement confined(relative_to(s.folder, class_dir), scene_json::kBrdfNeedsAFolder);
             scene = load_scene_file(scene_path);
             if (!s.screenshot.empty()) try {
                     screenshot = read_level_image(relative_to(s.screenshot, class_dir), scene.display.bits);

@@ -122,7 +122,13 @@ HistogramSvg score_histogram_svg(const std::vector<double>& scores, double max, 
     const std::size_t begin = out.find("<svg"), end = out.rfind("</svg>");
     if (status != 0 || begin == std::string::npos || end == std::string::npos || end < begin)
         return {"", "No score histogram: " + gnuplot + " failed (exit status " + std::to_string(status) + ")."};
-    return {out.substr(begin, end + 6 - begin), ""};
+    std::string svg = out.substr(begin, end + 6 - begin);
+    // Inline SVG in HTML needs no namespace declarations, and the page holds
+    // no URL at all (nothing a reader could mistake for a network access).
+    for (const char* xmlns : {"xmlns=\"http://www.w3.org/2000/svg\"", "xmlns:xlink=\"http://www.w3.org/1999/xlink\""})
+        if (const std::size_t at = svg.find(xmlns); at != std::string::npos && at < svg.find('>'))
+            svg.erase(at, std::string(xmlns).size());
+    return {svg, ""};
 }
 
 }  // namespace m3055::grading

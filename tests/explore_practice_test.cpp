@@ -72,7 +72,7 @@ TEST(ExplorePractice, AnEditMakesTheGradeStaleAndItIsRecomputedOnlyOnceTheEditSe
 TEST(ExplorePractice, ABrdfMaterialScoresZeroWithGradesReasonUnlessAllowed) {
     const Scene scene = scene_with_brdf_on_object(1);
     const Practice strict(png_assignment(), nullptr, false);
-    const std::optional<grading::Grade> refused = strict.refusal(scene);
+    const std::optional<grading::Grade> refused = strict.refusal(scene, "/class/pat/scene.json");
     ASSERT_TRUE(refused);
     EXPECT_EQ(refused->score, 0);
     EXPECT_FALSE(refused->passed);
@@ -82,8 +82,28 @@ TEST(ExplorePractice, ABrdfMaterialScoresZeroWithGradesReasonUnlessAllowed) {
               std::string::npos)
         << reasons.back();
     const Practice allowing(png_assignment(), nullptr, true);
-    EXPECT_FALSE(allowing.refusal(scene)) << "explore --allow-brdf grades it as grade --allow-brdf";
-    EXPECT_FALSE(strict.refusal(default_scene())) << "built-in models are graded";
+    EXPECT_FALSE(allowing.refusal(scene, "/class/pat/scene.json")) << "explore --allow-brdf grades it as grade --allow-brdf";
+    EXPECT_FALSE(strict.refusal(default_scene(), "")) << "built-in models are graded";
+}
+
+// grade --allow-brdf reads a .brdf only in a folder submission NAME/scene.json:
+// a single NAME.json (or a scene not saved yet) with one is refused, and the
+// live grade says so with grade's reason.
+TEST(ExplorePractice, ABrdfMaterialInASingleFileSceneIsRefusedAsGradeRefusesIt) {
+    const Scene scene = scene_with_brdf_on_object(1);
+    const Practice allowing(png_assignment(), nullptr, true);
+    for (const std::string file : {"/class/submission.json", "", "/class/pat/scene.json.txt"}) {
+        const std::optional<grading::Grade> refused = allowing.refusal(scene, file);
+        ASSERT_TRUE(refused) << file;
+        EXPECT_EQ(refused->score, 0);
+        const std::vector<std::string> reasons = refused->reasons();
+        ASSERT_FALSE(reasons.empty());
+        EXPECT_NE(reasons.back().find("objects[1].material.file: a .brdf file is not accepted here: a submission with a "
+                                      ".brdf material is a folder NAME/ holding scene.json and the .brdf file"),
+                  std::string::npos)
+            << reasons.back();
+    }
+    EXPECT_FALSE(allowing.refusal(default_scene(), "/class/submission.json")) << "no .brdf: a single file is fine";
 }
 
 TEST(ExplorePractice, GradeLineIsWhatPrintGradePrints) {

@@ -49,6 +49,7 @@ TEST(ScoreHistogram, GnuplotDrawsAnInlineSvgOrTheReportSaysWhyNot) {
     EXPECT_EQ(drawn.svg.rfind("<svg", 0), 0u) << "no XML prolog: the SVG goes inside the page";
     EXPECT_EQ(drawn.svg.substr(drawn.svg.size() - 6), "</svg>");
     EXPECT_NE(drawn.svg.find(">pass: 60<"), std::string::npos);
+    EXPECT_EQ(drawn.svg.find("http"), std::string::npos) << "no URL in the page, not even a namespace's";
     // The same scores, the same bytes (merged shards equal an unsharded run).
     EXPECT_EQ(score_histogram_svg({10, 20, 95, 95}, 100, 60).svg, drawn.svg);
 }

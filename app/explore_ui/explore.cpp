@@ -253,7 +253,7 @@ private:
         const double left = practice_->settle_left(state_.practice, window_.time());
         if (left > 0.0) return window_.wait(left);
         if (ImGui::GetIO().MouseDown[0]) return window_.wait(-1.0);  // a drag held still is not over
-        practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
         window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
     }
 
@@ -262,7 +262,7 @@ private:
         if (!state_.practice.print_requested) return;
         state_.practice.print_requested = false;
         if (!practice_) return;
-        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, *renderer_a_);
+        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
         std::printf("%s\n", grade_line(state_.practice).c_str());
         std::fflush(stdout);
     }

@@ -16,10 +16,18 @@ bool g_allowed = true;
 bool g_confined = false;  // a BrdfConfinement lives
 std::string g_root, g_why_none;
 
+}  // namespace
+
+std::string brdf_without_folder_reason(const std::string& why_none) {
+    return "a .brdf file is not accepted here: " + why_none;
+}
+
+namespace {
+
 // The refusal of a .brdf path under a BrdfConfinement, or "" when it may be read.
 std::string confinement_problem(const std::string& file, const std::string& resolved) {
     namespace fs = std::filesystem;
-    if (g_root.empty()) return "a .brdf file is not accepted here: " + g_why_none;
+    if (g_root.empty()) return brdf_without_folder_reason(g_why_none);
     const fs::path path(file);
     if (path.is_absolute()) return "must be a path inside the submission's folder, not an absolute path";
     for (const fs::path& part : path)

@@ -45,6 +45,15 @@ private:
     std::string old_root_, old_why_none_;
 };
 
+// A BrdfConfinement's refusal with no folder: "a .brdf file is not accepted
+// here: " + why_none (m3055 explore --assignment --allow-brdf gives it for a
+// scene that is one file, as grade does).
+std::string brdf_without_folder_reason(const std::string& why_none);
+// Why a submission that is one NAME.json may not hold a .brdf material
+// (grade_run.cpp's BrdfConfinement, practice.cpp).
+inline constexpr const char* kBrdfNeedsAFolder =
+    "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file";
+
 // The refusal when .brdf files are not accepted (m3055 explore --assignment
 // gives the same reason for a scene whose material comes from one).
 std::string brdf_not_allowed_reason();
