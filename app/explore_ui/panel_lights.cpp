@@ -80,8 +80,9 @@ bool light_editor(Light& light, int index, const Material* material) {
         // editing the RGB makes it an RGB light (clamped to [0, 1], as the format requires).
         const std::string from = light.temperature_k > 0.0 ? text::format_number(light.temperature_k) + " K black body"
                                                             : "CIE illuminant " + light.illuminant;
-        ImGui::Text("colour from a %s: RGB %.3f %.3f %.3f (luminance 1)", from.c_str(), light.color.r, light.color.g,
-                    light.color.b);
+        ImGui::Text("%s, RGB %.3f %.3f %.3f", from.c_str(), light.color.r, light.color.g, light.color.b);
+        tooltip("the light's spectrum integrated against the CIE 1931 observer, as linear sRGB at luminance 1 "
+                "(spec section 7.1); a channel may exceed 1");
         dvec3 rgb = glm::clamp(light.color, dvec3(0.0), dvec3(1.0));
         if (color_edit("colour c", &rgb)) {
             light.color = rgb;
