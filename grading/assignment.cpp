@@ -4,6 +4,7 @@
 #include "io/input_file.h"
 #include "io/message_text.h"
 #include "scene/json_parse.h"
+#include "spectral/blackbody.h"
 
 #include <cmath>
 #include <filesystem>
@@ -64,10 +65,10 @@ private:
 RuleKind rule_kind(const Fields& fields, const std::string& key) {
     const std::string kind = fields.string(key);
     for (RuleKind k : {RuleKind::model, RuleKind::light_count, RuleKind::warmer, RuleKind::key_to_fill,
-                       RuleKind::eq14, RuleKind::range})
+                       RuleKind::eq14, RuleKind::range, RuleKind::temperature})
         if (kind == to_string(k)) return k;
     fields.fail(fields.name(key), "unknown rule " + text::quote(kind) +
-                                      " (model, light_count, warmer, key_to_fill, eq14, range)");
+                                      " (model, light_count, warmer, key_to_fill, eq14, range, temperature)");
 }
 
 Rule load_rule(const json& node, const std::string& source, std::size_t index) {
@@ -108,6 +109,12 @@ Rule load_rule(const json& node, const std::string& source, std::size_t index) {
             rule.min = f.number("min", -1e12, 1e12);
             rule.max = f.number("max", rule.min, 1e12);
             break;
+        case RuleKind::temperature:  // kelvin, within what a light's "temperature_k" may be
+            f.only({"rule", "name", "points", "light", "min", "max"});
+            rule.text = f.string("light");
+            rule.min = f.number("min", spectral::kMinKelvin, spectral::kMaxKelvin);
+            rule.max = f.number("max", rule.min, spectral::kMaxKelvin);
+            break;
     }
     return rule;
 }
@@ -122,6 +129,7 @@ const char* to_string(RuleKind kind) {
         case RuleKind::key_to_fill: return "key_to_fill";
         case RuleKind::eq14: return "eq14";
         case RuleKind::range: return "range";
+        case RuleKind::temperature: return "temperature";
     }
     return "?";
 }

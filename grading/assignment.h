@@ -27,6 +27,7 @@ enum class RuleKind {
     key_to_fill,  // {"rule": "key_to_fill", "min": 2, "max": 4}          (analysis/lighting_ratio.h)
     eq14,         // {"rule": "eq14", "object": 0, "within_percent": 1}  (scene/presets.h: highlight_peak)
     range,        // {"rule": "range", "path": "objects[0].material.m", "min": 5, "max": 20}
+    temperature,  // {"rule": "temperature", "light": "key", "min": 3000, "max": 3400}  (kelvin)
 };
 const char* to_string(RuleKind kind);
 
@@ -34,10 +35,10 @@ struct Rule {
     RuleKind kind = RuleKind::model;
     std::string label;   // "rules[2] (key_to_fill)", or the rule's own "name"
     double points = 0;
-    std::string text;    // model: the model's name; warmer: the warmer light; range: the path
+    std::string text;    // model: the model's name; warmer: the warmer light; range: the path; temperature: the light
     std::string other;   // warmer: the other light
     int object = -1;     // model, eq14: the object's index (-1: every object, model only)
-    double min = 0, max = 0;  // key_to_fill, range (inclusive); light_count: min = max = N; eq14: max = percent
+    double min = 0, max = 0;  // key_to_fill, range, temperature (inclusive); light_count: min = max = N; eq14: max = percent
 };
 
 struct Assignment {

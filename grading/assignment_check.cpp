@@ -87,6 +87,9 @@ AssignmentCheck check_assignment(const Assignment& a) {
         if (has_object && rule.object >= int(scene->objects.size()))
             error(field + ".object", "no objects[" + std::to_string(rule.object) + "] in the reference scene (it has " +
                                          objects_text(scene->objects.size()) + ")");
+        if (rule.kind == RuleKind::temperature && !has_light(*scene, rule.text))
+            error(field + ".light", "no light named " + text::quote(rule.text) + " in the reference scene (its lights: " +
+                                        joined(light_names(*scene)) + ")");
         if (rule.kind == RuleKind::warmer) {
             if (!has_light(*scene, rule.text))
                 error(field + ".light", "no light named " + text::quote(rule.text) + " in the reference scene (its lights: " +

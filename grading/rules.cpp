@@ -53,18 +53,38 @@ const Light* named_light(const Scene& scene, const std::string& name) {
 }
 
 // Warmth of a light's colour: how much redder than blue it is (c_r - c_b),
-// the axis along which a warm (orange) and a cool (blue) key differ.
+// the axis along which a warm (orange) and a cool (blue) key differ. A kelvin
+// or illuminant light's colour is its spectrum's RGB at luminance 1.
 double warmth(const Light& light) { return light.color.r - light.color.b; }
+
+std::string kelvin_text(double kelvin) { return format_number(kelvin) + " K"; }
 
 Check check_warmer(const Rule& rule, const Scene& scene) {
     const Light* warm = named_light(scene, rule.text);
     const Light* other = named_light(scene, rule.other);
     if (!warm || !other)
         return result(rule, false, "no light named " + text::quote(!warm ? rule.text : rule.other));
-    const std::string values = " (red - blue " + fixed(warmth(*warm)) + " against " + fixed(warmth(*other)) + ")";
-    if (warmth(*warm) > warmth(*other))
-        return result(rule, true, text::quote(rule.text) + " is warmer than " + text::quote(rule.other) + values);
-    return result(rule, false, text::quote(rule.text) + " is not warmer than " + text::quote(rule.other) + values);
+    // Two black bodies: the lower temperature is the warmer light (the studio's sense).
+    const bool kelvin = warm->temperature_k > 0.0 && other->temperature_k > 0.0;
+    const bool ok = kelvin ? warm->temperature_k < other->temperature_k : warmth(*warm) > warmth(*other);
+    const std::string values =
+        kelvin ? " (" + kelvin_text(warm->temperature_k) + " against " + kelvin_text(other->temperature_k) + ")"
+               : " (red - blue " + fixed(warmth(*warm)) + " against " + fixed(warmth(*other)) + ")";
+    return result(rule, ok, text::quote(rule.text) + (ok ? " is warmer than " : " is not warmer than ") +
+                                text::quote(rule.other) + values);
+}
+
+Check check_temperature(const Rule& rule, const Scene& scene) {
+    const Light* light = named_light(scene, rule.text);
+    if (!light) return result(rule, false, "no light named " + text::quote(rule.text));
+    const std::string range = "[" + kelvin_text(rule.min) + ", " + kelvin_text(rule.max) + "]";
+    if (!(light->temperature_k > 0.0))
+        return result(rule, false, text::quote(rule.text) + " has no \"temperature_k\" (" +
+                                       (light->illuminant.empty() ? "an RGB colour" : "illuminant " + light->illuminant) +
+                                       "), wanted " + range);
+    const bool ok = light->temperature_k >= rule.min && light->temperature_k <= rule.max;
+    return result(rule, ok, text::quote(rule.text) + " is " + kelvin_text(light->temperature_k) +
+                                (ok ? ", within " : ", not within ") + range);
 }
 
 Check check_key_to_fill(const Rule& rule, const Scene& scene) {
@@ -113,6 +133,7 @@ Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& doc
         case RuleKind::key_to_fill: return check_key_to_fill(rule, scene);
         case RuleKind::eq14: return check_eq14(rule, scene);
         case RuleKind::range: return check_range(rule, document);
+        case RuleKind::temperature: return check_temperature(rule, scene);
     }
     return result(rule, false, "unknown rule");
 }

@@ -640,6 +640,25 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_FALSE(fs::exists(dir.file("out")));
 }
 
+// The "temperature" rule (issue 22): its light must be one of the reference's, and
+// a reference whose key is an RGB colour fails a kelvin range.
+TEST(GradeCheck, TemperatureRuleNeedsALightOfTheReference) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["rules"] = json::parse(R"([
+            {"rule": "temperature", "light": "rim", "min": 3000, "max": 3400, "points": 10},
+            {"rule": "temperature", "light": "key", "min": 3000, "max": 3400, "points": 10}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string line : {
+             "a.json: rules[0].light: no light named \"rim\" in the reference scene (its lights: \"key\", \"fill\", \"back\")",
+             "a.json: rules[1] (temperature): the reference fails it: \"key\" has no \"temperature_k\" (an RGB colour), "
+             "wanted [3000 K, 3400 K]"})
+        EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
+}
+
 TEST(GradeCheck, KeyToFillNeedsLightsNamedKeyAndFill) {
     TempDir dir;
     json reference = read_json(kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json");

@@ -61,6 +61,49 @@ TEST(GradeRules, WarmerComparesRedMinusBlue) {
     EXPECT_EQ(check(rule, doc).reason, "no light named \"key\"");
 }
 
+// Kelvin lights (docs/spec.md#71-spectral-lights): two black bodies compare by
+// temperature; a kelvin light against an RGB one by its spectrum's red - blue.
+TEST(GradeRules, WarmerUnderstandsKelvinLights) {
+    nlohmann::json doc = reference_doc();
+    const std::string rule = R"({"rule": "warmer", "light": "key", "than": "fill", "points": 1})";
+    doc["lights"][0].erase("color");
+    doc["lights"][1].erase("color");
+    doc["lights"][0]["temperature_k"] = 3200;
+    doc["lights"][1]["temperature_k"] = 5600;
+    const Check studio = check(rule, doc);
+    EXPECT_TRUE(studio.ok);
+    EXPECT_EQ(studio.reason, "\"key\" is warmer than \"fill\" (3200 K against 5600 K)");
+    doc["lights"][0]["temperature_k"] = 6500;
+    EXPECT_EQ(check(rule, doc).reason, "\"key\" is not warmer than \"fill\" (6500 K against 5600 K)");
+    // 6500 K against an RGB fill that is orange: the fill is warmer.
+    doc["lights"][1].erase("temperature_k");
+    doc["lights"][1]["color"] = {1, 0.6, 0.3};
+    EXPECT_FALSE(check(rule, doc).ok);
+    // 2000 K (R - B about 2.5 at luminance 1) against the same orange fill (0.7).
+    doc["lights"][0]["temperature_k"] = 2000;
+    EXPECT_TRUE(check(rule, doc).ok);
+}
+
+TEST(GradeRules, TemperatureWantsAKelvinLightInRange) {
+    nlohmann::json doc = reference_doc();
+    const std::string rule = R"({"rule": "temperature", "light": "key", "min": 3000, "max": 3400, "points": 1})";
+    const Check rgb = check(rule, doc);
+    EXPECT_FALSE(rgb.ok);
+    EXPECT_EQ(rgb.reason, "\"key\" has no \"temperature_k\" (an RGB colour), wanted [3000 K, 3400 K]");
+    doc["lights"][0].erase("color");
+    doc["lights"][0]["temperature_k"] = 3200;
+    const Check ok = check(rule, doc);
+    EXPECT_TRUE(ok.ok);
+    EXPECT_EQ(ok.reason, "\"key\" is 3200 K, within [3000 K, 3400 K]");
+    doc["lights"][0]["temperature_k"] = 5600;
+    EXPECT_EQ(check(rule, doc).reason, "\"key\" is 5600 K, not within [3000 K, 3400 K]");
+    doc["lights"][0].erase("temperature_k");
+    doc["lights"][0]["illuminant"] = "A";
+    EXPECT_EQ(check(rule, doc).reason, "\"key\" has no \"temperature_k\" (illuminant A), wanted [3000 K, 3400 K]");
+    EXPECT_EQ(check(R"({"rule": "temperature", "light": "sun", "min": 3000, "max": 3400, "points": 1})", doc).reason,
+              "no light named \"sun\"");
+}
+
 TEST(GradeRules, KeyToFillUsesTheExplorersRatio) {
     nlohmann::json doc = reference_doc();
     // Y(key) = 0.2126 + 0.7152 * 0.82 + 0.0722 * 0.6 = 0.842384; fill 0.3: 2.808:1.
@@ -107,7 +150,11 @@ TEST(GradeAssignment, ErrorsNameTheField) {
     };
     EXPECT_EQ(error(R"({})"), "a.json: reference: is required");
     EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "colour"}]})"),
-              "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range)");
+              "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range, "
+              "temperature)");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "temperature", "light": "key", "min": 500,
+                                                          "max": 3400, "points": 1}]})"),
+              "a.json: rules[0].min: must be in [1000, 40000], got 500");
     EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "eq14", "object": 0, "within_percent": 1}]})"),
               "a.json: rules[0].points: is required");
     EXPECT_EQ(error(R"({"reference": "r.json", "image": {"points": 10, "fail_levels": -1}})"),

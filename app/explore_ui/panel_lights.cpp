@@ -3,9 +3,11 @@
 
 #include "explore_ui/light_widgets.h"
 #include "explore_ui/widgets.h"
+#include "io/message_text.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <glm/common.hpp>
 
 #include <string>
 
@@ -73,8 +75,26 @@ bool light_editor(Light& light, int index, const Material* material) {
             tooltip("the spot's falloff (cos of the angle to its axis)^exponent, in [0, 1000] (spec section 4; logarithmic)");
         }
     }
-    changed |= color_edit("colour c", &light.color);
-    tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
+    if (light.temperature_k > 0.0 || !light.illuminant.empty()) {
+        // A spectral light (spec section 7.1): its colour comes from its spectrum;
+        // editing the RGB makes it an RGB light (clamped to [0, 1], as the format requires).
+        const std::string from = light.temperature_k > 0.0 ? text::format_number(light.temperature_k) + " K black body"
+                                                            : "CIE illuminant " + light.illuminant;
+        ImGui::Text("%s, RGB %.3f %.3f %.3f", from.c_str(), light.color.r, light.color.g, light.color.b);
+        tooltip("the light's spectrum integrated against the CIE 1931 observer, as linear sRGB at luminance 1 "
+                "(spec section 7.1); a channel may exceed 1");
+        dvec3 rgb = glm::clamp(light.color, dvec3(0.0), dvec3(1.0));
+        if (color_edit("colour c", &rgb)) {
+            light.color = rgb;
+            light.temperature_k = 0.0;
+            light.illuminant.clear();
+            changed = true;
+        }
+        tooltip("c_l: editing it replaces the spectrum by this RGB colour (spec section 7.1)");
+    } else {
+        changed |= color_edit("colour c", &light.color);
+        tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
+    }
 
     // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
     if (material && material->model().light_lobes) {

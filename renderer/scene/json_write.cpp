@@ -42,10 +42,14 @@ json camera_json(const Camera& camera) {
 }
 
 json light_json(const Light& light) {
-    json out = {{"type", to_string(light.type)},
-                {"intensity", light.intensity},
-                {"color", vec(light.color)},
-                {"enabled", light.enabled}};
+    json out = {{"type", to_string(light.type)}, {"intensity", light.intensity}, {"enabled", light.enabled}};
+    // A spectral light is written as its spectrum, which the loader turns back into the same colour.
+    if (light.temperature_k > 0.0)
+        out["temperature_k"] = light.temperature_k;
+    else if (!light.illuminant.empty())
+        out["illuminant"] = light.illuminant;
+    else
+        out["color"] = vec(light.color);
     if (light.type == LightType::directional) {
         out["direction"] = vec(light.direction);
     } else {

@@ -13,6 +13,9 @@
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
+#include "spectral/blackbody.h"
+#include "spectral/cie_data.h"
+#include "spectral/colorimetry.h"
 
 #include <glm/geometric.hpp>
 
@@ -157,12 +160,46 @@ void read_attenuation(const Node& node, Light& light) {
     light.att_quadratic = s.z;
 }
 
+// The light's colour: "color" (RGB), "temperature_k" (a black body) or
+// "illuminant" (a CIE standard illuminant), at most one of them
+// (docs/spec.md#71-spectral-lights). A spectral light's RGB is computed here,
+// once, so the GPU and the reference both use it.
+void read_light_color(const Node& node, Light& light) {
+    const char* given[] = {"color", "temperature_k", "illuminant"};
+    std::vector<std::string> present;
+    for (const char* key : given)
+        if (node.has(key)) present.push_back(key);
+    if (present.size() > 1) {
+        const std::string who = light.name.empty() ? "this light" : "light " + text::quote(light.name);
+        node.child(present[1]).fail(who + " gives both \"" + present[0] + "\" and \"" + present[1] +
+                                    "\"; give one colour");
+    }
+    if (node.has("color")) {
+        light.color = node.child("color").vec3_in(kUnit);
+        return;
+    }
+    if (!node.has("temperature_k") && !node.has("illuminant")) return;
+    const Node source = node.child(present[0]);
+    try {
+        if (node.has("temperature_k")) {
+            light.temperature_k = source.number_in(closed(spectral::kMinKelvin, spectral::kMaxKelvin));
+            light.color = spectral::temperature_rgb(light.temperature_k);
+        } else {
+            light.illuminant = spectral::illuminant_names()[source.one_of(spectral::illuminant_names())];
+            light.color = spectral::illuminant_rgb(light.illuminant);
+        }
+    } catch (const spectral::SpectralError& error) {
+        source.fail(std::string("cannot make its colour: ") + error.what());
+    }
+}
+
 Light read_light(const Node& node) {
     node.expect_object();
     Light light;
     const std::size_t type = node.required("type").one_of({"directional", "point", "spot"});
     light.type = type == 0 ? LightType::directional : type == 1 ? LightType::point : LightType::spot;
-    std::vector<std::string> allowed = {"name", "type", "intensity", "color", "enabled", "lobes", "ambient"};
+    std::vector<std::string> allowed = {"name",    "type",  "intensity", "color",        "temperature_k",
+                                        "illuminant", "enabled", "lobes",    "ambient"};
     if (light.type == LightType::directional) allowed.push_back("direction");
     if (light.type != LightType::directional) allowed.insert(allowed.end(), {"position", "attenuation"});
     if (light.type == LightType::spot) allowed.insert(allowed.end(), {"spot_direction", "spot_exponent"});
@@ -184,10 +221,10 @@ Light read_light(const Node& node) {
         if (node.has("spot_exponent")) light.spot_exponent = node.child("spot_exponent").number_in(kExponent);
     }
     if (node.has("intensity")) light.intensity = node.child("intensity").number_in(closed(0.0, 10.0));
-    if (node.has("color")) light.color = node.child("color").vec3_in(kUnit);
+    if (node.has("name")) light.name = read_light_name(node.child("name"));
+    read_light_color(node, light);
     if (node.has("enabled")) light.enabled = node.child("enabled").boolean();
     if (node.has("ambient")) light.ambient = node.child("ambient").vec3_in(kUnit);  // classic models
-    if (node.has("name")) light.name = read_light_name(node.child("name"));
     if (node.has("lobes")) read_light_lobes(node.child("lobes"), light);
     return light;
 }

@@ -45,7 +45,13 @@ struct Light {
     dvec3 direction{0.0, 0.0, 1.0};  // directional: unit vector from the surface towards the light
     dvec3 position{0.0, 0.0, 0.0};   // point, spot
     double intensity = 1.0;          // a_l in [0, 10]
-    dvec3 color{1.0, 1.0, 1.0};      // c_l in [0, 1]^3
+    dvec3 color{1.0, 1.0, 1.0};      // c_l: in [0, 1]^3 as given, or made from the spectrum below
+    // A spectral light (docs/spec.md#71-spectral-lights): a black body at
+    // temperature_k kelvin (0: none), or a CIE illuminant by name ("" : none).
+    // The loader sets `color` from it (linear sRGB at luminance 1, components may
+    // exceed 1); the renderers use `color` alone. Kept so a save writes it back.
+    double temperature_k = 0.0;
+    std::string illuminant;
     // Distance attenuation 1 / (S_c + S_l r + S_q r^2) for point and spot lights.
     double att_constant = 1.0;
     double att_linear = 0.0;
