@@ -215,11 +215,23 @@ public:
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             info_.profile_b = profile_of_b();
-            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h,
-                              layout.plots_in_cell  ? StripShape::cell
-                              : layout.plots_beside ? StripShape::column
-                                                    : StripShape::row);
-            draw_brdf_views(state_, brdf_views_.get());
+            // The BRDF views (View menu) docked beside the plots, in the strip's
+            // room: its right part under the display; in place of the plots
+            // where they are a column or a cell (too narrow for both).
+            Rect strip = layout.bottom, views = layout.bottom;
+            const bool row = !layout.plots_in_cell && !layout.plots_beside;
+            const bool views_shown = state_.show_brdf_views && brdf_views_;
+            bool strip_column = layout.plots_in_cell || layout.plots_beside;
+            if (views_shown && row) {
+                views.w = std::min(460.0f, strip.w * 0.5f);
+                strip.w -= views.w;
+                views.x = strip.x + strip.w;
+                strip_column = strip.w < 640.0f;  // too narrow for three columns: one under another
+            }
+            if (!views_shown || row)
+                draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h,
+                                  strip_column ? StripShape::column : StripShape::row);
+            draw_brdf_views(state_, brdf_views_.get(), views.x, views.y, views.w, views.h);
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
@@ -350,8 +362,12 @@ private:
     void apply_mouse() {
         const ImGuiIO& io = ImGui::GetIO();
         if (io.WantCaptureMouse) return;
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-            orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+        // A drag orbits the camera; with Shift held it moves the selected object
+        // in the view plane, under the mouse (one undo step per drag either way).
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+            if (io.KeyShift) move_object_in_view(state_, io.MouseDelta.x, io.MouseDelta.y, shown_a_.h);
+            else orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+        }
         if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
         // A click (no drag) picks the object under it.
         if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !moved_while_down_) {

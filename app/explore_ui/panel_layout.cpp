@@ -129,7 +129,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     const ImVec2 room = ImGui::GetContentRegionAvail();
     // Beside the stacked panes or in the free cell beside the third of three
     // (explore/layout.h): the three one under another, each the column's width.
-    if (shape != StripShape::row) {
+    if (shape == StripShape::column) {
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.45f), profile_h = std::max(100.0f, room.y * 0.22f);
         ImGui::BeginGroup();

@@ -45,9 +45,10 @@ struct FrameInfo {
 void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, float width,
                      float height);
 // Bottom strip: the polar plot of the selected material and the frame statistics.
-// Where it goes (explore/layout.h): under the display, a column beside the
-// stacked panes, or the free cell beside the third of three panes.
-enum class StripShape { row, column, cell };
+// Its shape (explore/layout.h): three columns under the display, or the three
+// one under another (beside stacked panes, in the free cell beside the third
+// of three panes, or beside the docked BRDF views).
+enum class StripShape { row, column };
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
                        float width, float height, StripShape shape = StripShape::row);
 
@@ -60,7 +61,7 @@ void draw_dialogs(ExplorerState& state);
 void open_brdf_dialog(ExplorerState& state);
 void brdf_material_note(const ExplorerState& state, const Material& material);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
-void draw_brdf_views(ExplorerState& state, BrdfViews* views);
+void draw_brdf_views(ExplorerState& state, BrdfViews* views, float x, float y, float width, float height);
 
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);
