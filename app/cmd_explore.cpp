@@ -41,7 +41,7 @@ void add_explore_command(CLI::App& app) {
     explore->add_option("--capture-window", options->capture_window,
                         "Write a PNG of the whole window once the script is done");
     explore->add_option("--stats", options->stats_path,
-                        "Write frame counts (total, and while idle) as JSON at exit");
+                        "Write frame counts (total, and while idle) and start-up to the first frame (ms) as JSON at exit");
     explore->add_flag("--compile-at-once", options->compile_at_once,
                       "Compile a new shader specialization before drawing (stalls; the default draws with the "
                       "general program meanwhile, the same pixels)");
@@ -49,7 +49,7 @@ void add_explore_command(CLI::App& app) {
                             options->window_width = std::stoi(r.at(0));
                             options->window_height = std::stoi(r.at(1));
                             return true;
-                        }, "Window width and height in pixels (default 1500 940)")
+                        }, "Window width and height in pixels (default: the screen's work area)")
         ->expected(2)->type_name("W H");
     explore->callback([options]() {
         const int status = run_explorer(*options);

@@ -118,18 +118,22 @@ std::vector<std::string> brdf_files_in_use(const ExplorerState& state) {
 }
 
 bool poll_brdf_files(ExplorerState& state, double now) {
+    // Found by the last poll, shown as "reloading FILE..." since: reload them now.
+    if (!state.brdf_reload_pending.empty()) {
+        for (const std::string& path : state.brdf_reload_pending) reload(state, path);
+        state.brdf_reload_pending.clear();
+        return true;
+    }
     if (now < state.brdf_next_poll) return false;
     state.brdf_next_poll = now + kBrdfPollSeconds;
-    bool news = false;
     for (const std::string& path : brdf_files_in_use(state)) {
         const std::string current = stamp(path);
         const auto [seen, first_time] = state.brdf_stamps.emplace(path, current);
         if (first_time || seen->second == current) continue;
         seen->second = current;
-        reload(state, path);
-        news = true;
+        state.brdf_reload_pending.push_back(path);
     }
-    return news;
+    return !state.brdf_reload_pending.empty();
 }
 
 }  // namespace m3055::explore

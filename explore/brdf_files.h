@@ -28,9 +28,10 @@ bool open_brdf(ExplorerState& state, const std::string& path);
 std::vector<std::string> brdf_files_in_use(const ExplorerState& state);
 
 // At most every kBrdfPollSeconds (`now` in seconds): each file in use whose
-// mtime or size changed is re-read and checked, and on success every material
-// using it is reloaded (reload_brdf_material: values kept) and the status says
-// "reloaded FILE". Returns true when there is something new to show.
+// mtime or size changed is noted in state.brdf_reload_pending (a frame shows
+// "reloading FILE..."); the next call re-reads and checks them, and on success
+// every material using one is reloaded (reload_brdf_material: values kept) and
+// the status says "reloaded FILE". Returns true when there is something new to show.
 bool poll_brdf_files(ExplorerState& state, double now);
 
 }  // namespace m3055::explore

@@ -7,7 +7,6 @@
 namespace m3055::explore {
 
 namespace {
-constexpr float kSideWidth = 440.0f;
 constexpr float kBottomHeight = 270.0f;
 }  // namespace
 
@@ -15,13 +14,13 @@ int whole_pixel_scale(int w, int h, float area_w, float area_h) {
     return static_cast<int>(std::min(std::floor(area_w / w), std::floor(area_h / h)));
 }
 
-Layout layout_for(float width, float height, bool panels) {
+Layout layout_for(float width, float height, bool panels, float side_width) {
     Layout l;
     if (!panels) {
         l.display = {0, 0, width, height};
         return l;
     }
-    l.side = {0, 0, std::min(kSideWidth, width), height};
+    l.side = {0, 0, std::min(side_width, width), height};
     const float right = std::max(0.0f, width - l.side.w);
     l.bottom = {l.side.w, std::max(0.0f, height - kBottomHeight), right, std::min(kBottomHeight, height)};
     l.display = {l.side.w, 0, right, l.bottom.y};
@@ -29,8 +28,10 @@ Layout layout_for(float width, float height, bool panels) {
 }
 
 Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
-                        float label_h) {
-    const Layout under = layout_for(width, height, panels);
+                        float label_h, float side_width) {
+    if (w > 0 && fb_scale > 0.0f)  // one pane at 1:1 beside the panel, whatever its content asks
+        side_width = std::max(kSideWidth, std::min(side_width, width - float(w) / fb_scale - 3.0f * kCompareGap));
+    const Layout under = layout_for(width, height, panels, side_width);
     if (!panels || panes < 1 || w <= 0 || h <= 0 || fb_scale <= 0.0f) return under;
     if (best_grid(panes, w, h, under.display, fb_scale, label_h).scale >= 1) return under;
     // The panes in one column (or two) at the whole height; the plots beside them.
@@ -46,6 +47,26 @@ Layout layout_for_panes(float width, float height, bool panels, int panes, int w
         if (beside.bottom.w >= kMinPlotsBesideWidth &&
             fit_grid(panes, columns, w, h, beside.display, fb_scale, label_h).scale >= 1)
             return beside;
+    }
+    // Three panes: two columns at 1:1 (or more) as high as the window
+    // allows, the side panel narrowed to the rest, the plots in the free cell.
+    if (panes == 3) {
+        for (int scale = 8; scale >= 1; --scale) {
+            const float iw = float(w * scale) / fb_scale, ih = float(h * scale) / fb_scale;
+            Layout cell;
+            cell.plots_in_cell = true;
+            // 2 px round the panes for their frames; labels above the first row.
+            cell.display = {0, 0, 2.0f * iw + kCompareGap + 4.0f, label_h + 2.0f * ih + kCompareGap + 4.0f};
+            cell.side = {0, 0, std::min(side_width, width - cell.display.w), height};
+            if (cell.side.w < kMinNarrowSideWidth || cell.display.h > height) continue;
+            cell.display.x = cell.side.w + (width - cell.side.w - cell.display.w);  // flush right
+            if (fit_grid(3, 2, w, h, cell.display, fb_scale, label_h).scale != scale) continue;
+            // The free cell: right of the third pane, under its label line.
+            const float cell_x = cell.display.x + 2.0f + iw + kCompareGap * 0.5f;
+            const float cell_y = label_h + ih + kCompareGap + 2.0f + label_h * 1.5f;
+            cell.bottom = {cell_x, cell_y, width - cell_x, height - cell_y};
+            if (cell.bottom.w >= kMinPlotsBesideWidth && cell.bottom.h >= 200.0f) return cell;
+        }
     }
     return under;
 }

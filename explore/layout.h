@@ -19,24 +19,36 @@ struct Rect {
 // The side panel, the bottom strip and the display's area (ImGui units).
 // plots_beside: the strip (polar plot, profile, statistics) is a column right
 // of the display's area, which then has the window's whole height.
+// plots_in_cell: three panes in two columns (A, B over |A - B|; practice:
+// your scene, the reference over the difference) fill the display's area and
+// the plots take the free cell beside the third pane; the side panel is
+// narrowed to what is left of the window.
 struct Layout {
     Rect side, bottom, display;
     bool plots_beside = false;
+    bool plots_in_cell = false;
 };
 
 inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
+// The side panel's width: at least kSideWidth, wider when its content needs
+// it (side_width; the panel's labels and text are never cut, issue 20 item 6),
+// but never so wide that one pane no longer fits at 1:1 beside it.
+inline constexpr float kSideWidth = 440.0f;
 
-Layout layout_for(float width, float height, bool panels);
+Layout layout_for(float width, float height, bool panels, float side_width = kSideWidth);
 // The layout that shows `panes` panes of w x h dots at a whole magnification
 // of at least 1 with the panels shown, when one does: the plots under the
 // display (layout_for) when the panes fit there; else the panes stacked at
 // the window's full height and the plots in a column beside them (A over B
-// at 1280 x 720; practice: your scene over the reference). Never a fraction
+// at 1280 x 720; practice: your scene over the reference); for three panes,
+// two columns with the plots in the fourth cell and a narrower side panel
+// (at least kMinNarrowSideWidth). Never a fraction
 // when a layout avoids it; layout_for's when none does (the statistics say
 // "shrunk"; F1 hides the panels).
 Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
-                        float label_h);
+                        float label_h, float side_width = kSideWidth);
 inline constexpr float kMinPlotsBesideWidth = 300.0f;  // the narrowest column the plots are useful in
+inline constexpr float kMinNarrowSideWidth = 236.0f;   // the narrowest side panel whose labels still fit
 
 // The largest whole-pixel magnification of a w x h image that fits
 // area_w x area_h (framebuffer pixels); 0 when even 1:1 does not fit.

@@ -72,6 +72,11 @@ void edit_camera(ExplorerState& state, const Camera& edited);
 void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels);
 void zoom_camera(ExplorerState& state, double wheel_steps);
 void reset_camera(ExplorerState& state);
+// Shift+drag on the display: the selected object's centre moves in the plane
+// through it facing the camera, so it follows the mouse: dx, dy window units
+// dragged (y down), `shown_height` the display's height on screen in the same
+// units (one undo step per drag: the edit is committed when the button is up).
+void move_object_in_view(ExplorerState& state, double dx, double dy, double shown_height);
 
 // ---- A/B compare ------------------------------------------------------------------------
 // Turns the split on or off; B stays what it was once the user has set it

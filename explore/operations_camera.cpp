@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace m3055::explore {
 
@@ -52,6 +53,26 @@ void zoom_camera(ExplorerState& state, double wheel_steps) {
         c.position = c.target + glm::normalize(offset) * distance;
     }
     note_edit(state, "zoom camera");
+}
+
+void move_object_in_view(ExplorerState& state, double dx, double dy, double shown_height) {
+    const int index = state.selected_object;
+    if (index < 0 || index >= static_cast<int>(state.scene.objects.size()) || !(shown_height > 0.0)) return;
+    const Camera& c = state.scene.camera;
+    Object& object = state.scene.objects[std::size_t(index)];
+    const dvec3 forward = glm::normalize(c.target - c.position);
+    const dvec3 right = glm::normalize(glm::cross(forward, c.up));
+    const dvec3 up = glm::cross(right, forward);
+    // World units per window unit at the object's depth: the view's height
+    // there (orthographic: the camera's; perspective: 2 d tan(fov/2)) over
+    // the height the display is shown at.
+    const double depth = glm::dot(object.center - c.position, forward);
+    const double view_height = c.projection == Projection::orthographic
+                                   ? c.height
+                                   : 2.0 * std::max(depth, 1e-3) * std::tan(c.fov_y_deg * 3.14159265358979323846 / 360.0);
+    const double per_unit = view_height / shown_height;
+    object.center += right * (dx * per_unit) - up * (dy * per_unit);
+    note_edit(state, "move objects[" + std::to_string(index) + "]");
 }
 
 void reset_camera(ExplorerState& state) {

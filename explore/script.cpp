@@ -196,7 +196,8 @@ void plot_scale(Call& c) {  // the plot header's scale combo, and its outer valu
     if (name == "fixed") c.state.plot_scale = RadialScale::fixed;
     else if (name == "model_max") c.state.plot_scale = RadialScale::model_max;
     else if (name == "log") c.state.plot_scale = RadialScale::log;
-    else throw std::runtime_error("plot_scale: fixed, model_max or log");
+    else if (name == "lobe") c.state.plot_scale = RadialScale::lobe;
+    else throw std::runtime_error("plot_scale: fixed, model_max, log or lobe");
     double top = name == "log" ? 1000.0 : 1.0;
     if (!c.rest().empty()) throw std::runtime_error("plot_scale: one word");
     c.state.plot_top = top;

@@ -28,7 +28,7 @@
 //   key NAME                a key press: escape, r, f1, f12, ctrl+s, ctrl+z, ctrl+shift+z,
 //                           ctrl+y, 0-9, ctrl+0-9 (as with no widget active)
 //   plot_light I            the polar plot header's light
-//   plot_scale fixed|model_max|log   its radial scale
+//   plot_scale fixed|model_max|log|lobe   its radial scale (lobe: the default)
 //   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
 //                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
 //   compare_diff on|off     the A/B panel's third pane, |A - B| per channel, scaled

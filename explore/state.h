@@ -33,7 +33,7 @@ struct ExplorerState {
 
     // The polar plot's radial scale: chosen by the user and kept (model_max is
     // recomputed only when the plotted material's model or the light changes).
-    RadialScale plot_scale = RadialScale::fixed;
+    RadialScale plot_scale = RadialScale::lobe;  // issue 20 item 7: the lobe fills the plot
     double plot_top = 1.0;    // fixed: the outer circle; log: the outer circle's value
 
     // A/B compare: the selected object rendered a second time with material_b.
@@ -97,6 +97,10 @@ struct ExplorerState {
     std::string brdf_error_path;  // the file brdf_error is about
     std::map<std::string, std::string> brdf_stamps;
     double brdf_next_poll = 0.0;
+    // Changed .brdf files found by the last poll, reloaded by the next one
+    // (after a frame has shown "reloading FILE...": busy_line in explore/busy.h).
+    std::vector<std::string> brdf_reload_pending;
+    std::string busy;  // this frame's busy_line (explore/busy.h), beside the menu
     std::function<std::string(const Material&)> brdf_compile_check;
     // The "BRDF views" window (View menu): shown?, its slice's log colour and
     // the lobe's turn (radians).

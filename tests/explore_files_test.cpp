@@ -141,5 +141,21 @@ TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
     EXPECT_EQ(state.scene_file, "");
 }
 
+// Issue 20, item 10: Save As proposes the scene's own file, or (a figure
+// preset loaded since) the preset's name in the folder of the last file, never
+// m3055-scene.json in the working folder.
+TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
+    const fs::path dir = fresh_folder("explore_files_save_as");
+    ExplorerState state = started();
+    const std::string file = (dir / "mine.json").string();
+    ASSERT_TRUE(save_scene(state, file)) << state.error;
+    ASSERT_TRUE(load_scene(state, file)) << state.error;
+    request_save_as(state);
+    EXPECT_EQ(state.save_path, file);
+    ASSERT_TRUE(load_figure(state, "fig10"));
+    request_save_as(state);
+    EXPECT_EQ(state.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
+}
+
 }  // namespace
 }  // namespace m3055::explore

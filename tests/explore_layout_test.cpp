@@ -74,5 +74,34 @@ TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
     EXPECT_FALSE(layout_for_panes(1280, 720, false, 2, 512, 320, 1.0f, label_h).plots_beside);
 }
 
+// Issue 20, item 5: three panes (A, B, |A - B|; practice: your scene, the
+// reference, the difference) at 1280 x 720 with the panels shown: two
+// columns at 1:1, the plots in the free fourth cell, the side panel narrowed
+// to the rest (never under kMinNarrowSideWidth); at 1920 x 1080 the usual
+// layout already fits them at 1:1.
+TEST(ExploreLayout, ThreePanesAt1280x720TakeTwoColumnsWithThePlotsInTheFourthCell) {
+    const float label_h = 21.0f;
+    const Layout l = layout_for_panes(1280, 720, true, 3, 512, 320, 1.0f, label_h);
+    ASSERT_TRUE(l.plots_in_cell);
+    const Grid g = best_grid(3, 512, 320, l.display, 1.0f, label_h);
+    EXPECT_EQ(g.scale, 1);
+    EXPECT_EQ(g.columns, 2);
+    EXPECT_GE(l.side.w, kMinNarrowSideWidth);
+    EXPECT_FLOAT_EQ(l.side.w + l.display.w, 1280.0f) << "the panes flush right of the side panel";
+    EXPECT_LE(l.display.y + l.display.h, 720.0f);
+    // The plots: right of the third pane (under A), below B, inside the window.
+    EXPECT_GE(l.bottom.x, l.display.x + 2.0f + 512.0f);
+    EXPECT_GE(l.bottom.y, label_h + 320.0f + kCompareGap);
+    EXPECT_FLOAT_EQ(l.bottom.x + l.bottom.w, 1280.0f);
+    EXPECT_FLOAT_EQ(l.bottom.y + l.bottom.h, 720.0f);
+    EXPECT_GE(l.bottom.w, kMinPlotsBesideWidth);
+    const Layout big = layout_for_panes(1920, 1080, true, 3, 512, 320, 1.0f, label_h);
+    EXPECT_FALSE(big.plots_in_cell);
+    EXPECT_FLOAT_EQ(big.side.w, 440.0f);
+    EXPECT_GE(best_grid(3, 512, 320, big.display, 1.0f, label_h).scale, 1);
+    // Too narrow for a usable side panel beside two columns: the usual layout (shrunk; F1 helps).
+    EXPECT_FALSE(layout_for_panes(1200, 720, true, 3, 512, 320, 1.0f, label_h).plots_in_cell);
+}
+
 }  // namespace
 }  // namespace m3055::explore

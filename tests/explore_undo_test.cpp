@@ -189,5 +189,35 @@ TEST(ExploreUndo, AnEditClearsTheLastActionsStatus) {
     EXPECT_EQ(state.status, "");
 }
 
+// Issue 20, item 10: Shift+drag on the display moves the selected object in
+// the plane facing the camera so it follows the mouse (a drag across the
+// display's height is the view's height at the object's depth: 2 d tan(fov/2)
+// in perspective, the camera's height orthographic); a whole drag is one undo step.
+TEST(ExploreUndo, ShiftDragMovesTheSelectedObjectInTheViewPlaneInOneStep) {
+    ExplorerState state = started();
+    Camera& c = state.scene.camera;
+    c.projection = Projection::perspective;
+    c.position = {0, 0, 10};
+    c.target = {0, 0, 0};
+    c.up = {0, 1, 0};
+    c.fov_y_deg = 30.0;
+    state.scene.objects[0].center = {0, 0, 0};
+    commit_edits(state);
+    const std::size_t steps = state.history.undo_steps();
+    const double shown_h = 320.0, per_unit = 2.0 * 10.0 * std::tan(15.0 * 3.14159265358979323846 / 180.0) / shown_h;
+    for (int frame = 0; frame < 4; ++frame) move_object_in_view(state, 10.0, -5.0, shown_h);  // right and up
+    EXPECT_NEAR(state.scene.objects[0].center.x, 40.0 * per_unit, 1e-12);
+    EXPECT_NEAR(state.scene.objects[0].center.y, 20.0 * per_unit, 1e-12);
+    EXPECT_NEAR(state.scene.objects[0].center.z, 0.0, 1e-12) << "in the view plane";
+    ASSERT_TRUE(commit_edits(state));
+    EXPECT_EQ(state.history.undo_steps(), steps + 1) << "one drag, one step";
+    ASSERT_TRUE(undo(state));
+    EXPECT_EQ(state.scene.objects[0].center, dvec3(0, 0, 0));
+    state.scene.camera.projection = Projection::orthographic;
+    state.scene.camera.height = 4.0;
+    move_object_in_view(state, shown_h, 0.0, shown_h);
+    EXPECT_NEAR(state.scene.objects[0].center.x, 4.0, 1e-12) << "orthographic: the camera's height";
+}
+
 }  // namespace
 }  // namespace m3055::explore

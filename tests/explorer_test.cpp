@@ -49,8 +49,9 @@ struct ExplorerRun {
 // With `timeout_seconds` > 0 the run is killed after that long (exit code 124).
 ExplorerRun run_explorer(const std::string& cwd, const std::vector<std::string>& args, int timeout_seconds = 0) {
     const std::string out_path = cwd + "/explore.stdout", err_path = cwd + "/explore.stderr";
+    // A 1500 x 940 window (the size the checks' positions are for; the default is the screen's work area).
     std::vector<std::string> argv = {find_xvfb_run(), "-a", "-s", "-screen 0 1600x1000x24",
-                                     M3055_BINARY, "explore"};
+                                     M3055_BINARY, "explore", "--window-size", "1500", "940"};
     if (timeout_seconds > 0)
         argv.insert(argv.begin(), {"/usr/bin/timeout", "-k", "5", std::to_string(timeout_seconds)});
     argv.insert(argv.end(), args.begin(), args.end());

@@ -281,6 +281,31 @@ TEST(ModelTable, SwitchingModelsKeepsValuesOfTheSameMeaning) {
     EXPECT_EQ(with_model(Material::of("highlight"), model_table().get("metal")).number("d"), 0.05);
 }
 
+// Issue 20, item 10: a model switch keeps the object's colour between every
+// two built-in models (C0 "color" of the paper's models, "kd" of the classic
+// ones: carry_from in builtin_models.cpp), never the new model's default red.
+TEST(ModelTable, EverySwitchBetweenBuiltInModelsKeepsTheColour) {
+    auto colour_param = [](const ModelSpec& m) -> const char* {
+        if (m.find("color")) return "color";
+        if (m.find("kd")) return "kd";
+        return nullptr;
+    };
+    int pairs = 0;
+    for (const ModelSpec& from : model_table().models()) {
+        const char* from_colour = colour_param(from);
+        if (!from_colour || from.id < 0) continue;
+        Material blue(from);
+        blue.set_vec3(from_colour, {0.1, 0.2, 0.9});
+        for (const ModelSpec& to : model_table().models()) {
+            const char* to_colour = colour_param(to);
+            if (!to_colour || to.id < 0) continue;
+            EXPECT_EQ(with_model(blue, to).vec3(to_colour), dvec3(0.1, 0.2, 0.9)) << from.name << " -> " << to.name;
+            ++pairs;
+        }
+    }
+    EXPECT_GT(pairs, 100);
+}
+
 TEST(ModelTable, RejectsInconsistentRunTimeModels) {
     ModelSpec good;
     good.name = "test_runtime_lambert_copy";

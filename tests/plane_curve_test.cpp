@@ -103,5 +103,32 @@ TEST(PlaneCurve, RadialScales) {
     EXPECT_EQ(model_max(metal, a, dvec3(0.0)), model_max(metal, b, dvec3(0.0)));
 }
 
+// Issue 20, item 7: the default "lobe" scale puts the outer circle at the
+// plotted curve's largest value rounded up to 1, 2 or 5 x 10^k: Fig. 10's
+// metal lobe (about 5 at its 54.7 deg incidence, 40.6 over all incidences)
+// reaches at least 40 % of the radius instead of running off "fixed, outer 1"
+// or shrinking under "model max".
+TEST(PlaneCurve, LobeScaleFitsThePlottedLobe) {
+    EXPECT_EQ(nice_ceiling(0.7), 1.0);
+    EXPECT_EQ(nice_ceiling(1.0), 1.0);
+    EXPECT_EQ(nice_ceiling(1.3), 2.0);
+    EXPECT_EQ(nice_ceiling(4.1), 5.0);
+    EXPECT_EQ(nice_ceiling(6.0), 10.0);
+    EXPECT_NEAR(nice_ceiling(0.031), 0.05, 1e-15);
+    EXPECT_EQ(nice_ceiling(0.0), 1.0) << "a black curve";
+    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"));
+    const Light& light = scene.lights[0];
+    const Material& metal = scene.objects[0].material;
+    const PlaneCurve curve = plane_curve(metal, light, incidence_at_target(light, scene.camera), scene.background);
+    const double top = lobe_top(curve);
+    EXPECT_GT(curve.max_value(), 1.0) << "fixed, outer 1 would cut this lobe";
+    EXPECT_GE(top, curve.max_value());
+    EXPECT_GE(curve.max_value() / top, 0.4);
+    EXPECT_LT(top, model_max(metal, light, scene.background)) << "model max flattens it";
+    PlaneCurve brighter = curve;
+    for (auto& v : brighter.values) v *= 3.0;
+    EXPECT_GE(lobe_top(curve, &brighter), brighter.max_value()) << "B's curve counts too";
+}
+
 }  // namespace
 }  // namespace m3055

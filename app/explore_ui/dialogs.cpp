@@ -120,6 +120,8 @@ void draw_menu_bar(ExplorerState& state) {
         ImGui::EndMenu();
     }
     if (unsaved(state)) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "  unsaved edits");
+    // What a frame is waiting for (explore/busy.h), where the eye goes after an edit.
+    if (!state.busy.empty()) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1, 1), "  %s", state.busy.c_str());
     ImGui::EndMenuBar();
 }
 

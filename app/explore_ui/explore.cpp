@@ -7,6 +7,7 @@
 #include "analysis/brdf_views.h"
 #include "analysis/plane_curve_gpu.h"
 #include "explore/brdf_files.h"
+#include "explore/busy.h"
 #include "explore/display_renderers.h"
 #include "explore/files.h"
 #include "explore/keys.h"
@@ -35,6 +36,9 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupsExceptModals, GetTopMostPopupModal (1.86)
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -57,8 +61,12 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void write_stats(const std::string& path, long frames, long renders, const Script* script) {
-    nlohmann::json stats = {{"frames", frames}, {"renders", renders}};
+// When the process started (static initialization, before main): start-up
+// to the first frame is measured from here (--stats' first_frame_ms).
+const std::chrono::steady_clock::time_point kProcessStart = std::chrono::steady_clock::now();
+
+void write_stats(const std::string& path, long frames, long renders, double first_frame_ms, const Script* script) {
+    nlohmann::json stats = {{"frames", frames}, {"renders", renders}, {"first_frame_ms", first_frame_ms}};
     stats["idle"] = nlohmann::json::array();
     if (script) {
         for (const IdleRecord& r : script->idle_records()) {
@@ -97,7 +105,9 @@ public:
             state_.error = e.what();
         }
         // The free area before the first frame, for a script's `display modern`.
-        const Layout start = layout_for(float(options.window_width), float(options.window_height), true);
+        int window_w = 0, window_h = 0;
+        window_.framebuffer_size(&window_w, &window_h);
+        const Layout start = layout_for(float(window_w), float(window_h), true);
         info_.free_width = int(start.display.w);
         info_.free_height = int(start.display.h);
     }
@@ -106,6 +116,7 @@ public:
         gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
         compare_.reset();  // GL objects go while the context is still current
         reference_.reset();
+        practice_diff_.reset();
         practice_.reset();
         info_.plane_curves = nullptr;
         state_.brdf_compile_check = nullptr;
@@ -176,17 +187,23 @@ public:
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
+        state_.busy = busy_line(state_, deferred_programs());
         const ImGuiIO& io = ImGui::GetIO();
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
-        const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0);
+        const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0) +
+                          (shows_practice_difference() ? 1 : 0);
         const Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
                                                renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
                                                renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
-                                               ImGui::GetTextLineHeight() + 4.0f);
+                                               ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
         note_free_area(layout, fb_scale);
         apply_mouse();
         note_hovered_row();
-        if (state_.show_panels) draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+        if (state_.show_panels) {
+            info_.side_extra = side_extra_;
+            draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+            follow_side_panel_content(layout);
+        }
         draw_dialogs(state_);
         // A finished edit (no widget held, no drag on the display) is one undo step.
         if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
@@ -201,9 +218,23 @@ public:
             info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
             info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
             info_.profile_b = profile_of_b();
-            draw_bottom_strip(state_, info_, layout.bottom.x, layout.bottom.y, layout.bottom.w, layout.bottom.h,
-                              layout.plots_beside);
-            draw_brdf_views(state_, brdf_views_.get());
+            // The BRDF views (View menu) docked beside the plots, in the strip's
+            // room: its right part under the display; in place of the plots
+            // where they are a column or a cell (too narrow for both).
+            Rect strip = layout.bottom, views = layout.bottom;
+            const bool row = !layout.plots_in_cell && !layout.plots_beside;
+            const bool views_shown = state_.show_brdf_views && brdf_views_;
+            bool strip_column = layout.plots_in_cell || layout.plots_beside;
+            if (views_shown && row) {
+                views.w = std::min(460.0f, strip.w * 0.5f);
+                strip.w -= views.w;
+                views.x = strip.x + strip.w;
+                strip_column = strip.w < 640.0f;  // too narrow for three columns: one under another
+            }
+            if (!views_shown || row)
+                draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h,
+                                  strip_column ? StripShape::column : StripShape::row);
+            draw_brdf_views(state_, brdf_views_.get(), views.x, views.y, views.w, views.h);
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
@@ -221,7 +252,7 @@ public:
         int status = script_ && script_->errors() > 0 ? 1 : 0;
         if (options_.stats_path.empty()) return status;
         try {
-            write_stats(options_.stats_path, info_.frames, info_.renders, script_ ? &*script_ : nullptr);
+            write_stats(options_.stats_path, info_.frames, info_.renders, first_frame_ms_, script_ ? &*script_ : nullptr);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
             status = 1;
@@ -289,9 +320,38 @@ private:
         focus.text_input = io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId);
         focus.wants_keyboard = io.WantCaptureKeyboard;
         focus.item_active = ImGui::IsAnyItemActive();
-        for (const WindowEvents::Key& k : window_.events().keys)
+        for (const WindowEvents::Key& k : window_.events().keys) {
+            // Esc closes an open menu, combo or context popup first (a modal
+            // dialog answers Esc itself: its Cancel); the next Esc quits.
+            if (k.key == GLFW_KEY_ESCAPE && ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) &&
+                !ImGui::GetTopMostPopupModal()) {
+                ImGui::ClosePopupsExceptModals();
+                continue;
+            }
             handle_shortcut(state_, key_press_from_glfw(k.key, k.mods), focus);
+        }
         window_.events().keys.clear();
+    }
+
+    // The side panel's width follows its content: what reached past its edge
+    // widens it (and its label column) from the next frame on; it never
+    // narrows back, so controls do not jump as sections open and close. Not
+    // measured when it is narrowed beside three panes (there it is what is left).
+    void follow_side_panel_content(const Layout& layout) {
+        if (layout.plots_in_cell) return;
+        const float overflow = info_.side_overflow;
+        if (overflow < 0.5f) {
+            side_stuck_ = false;
+            side_last_overflow_ = 0.0f;
+            return;
+        }
+        // Content that grows with the panel (anchored to its right edge) is
+        // not helped by growing it: stop, and leave it to the clip check.
+        if (side_last_overflow_ > 0.0f && overflow >= side_last_overflow_ - 0.5f) side_stuck_ = true;
+        side_last_overflow_ = overflow;
+        if (side_stuck_ || side_extra_ >= kMaxSideExtra) return;
+        side_extra_ = std::min(kMaxSideExtra, side_extra_ + std::ceil(overflow));
+        window_.events().frames_owed = std::max(window_.events().frames_owed, 2);
     }
 
     // Room for one display (two in compare, with the gap between them), for `display modern`.
@@ -305,8 +365,12 @@ private:
     void apply_mouse() {
         const ImGuiIO& io = ImGui::GetIO();
         if (io.WantCaptureMouse) return;
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-            orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+        // A drag orbits the camera; with Shift held it moves the selected object
+        // in the view plane, under the mouse (one undo step per drag either way).
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+            if (io.KeyShift) move_object_in_view(state_, io.MouseDelta.x, io.MouseDelta.y, shown_a_.h);
+            else orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+        }
         if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
         // A click (no drag) picks the object under it.
         if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !moved_while_down_) {
@@ -320,6 +384,7 @@ private:
 
     // The A/B read-outs (count, difference pane) of this render, for the strip and the panes.
     void update_compare() {
+        update_practice_difference();
         info_.compare_count.clear();
         if (!renderer_a_ || !state_.compare) return;
         try {
@@ -328,6 +393,22 @@ private:
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
+    }
+
+    // Practice mode's third pane: |your scene - reference| per channel at the
+    // A/B split's automatic scale (grading/ab_compare.h), as the report shows it;
+    // made again after a render. Not with the split on (A, B, |A - B| are there).
+    bool shows_practice_difference() const { return practice_ && !state_.compare; }
+    void update_practice_difference() {
+        if (!shows_practice_difference() || !practice_diff_stale_ || !renderer_a_) return;
+        practice_diff_stale_ = false;
+        practice_diff_.reset();
+        const Rgb8Image& mine = readouts_.display_image(*renderer_a_);
+        const Rgb8Image& reference = practice_->reference_image();
+        if (mine.width != reference.width || mine.height != reference.height) return;  // no pane: sizes differ
+        practice_diff_scale_ = grading::auto_difference_scale(mine, reference);
+        practice_diff_count_ = grading::level_difference(mine, reference, state_.scene.display.bits).differing;
+        practice_diff_ = std::make_unique<PaneTexture>(gl_, grading::scaled_difference(mine, reference, practice_diff_scale_));
     }
 
     // B's levels on the profile's row, drawn dashed beside A's (the A/B split):
@@ -408,6 +489,7 @@ private:
             render_displays(state_, *renderer_a_, *renderer_b_);
             readouts_.invalidate();
             compare_->invalidate();
+            practice_diff_stale_ = true;
             profile_b_.reset();
             gl_.Finish();
             ++info_.renders;
@@ -428,6 +510,10 @@ private:
             if (state_.compare && state_.compare_diff && compare_->texture())
                 panes.push_back({compare_->texture(), compare_->scale_label(state_) + ", " + compare_->pane_count_label()});
             if (practice_) panes.push_back({reference_->texture(), practice_->reference_label()});
+            if (shows_practice_difference() && practice_diff_)
+                panes.push_back({practice_diff_->texture(), "|yours - reference| x " + std::to_string(practice_diff_scale_) +
+                                                                " (auto), " + std::to_string(practice_diff_count_) +
+                                                                " px on another level"});
             info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
                                        &shown_a_);
             hover_readouts();
@@ -456,6 +542,10 @@ private:
             pending_capture_.clear();
         }
         window_.swap();
+        if (info_.frames == 0) {  // start-up: the first frame shown (GL finished)
+            gl_.Finish();
+            first_frame_ms_ = milliseconds_since(kProcessStart);
+        }
         ++info_.frames;
         window_.events().frames_owed = std::max(0, window_.events().frames_owed - 1);
     }
@@ -487,6 +577,15 @@ private:
     std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
     std::unique_ptr<Practice> practice_;  // --assignment
     std::unique_ptr<PaneTexture> reference_;  // its reference, shown beside A
+    static constexpr float kMaxSideExtra = 320.0f;  // a runaway guard: no label is that long
+    float side_extra_ = 0.0f;                     // follow_side_panel_content
+    double first_frame_ms_ = 0.0;                 // process start to the first frame shown (--stats)
+    float side_last_overflow_ = 0.0f;
+    bool side_stuck_ = false;
+    std::unique_ptr<PaneTexture> practice_diff_;  // |A - reference| (update_practice_difference)
+    bool practice_diff_stale_ = true;
+    int practice_diff_scale_ = 1;
+    unsigned long long practice_diff_count_ = 0;
     Rect shown_a_;           // where A was drawn last (ImGui units)
     std::string nonfinite_line_;  // "" or the warning over A (explore/nonfinite_view.h)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release

@@ -1,5 +1,6 @@
 #include "explore_ui/imgui_layer.h"
 
+#include "explore_ui/clip_check.h"
 #include "explore_ui/window.h"
 
 #include <imgui.h>
@@ -89,6 +90,7 @@ void ImGuiLayer::new_frame() {
 
 void ImGuiLayer::render() {
     ImGui::Render();
+    report_clipping();  // M3055_CHECK_CLIPPING (clip_check.h)
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

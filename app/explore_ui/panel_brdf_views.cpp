@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <string>
 
@@ -34,7 +35,26 @@ double shade(double v, double top, bool log) {
     return log ? (std::log10(v / top) + 4.0) / 4.0 : v / top;
 }
 
-float side_of_square() { return std::clamp(ImGui::GetContentRegionAvail().x - 60.0f, 120.0f, 360.0f); }
+// The slice and plots' side: the room less the axis labels and the colour bar.
+float side_of_square() { return std::clamp(ImGui::GetContentRegionAvail().x - 135.0f, 120.0f, 360.0f); }
+
+// The colour bar right of the slice: the heat map from 0 (bottom) to the
+// largest value (top), labelled with the values at its ends.
+void colour_bar(ImDrawList* draw, const ImVec2& bottom_left, float height, double top, bool log) {
+    constexpr float kWidth = 12.0f;
+    constexpr int kSteps = 64;
+    for (int k = 0; k < kSteps; ++k) {
+        const float y0 = bottom_left.y - height * float(k + 1) / kSteps, y1 = bottom_left.y - height * float(k) / kSteps;
+        draw->AddRectFilled(ImVec2(bottom_left.x, y0), ImVec2(bottom_left.x + kWidth, y1 + 0.5f),
+                            heat((double(k) + 0.5) / kSteps));
+    }
+    draw->AddRect(ImVec2(bottom_left.x, bottom_left.y - height), ImVec2(bottom_left.x + kWidth, bottom_left.y), kAxis);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", top);
+    draw->AddText(ImVec2(bottom_left.x + kWidth + 3, bottom_left.y - height - 6), kLabel, text);
+    std::snprintf(text, sizeof text, "%.3g", log ? top * 1e-4 : 0.0);
+    draw->AddText(ImVec2(bottom_left.x + kWidth + 3, bottom_left.y - 8), kLabel, text);
+}
 
 void slice_view(const ThetaSlice& slice, bool log) {
     const float size = side_of_square(), left = 44.0f, top_margin = 18.0f, cell = size / float(slice.n);
@@ -60,7 +80,8 @@ void slice_view(const ThetaSlice& slice, bool log) {
     }
     draw->AddText(ImVec2(origin.x + size * 0.5f - 50, origin.y + 20), kLabel, "theta_h (deg)");
     draw->AddText(ImVec2(corner.x, corner.y - 2), kLabel, "theta_d");
-    ImGui::Text("phi_d = 90 deg; %s colour, max f = %.4g (white)", log ? "log10 (4 decades)" : "linear", top);
+    colour_bar(draw, ImVec2(origin.x + size + 8.0f, origin.y), size, top, log);
+    ImGui::TextWrapped("phi_d = 90 deg; %s colour, max f = %.4g (white)", log ? "log10 (4 decades)" : "linear", top);
 }
 
 void albedo_view(const AlbedoCurve& curve) {
@@ -137,14 +158,17 @@ void lobe_view(ExplorerState& state, const Lobe3d& lobe) {
 
 }  // namespace
 
-void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache) {
+void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache, float x, float y, float width, float height) {
     if (!state.show_brdf_views || !views_cache) return;
     const Material* material = selected_material(state);
-    const ImVec2 screen = ImGui::GetIO().DisplaySize;  // top right, as much as fits (1280 x 720 too)
-    const ImVec2 size(std::min(470.0f, screen.x * 0.4f), std::min(540.0f, screen.y - 60.0f));
-    ImGui::SetNextWindowSize(size, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(screen.x - size.x - 20.0f, 40.0f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("BRDF views", &state.show_brdf_views, ImGuiWindowFlags_NoSavedSettings) || !material) {
+    // Docked beside the plots (the strip's room: explore.cpp), opaque, fixed:
+    // never over the display.
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                         ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    if (!ImGui::Begin("BRDF views", &state.show_brdf_views, kDocked) || !material) {
         ImGui::End();
         return;
     }

@@ -5,6 +5,7 @@
 #include "explore_ui/widgets.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -27,7 +28,7 @@ bool header(const ExplorerState& state, const char* label, bool open_at_start) {
     return ImGui::CollapsingHeader(label);
 }
 
-void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, float width,
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -38,7 +39,9 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
     const float line = ImGui::GetTextLineHeightWithSpacing();
     const float error_h = state.error.empty() ? 0.0f : 4.0f * line;
     ImGui::BeginChild("sections", ImVec2(0.0f, -error_h), false);
-    ImGui::PushItemWidth(-110.0f);  // room for the labels on the right
+    // Room for the labels on the right: 110 px, and what the panel grew by
+    // (its width follows its content; the widgets keep theirs).
+    ImGui::PushItemWidth(-(110.0f + info.side_extra));
 
     if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
     if (header(state, "Display", true)) display_section(state, info);
@@ -50,6 +53,10 @@ void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float
     if (header(state, "File", true)) file_section(state);
     state.section_requests.clear();
     ImGui::PopItemWidth();
+    // Text or a label past the region's visible edge (clip_check.h): the
+    // frame loop widens the panel by as much.
+    const ImGuiWindow* sections = ImGui::GetCurrentWindow();
+    info.side_overflow = std::max(0.0f, sections->DC.CursorMaxPos.x - sections->InnerClipRect.Max.x);
     ImGui::EndChild();
 
     if (!state.error.empty()) {
@@ -115,12 +122,14 @@ void stats_column(const ExplorerState& state, const FrameInfo& info) {
 // Three columns sized from the room there is (1280 x 720 included): the polar
 // plot, the scanline profile, the statistics.
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
-                       float width, float height, bool column) {
+                       float width, float height, StripShape shape) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("Plane of incidence", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const ImVec2 room = ImGui::GetContentRegionAvail();
-    if (column) {  // beside the stacked panes (explore/layout.h): the three one under another
+    // Beside the stacked panes or in the free cell beside the third of three
+    // (explore/layout.h): the three one under another, each the column's width.
+    if (shape == StripShape::column) {
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.45f), profile_h = std::max(100.0f, room.y * 0.22f);
         ImGui::BeginGroup();

@@ -39,12 +39,14 @@ void light_combo(ExplorerState& state) {
 double scale_combo(ExplorerState& state, PlaneCurves* curves, const Material& material, const Light& light) {
     int scale = static_cast<int>(state.plot_scale);
     ImGui::SetNextItemWidth(100.0f);
-    if (ImGui::Combo("##scale", &scale, "fixed\0model max\0log\0")) {
+    if (ImGui::Combo("##scale", &scale, "fixed\0model max\0log\0lobe\0")) {
         state.plot_scale = static_cast<RadialScale>(scale);
         state.plot_top = state.plot_scale == RadialScale::log ? 1000.0 : 1.0;
     }
     tooltip("Radial scale: fixed (the outer circle's value below), the model's largest value over "
-            "incidences 0-85 deg, or logarithmic (0.001 at the centre). Kept until changed here.");
+            "incidences 0-85 deg, logarithmic (0.001 at the centre), or lobe (the default: the largest value "
+            "plotted now, rounded up to 1, 2 or 5 x 10^k). Kept until changed here.");
+    if (state.plot_scale == RadialScale::lobe) return 0.0;  // plot_section takes it from the curves
     if (state.plot_scale == RadialScale::model_max) {
         static Material cached_material;
         static Light cached_light;
@@ -88,6 +90,7 @@ void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float 
     // The A/B split: B's curve beside A's (dashed), the same light and scale.
     std::optional<PlaneCurve> b;
     if (state.compare) b = curve_of(state.material_b);
+    const double shown_top = state.plot_scale == RadialScale::lobe ? lobe_top(curve, b ? &*b : nullptr) : top;
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);  // the column's width, not the strip's
     ImGui::Text("object %d (%s%s), %.1f deg to N", state.selected_object, material->shown_name().c_str(),
                 b ? ("; dashed: B " + state.material_b.shown_name()).c_str() : "", incidence);
@@ -98,7 +101,7 @@ void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float 
     // The half-disc plot is twice as wide as it is tall (polar_plot.h): the
     // room left under the text, less the scale's line under it.
     const float room = height - (ImGui::GetCursorScreenPos().y - top_y) - ImGui::GetTextLineHeightWithSpacing() - 4.0f;
-    polar_plot(curve, state.plot_scale, top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
+    polar_plot(curve, state.plot_scale, shown_top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
     tooltip("The red, green and blue value (CPU reference; the GPU for a .brdf model) for every view direction in the plane of the "
             "plotted light L (yellow) and N; dashed grey: the mirror direction R; dashed colours: material B "
             "(A/B split). Translucent objects: the displayed blend over the background colour.");

@@ -30,6 +30,10 @@ struct FrameInfo {
     int free_width = 0;       // pixels available for the display (for the "modern" preset)
     int free_height = 0;
     int scale = 1;            // whole-pixel magnification of the display
+    // The side panel's label column: kLabelRoom plus what the panel grew by
+    // (explore.cpp); out: how far its content reached past its edge this frame.
+    float side_extra = 0.0f;
+    float side_overflow = 0.0f;
     const LevelHistogram* histogram = nullptr;  // of A's display, this frame
     const RowProfile* profile = nullptr;        // A's levels on the last hovered row (none yet: nullptr)
     const RowProfile* profile_b = nullptr;      // B's on the same row in the A/B split (else nullptr)
@@ -38,11 +42,15 @@ struct FrameInfo {
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.
-void draw_side_panel(ExplorerState& state, const FrameInfo& info, float x, float y, float width,
+void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, float width,
                      float height);
 // Bottom strip: the polar plot of the selected material and the frame statistics.
+// Its shape (explore/layout.h): three columns under the display, or the three
+// one under another (beside stacked panes, in the free cell beside the third
+// of three panes, or beside the docked BRDF views).
+enum class StripShape { row, column };
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
-                       float width, float height, bool column = false);
+                       float width, float height, StripShape shape = StripShape::row);
 
 // The side panel's menu bar (File, Edit: undo/redo by name) and the modal
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
@@ -53,7 +61,7 @@ void draw_dialogs(ExplorerState& state);
 void open_brdf_dialog(ExplorerState& state);
 void brdf_material_note(const ExplorerState& state, const Material& material);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
-void draw_brdf_views(ExplorerState& state, BrdfViews* views);
+void draw_brdf_views(ExplorerState& state, BrdfViews* views, float x, float y, float width, float height);
 
 // Sections of the side panel (one file each).
 void display_section(ExplorerState& state, const FrameInfo& info);

@@ -103,6 +103,7 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
     }
     char label[128];
     if (scale == RadialScale::log) std::snprintf(label, sizeof label, "log: centre 0.001, outer %.3g", top);
+    else if (scale == RadialScale::lobe) std::snprintf(label, sizeof label, "lobe: outer %.3g, bold = 1 (white)", top);
     else std::snprintf(label, sizeof label, "outer %.3g, bold = 1 (white)", top);
     if (clipped) std::strncat(label, "; beyond: on it", sizeof label - std::strlen(label) - 1);
     draw->AddText(ImVec2(corner.x, origin.y + 4), clipped ? IM_COL32(255, 170, 60, 255) : IM_COL32(255, 255, 255, 140),

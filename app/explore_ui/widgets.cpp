@@ -154,9 +154,14 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
         changed |= slider_double("##value", &lobe.m, form.value.lo, form.value.hi, value_format.c_str(), true);
         if (ImGui::IsItemHovered() && !form.value_help.empty())
             ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
-        ImGui::SameLine();
-        const bool removed = static_cast<int>(lobes->size()) > min_lobes && ImGui::SmallButton("x");
-        if (static_cast<int>(lobes->size()) > min_lobes) tooltip("Removes this lobe.");
+        // The remove button only where a lobe may go (else "+ lobe" would
+        // join this row, past the panel's edge: issue 20's "+ lob").
+        bool removed = false;
+        if (static_cast<int>(lobes->size()) > min_lobes) {
+            ImGui::SameLine();
+            removed = ImGui::SmallButton("x");
+            tooltip("Removes this lobe.");
+        }
         if (removed) {
             lobes->erase(lobes->begin() + j);
             changed = true;

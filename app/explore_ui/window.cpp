@@ -29,8 +29,13 @@ Window::Window(int width, int height, const char* title) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     // Within the monitor's work area (without task bars), so nothing is off screen.
-    int area_x = 0, area_y = 0, area_w = width, area_h = height;
+    // No size asked: the whole work area.
+    int area_x = 0, area_y = 0, area_w = 0, area_h = 0;
     if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(monitor, &area_x, &area_y, &area_w, &area_h);
+    if (width <= 0 || height <= 0) {
+        width = area_w > 0 ? area_w : 1500;
+        height = area_h > 0 ? area_h : 940;
+    }
     if (area_w > 0 && area_h > 0) {
         width = std::min(width, area_w);
         height = std::min(height, area_h);

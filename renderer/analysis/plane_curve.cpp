@@ -74,6 +74,20 @@ double radial_fraction(double value, RadialScale scale, double top) {
     return std::max(0.0, std::log10(value / kLogFloor) / std::log10(top / kLogFloor));
 }
 
+double nice_ceiling(double value) {
+    if (!(value > 0.0) || !std::isfinite(value)) return 1.0;
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (const double step : {1.0, 2.0, 5.0, 10.0})
+        if (value <= step * decade * (1.0 + 1e-12)) return step * decade;
+    return 10.0 * decade;
+}
+
+double lobe_top(const PlaneCurve& a, const PlaneCurve* b) {
+    double top = a.max_value();
+    if (b) top = std::max(top, b->max_value());
+    return nice_ceiling(top);
+}
+
 double model_max(const Material& material, const Light& light, const dvec3& background) {
     double top = 0.0;
     for (int incidence = 0; incidence < 90; incidence += 5)

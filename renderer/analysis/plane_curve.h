@@ -41,11 +41,18 @@ enum class RadialScale {
     fixed,      // linear, outer circle = `top` (1 = display white by default)
     model_max,  // linear, outer circle = the model's largest value over incidences 0-85 deg
     log,        // log10, from 1e-3 at the centre to `top` at the outer circle
+    lobe,       // linear, outer circle = lobe_top of the curves shown (the default: the lobe fills the plot)
 };
 // A value's radius as a fraction of the outer circle (>= 0; > 1 is outside).
 double radial_fraction(double value, RadialScale scale, double top);
 // The largest value of `material` under `light` for incidences 0, 5, ... 85
 // degrees (model_max's `top`: fixed while the user moves the light).
 double model_max(const Material& material, const Light& light, const dvec3& background);
+// The lobe scale's outer circle: the largest value of the curves shown (A's,
+// and B's when given) rounded up to 1, 2 or 5 times a power of ten, so the
+// circle's label is short and stays put while the value changes a little;
+// 1 when the curves are black.
+double lobe_top(const PlaneCurve& a, const PlaneCurve* b = nullptr);
+double nice_ceiling(double value);
 
 }  // namespace m3055
