@@ -18,30 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Length of the well-formed UTF-8 sequence at s[i] of 2 to 4 bytes whose
-// code point is printable (U+00A0 and up, none of the controls
-// text::escape shows as \uXXXX); 0 otherwise.
-std::size_t printable_utf8(std::string_view s, std::size_t i) {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[i + k]); };
-    const unsigned char c = byte(0);
-    std::size_t length = 0;
-    char32_t cp = 0, min = 0;
-    if ((c & 0xE0) == 0xC0) length = 2, cp = c & 0x1F, min = 0x80;
-    else if ((c & 0xF0) == 0xE0) length = 3, cp = c & 0x0F, min = 0x800;
-    else if ((c & 0xF8) == 0xF0) length = 4, cp = c & 0x07, min = 0x10000;
-    else return 0;
-    if (i + length > s.size()) return 0;
-    for (std::size_t k = 1; k < length; ++k) {
-        if ((byte(k) & 0xC0) != 0x80) return 0;
-        cp = (cp << 6) | (byte(k) & 0x3F);
-    }
-    if (cp < min || (cp >= 0xD800 && cp <= 0xDFFF) || cp > 0x10FFFF) return 0;
-    if (cp < 0xA0 || cp == 0x2028 || cp == 0x2029 || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
-        (cp >= 0x2066 && cp <= 0x2069) || cp == 0xFEFF)
-        return 0;
-    return length;
-}
-
 std::string digest_hex(std::string_view bytes) {
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a
     for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
@@ -232,7 +208,7 @@ std::string output_stem(std::string_view name) {
             ++i;
             continue;
         }
-        if (const std::size_t length = c >= 0x80 ? printable_utf8(name, i) : 0) {
+        if (const std::size_t length = c >= 0x80 ? text::shown_multibyte_length(name, i) : 0) {
             out.append(name.substr(i, length));
             i += length;
             continue;

@@ -1,6 +1,7 @@
 // The A/B compare's material B (explore/operations.h), without a window: A
 // and B are edited independently, the split keeps B, only "B = copy of A"
 // copies, and B's edits are undo steps of their own.
+#include "explore_started.h"
 #include "explore/files.h"
 #include "explore/operations.h"
 #include "explore/undo.h"
@@ -14,12 +15,7 @@
 namespace m3055::explore {
 namespace {
 
-ExplorerState started() {
-    ExplorerState state;
-    set_scene(state, default_scene(), "spec example");
-    start_history(state);
-    return state;
-}
+using test::started;
 
 TEST(ExploreCompare, EditingADoesNotChangeB) {
     ExplorerState state = started();

@@ -1,6 +1,7 @@
 // The explorer's files (explore/files.h), without a window: a saved scene
 // loads back equal, a bad file keeps the current scene and says why, a load
 // is one undo step, and screenshots never overwrite.
+#include "explore_started.h"
 #include "explore/files.h"
 #include "test_paths.h"
 #include "explore/operations.h"
@@ -20,12 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ExplorerState started() {
-    ExplorerState state;
-    set_scene(state, default_scene(), "spec example");
-    start_history(state);
-    return state;
-}
+using test::started;
 
 // A folder of its own under the test's temporary directory, empty.
 fs::path fresh_folder(const std::string& name) {

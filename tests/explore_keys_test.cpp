@@ -3,6 +3,7 @@
 // (undoably), "unsaved" is whether the scene differs from its file, Save As
 // never proposes the file of a replaced scene, and no shortcut steals a key
 // from a text field.
+#include "explore_started.h"
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
@@ -18,12 +19,7 @@
 namespace m3055::explore {
 namespace {
 
-ExplorerState started() {
-    ExplorerState state;
-    set_scene(state, default_scene(), "spec example");
-    start_history(state);
-    return state;
-}
+using test::started;
 
 KeyPress key(const std::string& name) {
     const std::optional<KeyPress> press = parse_key_name(name);

@@ -1,6 +1,7 @@
 // The explorer's undo/redo and its step names, without a window
 // (explore/undo.h, explore/operations.h): what the Edit menu shows is what the
 // user did, and undoing back to the saved scene leaves nothing unsaved.
+#include "explore_started.h"
 #include "explore/files.h"
 #include "explore/operations.h"
 #include "explore/undo.h"
@@ -20,12 +21,7 @@ namespace m3055::explore {
 namespace {
 
 // The explorer as `m3055 explore` starts it: the spec example, no history.
-ExplorerState started() {
-    ExplorerState state;
-    set_scene(state, default_scene(), "spec example");
-    start_history(state);
-    return state;
-}
+using test::started;
 
 // The selected object's material with one number changed, as its slider does.
 void set_number(ExplorerState& state, const std::string& name, double value) {

@@ -147,6 +147,12 @@ bool is_plain_name(std::string_view s) {
 
 }  // namespace
 
+std::size_t shown_multibyte_length(std::string_view bytes, std::size_t i) {
+    char32_t cp = 0;
+    const std::size_t length = decode(bytes, i, cp);
+    return length >= 2 && !must_escape(cp) ? length : 0;
+}
+
 bool is_valid_utf8(std::string_view bytes) {
     for (std::size_t i = 0; i < bytes.size();) {
         char32_t cp = 0;

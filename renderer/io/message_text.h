@@ -25,6 +25,11 @@ inline constexpr const char* kEllipsis = "\xE2\x80\xA6";
 // True when `bytes` is well-formed UTF-8 (no overlong forms, no surrogates).
 bool is_valid_utf8(std::string_view bytes);
 
+// Length (2 to 4) of the well-formed UTF-8 sequence at bytes[i] when `escape`
+// shows that character as it is; 0 for ASCII, invalid bytes and the code
+// points it escapes.
+std::size_t shown_multibyte_length(std::string_view bytes, std::size_t i);
+
 // `bytes` with everything a terminal or a log could misread escaped: invalid
 // UTF-8 bytes as \xHH; \n \r \t; other C0 and C1 controls, DEL, the line and
 // paragraph separators, the bidirectional controls and U+FEFF as \uXXXX.
