@@ -546,7 +546,8 @@ TEST_F(Explorer, AssignmentShowsTheScoreAndReasonsGradeGives) {
 // scene (never the reference: that would score full marks untouched).
 // A first practice names the file to submit before it exists: the start
 // scene, written there by Ctrl+S. A .brdf material scores 0 with grade's
-// reason unless --allow-brdf, as `m3055 grade` does.
+// reason unless --allow-brdf and the scene is a folder submission's
+// scene.json, as `m3055 grade` has them.
 TEST_F(Explorer, AssignmentNewSceneFileAndBrdfPermissionAsGradeHasThem) {
     TempDir dir;
     const std::string assignment = test::source_path("assignments/three-point/assignment.json");
@@ -560,21 +561,35 @@ TEST_F(Explorer, AssignmentNewSceneFileAndBrdfPermissionAsGradeHasThem) {
     nlohmann::json scene = nlohmann::json::parse(test::read_text(dir.file("mine.json")));
     scene["objects"][0]["material"] = {{"model", "brdf"}, {"file", "lambert.brdf"}};
     test::write_text(dir.file("brdf.json"), scene.dump());
+    // The same scene as a folder submission (NAME/scene.json beside its .brdf).
+    std::filesystem::create_directory(dir.file("pat"));
+    std::filesystem::copy_file(dir.file("lambert.brdf"), dir.file("pat/lambert.brdf"));
+    test::write_text(dir.file("pat/scene.json"), scene.dump());
     test::write_text(dir.file("grade.txt"), "print_grade\n");
-    for (const bool allow : {false, true}) {
-        std::vector<std::string> args = {"--assignment", assignment, "brdf.json", "--script", dir.file("grade.txt"),
+    struct Try {
+        const char* scene;
+        bool allow;
+        const char* expected;  // in the first reason, or in the output when graded
+    };
+    for (const Try& t : {Try{"brdf.json", false, "objects[0].material.file: a .brdf file is code"},
+                         Try{"brdf.json", true, "a submission with a .brdf material is a folder NAME/"},
+                         Try{"pat/scene.json", true, "objects[0] is lambert (.brdf), not metal"}}) {
+        std::vector<std::string> args = {"--assignment", assignment, t.scene, "--script", dir.file("grade.txt"),
                                          "--exit-after-script"};
-        if (allow) args.push_back("--allow-brdf");
+        if (t.allow) args.push_back("--allow-brdf");
         const ExplorerRun run = run_explorer(dir.path(), args);
         ASSERT_EQ(run.exit_code, 0) << run.err;
         const std::vector<ShownGrade> shown = shown_grades(run.out);
         ASSERT_EQ(shown.size(), 1u) << run.out;
-        const std::string refusal = "objects[0].material.file: a .brdf file is code";
-        const bool refused = !shown[0].reasons.empty() && shown[0].reasons[0].find(refusal) != std::string::npos;
-        EXPECT_EQ(refused, !allow) << run.out;
-        if (!allow) EXPECT_EQ(shown[0].score, 0.0);
-        // Graded: the rules see the file's model, named as people read it.
-        if (allow) EXPECT_NE(run.out.find("objects[0] is lambert (.brdf), not metal"), std::string::npos) << run.out;
+        const bool graded = std::string(t.scene) == "pat/scene.json";
+        if (graded) {
+            // Graded: the rules see the file's model, named as people read it.
+            EXPECT_NE(run.out.find(t.expected), std::string::npos) << run.out;
+        } else {
+            ASSERT_FALSE(shown[0].reasons.empty()) << run.out;
+            EXPECT_NE(shown[0].reasons[0].find(t.expected), std::string::npos) << run.out;
+            EXPECT_EQ(shown[0].score, 0.0) << t.scene;
+        }
     }
 }
 
