@@ -39,7 +39,7 @@ std::string score_text(double value) {
 }
 
 constexpr const char* kStyle = R"(<style>
-body{font-family:sans-serif;margin:1.5em;color:#111}
+body{font-family:sans-serif;margin:1em;color:#111}
 table{border-collapse:collapse;width:100%}
 th,td{border:1px solid #999;padding:4px 6px;vertical-align:top;text-align:left}
 th{background:#eee;cursor:pointer}
@@ -52,7 +52,7 @@ tr.hidden{display:none}
 #grades img{width:112px}#grades{font-size:92%}#grades td,#grades th{padding:3px 4px}
 .swatch{display:inline-block;width:0.8em;height:0.8em;border:1px solid #666;vertical-align:middle;margin:0 1px 0 4px}
 #grades th,td.check{font-size:85%}#grades th{overflow-wrap:normal;word-break:normal}#grades th:first-child{min-width:6em}
-#grades td.reasons{min-width:12em}li.note{max-height:3.8em;overflow-y:auto}
+#grades td.reasons{min-width:11em}li.note{max-height:3.8em;overflow-y:auto}
 img{width:256px;image-rendering:pixelated;display:block}
 .pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
@@ -383,11 +383,16 @@ std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
     page += "</tr></tbody></table>\n<h3>Checks</h3>\n<ul id=\"checks\">\n";
     if (!s["broken"].get<std::string>().empty())
         page += "<li class=\"fail\">" + escape_html(s["broken"].get<std::string>()) + "</li>\n";
-    for (const json& c : s["checks"])
+    for (const json& c : s["checks"]) {
+        // A reason starts with its check's name ("image: 86.89 % ..."): shown once.
+        const std::string label = c["label"].get<std::string>();
+        std::string reason = c["reason"].get<std::string>();
+        if (reason.rfind(label + ": ", 0) == 0) reason.erase(0, label.size() + 2);
         page += std::string("<li class=\"") + (c["ok"].get<bool>() ? "pass" : "fail") + "\">" +
-                (c["ok"].get<bool>() ? "&#10004; " : "&#10008; ") + escape_html(c["label"].get<std::string>()) + ": " +
+                (c["ok"].get<bool>() ? "&#10004; " : "&#10008; ") + escape_html(label) + ": " +
                 score_text(c["earned"].get<double>()) + " of " + score_text(c["points"].get<double>()) + " &mdash; " +
-                escape_html(c["reason"].get<std::string>()) + "</li>\n";
+                escape_html(reason) + "</li>\n";
+    }
     if (!s["screenshot"].get<std::string>().empty())
         page += "<li>" + escape_html(s["screenshot"].get<std::string>()) + "</li>\n";
     return page + "</ul>\n" + kViewer + "</body></html>\n";

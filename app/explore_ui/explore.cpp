@@ -267,15 +267,19 @@ private:
 
     // A specialized program waiting: after kIdleBeforeCompile s with no
     // input, between frames (explore/display_renderers.h).
+    // Then one frame, so that "compiling..." goes without waiting for input
+    // (only when a program was built: a failing compile must not spin).
     void compile_when_idle() {
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
+        const std::size_t before = deferred_programs();
         try {
             render_specialized_when_idle(state_, *renderer_a_, *renderer_b_);
             gl_.Finish();
         } catch (const std::exception& e) {
             state_.error = e.what();
         }
+        if (deferred_programs() < before) window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
     }
 
     // The edit has settled (kSettleSeconds without a change, no button held):
