@@ -146,6 +146,11 @@ Assignment assignment_from_json(const std::string& text, const std::string& path
     const std::string source = text::quote_name(path);
     const json doc = scene_json::parse_document(text, source);
     const Fields top(doc, source, "");
+    // A scene given where the assignment goes (an easy slip with grade --check):
+    // say so, rather than that its first key is not a field here.
+    if (!top.has("reference") && (top.has("objects") || top.has("lights")))
+        top.fail(top.has("objects") ? "objects" : "lights",
+                 "this is a scene, not an assignment (an assignment names its \"reference\" scene: docs/grading.md)");
     top.only({"title", "reference", "start", "image", "rules", "pass", "time_budget"});
     Assignment a;
     a.path = path;

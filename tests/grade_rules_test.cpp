@@ -160,6 +160,9 @@ TEST(GradeAssignment, ErrorsNameTheField) {
     EXPECT_EQ(error(R"({"reference": "r.json", "image": {"points": 10, "fail_levels": -1}})"),
               "a.json: image.fail_levels: must be in [0, 255], got -1");
     EXPECT_EQ(error(R"({"reference": "r.json", "extra": 1})"), "a.json: extra: is not a field here");
+    EXPECT_EQ(error(R"({"background": [0, 0, 0], "objects": [], "lights": []})"),
+              "a.json: objects: this is a scene, not an assignment (an assignment names its \"reference\" scene: "
+              "docs/grading.md)");
     EXPECT_EQ(error(R"({"reference": "r.json", "image": {"points": 10}, "pass": 11})"),
               "a.json: pass: must be in [0, 10], got 11");
 }
