@@ -67,7 +67,7 @@ const char* to_string(Verdict verdict) {
 }
 
 LevelImage levels_from_png(const Rgb8Image& png, int bits) {
-    LevelImage image{png.width, png.height, bits, {}, {}};
+    LevelImage image{png.width, png.height, bits, {}, {}, {}};
     image.levels.resize(png.pixels.size());
     // round(v * top / 255) in 16-bit adds and shifts, which the compiler
     // vectorizes (this runs for every byte of every submission):
@@ -96,7 +96,7 @@ Rgb8Image display_of(const LevelImage& levels) {
 }
 
 LevelImage levels_from_pfm(const RgbFloatImage& pfm, int bits) {
-    LevelImage image{pfm.width, pfm.height, bits, {}, flipped_rows(pfm)};
+    LevelImage image{pfm.width, pfm.height, bits, {}, flipped_rows(pfm), {}};
     image.levels.resize(image.linear.size());
     for (std::size_t i = 0; i < image.linear.size(); ++i)
         image.levels[i] = std::uint8_t(quantize_level(double(image.linear[i]), bits));
