@@ -2,6 +2,7 @@
 #include "explore_ui/panels.h"
 
 #include "explore_ui/light_widgets.h"
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 #include "io/message_text.h"
 
@@ -21,7 +22,7 @@ const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec
 // The scene format's light "name": what is typed is kept to what the format allows (state.h).
 bool name_field(Light& light) {
     std::string name = light.name;
-    if (!ImGui::InputText("name", &name)) return false;
+    if (!ImGui::InputText(field("name").c_str(), &name)) return false;
     light.name = valid_light_name(name);
     return true;
 }
@@ -31,12 +32,14 @@ bool light_editor(Light& light, int index, const Material* material) {
     bool changed = name_field(light);
     tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
             "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
-    changed |= ImGui::Checkbox("enabled", &light.enabled);
+    changed |= checkbox("enabled", &light.enabled);
     tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
-    ImGui::SameLine();
     int type = static_cast<int>(light.type);
-    ImGui::SetNextItemWidth(120);
-    const bool type_changed = ImGui::Combo("type", &type, "directional\0point\0spot\0");
+    if (!narrow_panel()) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(120);
+    }
+    const bool type_changed = ImGui::Combo(field("type").c_str(), &type, "directional\0point\0spot\0");
     tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation)");
     if (type_changed) {
         light.type = static_cast<LightType>(type);
@@ -45,7 +48,7 @@ bool light_editor(Light& light, int index, const Material* material) {
     static double azimuth_memory[kMaxLights] = {};
     if (light.type == LightType::directional) {
         changed |= light_sphere_widget("##sphere", &light.direction, 38.0f);
-        ImGui::SameLine();
+        if (!narrow_panel()) ImGui::SameLine();  // narrow: the sliders under the sphere, whole width
         ImGui::BeginGroup();
         ImGui::PushItemWidth(150);
         changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
@@ -55,7 +58,7 @@ bool light_editor(Light& light, int index, const Material* material) {
         ImGui::EndGroup();
     } else {
         double p[3] = {light.position.x, light.position.y, light.position.z};
-        if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+        if (ImGui::DragScalarN(field("position").c_str(), ImGuiDataType_Double, p, 3, 0.05f)) {
             light.position = {p[0], p[1], p[2]};
             changed = true;
         }
@@ -80,7 +83,7 @@ bool light_editor(Light& light, int index, const Material* material) {
         // editing the RGB makes it an RGB light (clamped to [0, 1], as the format requires).
         const std::string from = light.temperature_k > 0.0 ? text::format_number(light.temperature_k) + " K black body"
                                                             : "CIE illuminant " + light.illuminant;
-        ImGui::Text("%s, RGB %.3f %.3f %.3f", from.c_str(), light.color.r, light.color.g, light.color.b);
+        ImGui::TextWrapped("%s, RGB %.3f %.3f %.3f", from.c_str(), light.color.r, light.color.g, light.color.b);
         tooltip("the light's spectrum integrated against the CIE 1931 observer, as linear sRGB at luminance 1 "
                 "(spec section 7.1); a channel may exceed 1");
         dvec3 rgb = glm::clamp(light.color, dvec3(0.0), dvec3(1.0));
@@ -100,7 +103,7 @@ bool light_editor(Light& light, int index, const Material* material) {
     if (material && material->model().light_lobes) {
         const LobeKind kind = *material->model().light_lobes;
         bool own = !light.lobes.empty() && light.lobe_kind == kind;
-        if (ImGui::Checkbox("own lobes (replace the material's for this light)", &own)) {
+        if (checkbox("own lobes (replace the material's for this light)", &own)) {
             light.lobes = own ? material->lobes().to_vector() : std::vector<Lobe>{};
             light.lobe_kind = kind;
             changed = true;
@@ -119,8 +122,11 @@ void lights_section(ExplorerState& state) {
     ImGui::TextUnformatted("presets:");
     int column = 0;
     for (LightPreset preset : kAllLightPresets) {
-        if (column++ % 2) ImGui::SameLine();
-        if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
+        // Two columns; one on a narrow panel (the labels are longer than half of it).
+        const bool two = !narrow_panel();
+        if (two && column++ % 2) ImGui::SameLine();
+        const float width = ImGui::GetContentRegionAvail().x * (two && column % 2 ? 0.49f : 1.0f);
+        if (ImGui::Button(preset_label(preset), ImVec2(width, 0))) {
             apply_light_preset(state, preset);
         }
         tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
@@ -129,9 +135,12 @@ void lights_section(ExplorerState& state) {
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         ImGui::PushID(i);
         const std::string title = "light " + std::to_string(i) +
-                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") + " (" +
-                                  to_string(lights[i].type) +
-                                  (lights[i].enabled ? "" : ", off") + ")###light";
+                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") +
+                                  // the type on a narrow panel only in the editor (it would run under "remove")
+                                  (narrow_panel() ? (lights[i].enabled ? "" : " (off)")
+                                                  : " (" + std::string(to_string(lights[i].type)) +
+                                                        (lights[i].enabled ? "" : ", off") + ")") +
+                                  "###light";
         ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
         if (ImGui::IsItemClicked()) state.selected_light = i;
@@ -156,7 +165,7 @@ void lights_section(ExplorerState& state) {
     if (ImGui::Button("+ add light")) add_light(state);
     tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
     ImGui::EndDisabled();
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize("8 of 8").x);
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
     if (!lights.empty()) light_plot(state);
 }
