@@ -99,7 +99,12 @@ void edit_light(ExplorerState& state, int index, const Light& edited) {
 }
 
 void apply_light_preset(ExplorerState& state, LightPreset preset) {
-    state.scene.lights = light_preset(preset);
+    try {
+        state.scene.lights = light_preset(preset);
+    } catch (const std::runtime_error& e) {  // the studio preset without colord-data
+        state.error = e.what();
+        return;
+    }
     note_edit(state, "light preset");
     state.selected_light = 0;
 }

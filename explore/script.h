@@ -8,7 +8,7 @@
 //   print_models            print the model selector's entries ("model NAME<TAB>LABEL")
 //   select_object I | select_light I
 //   rescale_eq14            the Material panel's eq. 14 button
-//   light_preset NAME       single_key, three_point_white/_warm/_cool, paper_main_secondary
+//   light_preset NAME       single_key, three_point_white/_warm/_cool/_studio, paper_main_secondary
 //   light_angles I AZ EL    light I's azimuth/elevation sliders (degrees)
 //   light_drag I X Y        a drag on light I's sphere widget, disc coordinates (y up)
 //   light_name I TEXT       light I's name field (TEXT may be empty: no name)

@@ -602,6 +602,15 @@ TEST_F(ExplorerInput, NoTextIsClippedAt1280x720Or1920x1080) {
         EXPECT_EQ(clipped_lines(w, h, ""), "") << w << " x " << h;
         EXPECT_EQ(clipped_lines(w, h, "compare on\n"), "") << w << " x " << h << ", A/B split";
     }
+    // Three panes at 1:1 leave the side panel 244 px at 1280 x 720
+    // (explore/layout.h): labels go above their widgets there
+    // (explore_ui/narrow_panel.h). A, B and |A - B|; practice mode's three.
+    EXPECT_EQ(clipped_lines(1280, 720, "compare on\ncompare_diff on\nlight_preset three_point_warm\n"), "")
+        << "1280 x 720, A, B and |A - B|";
+    EXPECT_EQ(clipped_lines(1280, 720, "light_preset three_point_warm\n",
+                            {"--assignment", test::source_path("assignments/three-point/assignment.json")}),
+              "")
+        << "1280 x 720, practice mode";
     // A 900 px window leaves the panel no room to grow: a light's long name in
     // its header stays cut, and is reported.
     EXPECT_NE(clipped_lines(1280, 720, "light_name 0 " + std::string(80, 'k') + "\n", {"--window-size", "900", "720"})

@@ -3,6 +3,7 @@
 // drop (shown in the middle of the window, where the user is looking).
 #include "explore_ui/panels.h"
 
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 
 #include <imgui.h>
@@ -119,9 +120,12 @@ void draw_menu_bar(ExplorerState& state) {
         if (ImGui::MenuItem(redo_text.c_str(), "Ctrl+Shift+Z / Ctrl+Y", false, h.can_redo())) redo(state);
         ImGui::EndMenu();
     }
-    if (unsaved(state)) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "  unsaved edits");
-    // What a frame is waiting for (explore/busy.h), where the eye goes after an edit.
-    if (!state.busy.empty()) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1, 1), "  %s", state.busy.c_str());
+    // What a frame is waiting for (explore/busy.h), where the eye goes after an
+    // edit. A narrow panel has room for one of the two: the hint, while it
+    // lasts (a fraction of a second), then the unsaved mark again.
+    const bool busy = !state.busy.empty();
+    if (unsaved(state) && !(busy && narrow_panel())) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "  unsaved edits");
+    if (busy) ImGui::TextColored(ImVec4(0.5f, 0.8f, 1, 1), "  %s", state.busy.c_str());
     ImGui::EndMenuBar();
 }
 

@@ -88,7 +88,7 @@ void light_plot(ExplorerState& state) {
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
     const KeyFillRatio ratio = key_to_fill_ratio(state.scene);
-    ImGui::Text("key-to-fill at the subject: %s", ratio.text().c_str());
+    ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
     tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
             "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
 }

@@ -3,6 +3,7 @@
 // (practice.h computes them with grading::grade_one), and how to submit it.
 #include "explore_ui/panels.h"
 
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 
 #include <imgui.h>
@@ -24,10 +25,15 @@ void score_line(const PracticeStatus& p) {
         return;
     }
     const ImVec4 colour = p.pending ? kStale : p.passed ? kGood : kBad;
-    ImGui::TextColored(colour, "Score %g / %g  %s (pass at %g)", p.score, p.max, p.passed ? "PASS" : "FAIL",
-                       p.pass_score);
-    if (p.pending) ImGui::TextColored(kStale, "edited: regraded when the edit settles");
-    else ImGui::TextDisabled("graded in %.0f ms (render, compare, rules)", p.grade_ms);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);  // wrapped: the panel may be narrow (narrow_panel.h)
+    ImGui::TextWrapped("Score %g / %g  %s (pass at %g)", p.score, p.max, p.passed ? "PASS" : "FAIL", p.pass_score);
+    ImGui::PopStyleColor();
+    // One line on the narrow panel too (three panes at 1280 x 720), so the
+    // two lines stay two: the longer wording goes in the tooltip there.
+    const bool narrow = narrow_panel();
+    if (p.pending) ImGui::TextColored(kStale, narrow ? "edited: regrading soon" : "edited: regraded when the edit settles");
+    else ImGui::TextDisabled(narrow ? "graded in %.0f ms" : "graded in %.0f ms (render, compare, rules)", p.grade_ms);
+    if (narrow) tooltip(p.pending ? "regraded when the edit settles" : "the time to render, compare and apply the rules");
 }
 
 // Every check with its points; a failed one in red with the reason `grade`
@@ -54,7 +60,11 @@ void check_rows(const PracticeStatus& p) {
     }
     // A reason that is no check's (the time budget) stands alone.
     if (p.checks.empty())
-        for (const std::string& reason : p.reasons) ImGui::TextColored(kBad, "%s", reason.c_str());
+        for (const std::string& reason : p.reasons) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kBad);
+            ImGui::TextWrapped("%s", reason.c_str());
+            ImGui::PopStyleColor();
+        }
     ImGui::EndChild();
 }
 
@@ -63,7 +73,9 @@ void check_rows(const PracticeStatus& p) {
 void assignment_section(ExplorerState& state) {
     const PracticeStatus& p = state.practice;
     ImGui::TextWrapped("%s", p.title.c_str());
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("beside your scene: the reference (%s)", p.reference.c_str());
+    ImGui::PopTextWrapPos();
     score_line(p);
     check_rows(p);
     hint("The score and reasons m3055 grade gives this scene (the same code). Save (Ctrl+S, File > Save As) "

@@ -1,6 +1,8 @@
 // The two fixed windows and the order of the side panel's sections.
 #include "explore_ui/panels.h"
 
+#include "explore/layout.h"
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/profile_plot.h"
 #include "explore_ui/widgets.h"
 
@@ -42,6 +44,8 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
     // Room for the labels on the right: 110 px, and what the panel grew by
     // (its width follows its content; the widgets keep theirs).
     ImGui::PushItemWidth(-(110.0f + info.side_extra));
+    // Narrower than usual (three panes at 1280 x 720): labels above their widgets.
+    set_narrow_panel(width < kSideWidth - 0.5f);
 
     if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
     if (header(state, "Display", true)) display_section(state, info);

@@ -2,13 +2,17 @@
 #include "explore_ui/panels.h"
 
 #include "explore_ui/light_widgets.h"
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 #include "io/message_text.h"
+#include "scene/light_colour.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 #include <glm/common.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace m3055::explore {
@@ -21,22 +25,89 @@ const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec
 // The scene format's light "name": what is typed is kept to what the format allows (state.h).
 bool name_field(Light& light) {
     std::string name = light.name;
-    if (!ImGui::InputText("name", &name)) return false;
+    if (!ImGui::InputText(field("name").c_str(), &name)) return false;
     light.name = valid_light_name(name);
     return true;
 }
 
+// The light's colour (docs/spec.md#71-spectral-lights): RGB, a black body on
+// the Planckian locus (a kelvin slider) or a CIE illuminant, with a swatch of
+// the spectrum's colour (its RGB at luminance 1, scaled so the largest
+// channel is 1: a channel may exceed 1). `error`: why a spectrum could not be
+// made (colord-data missing).
+bool colour_editor(Light& light, std::string& error) {
+    const LightColourSource source = colour_source(light);
+    int from = static_cast<int>(source);
+    bool changed = false;
+    if (ImGui::Combo(field("colour from").c_str(), &from, "RGB\0black body (kelvin)\0CIE illuminant\0") &&
+        from != static_cast<int>(source)) {
+        const auto chosen = static_cast<LightColourSource>(from);
+        if (chosen == LightColourSource::rgb) {
+            set_rgb_colour(light, light.color / std::max({light.color.r, light.color.g, light.color.b, 1.0}));
+            changed = true;
+        } else if (chosen == LightColourSource::temperature) {
+            changed = set_temperature(light, 6500.0, &error);
+        } else {
+            changed = set_illuminant(light, "D65", &error);
+        }
+    }
+    tooltip("RGB: c_l itself. Black body: Planck's law at a temperature; CIE illuminant: a standard spectrum "
+            "(A tungsten, D65 daylight, F fluorescent ...). A spectrum's colour is its integral against the CIE "
+            "1931 observer, as linear sRGB at luminance 1 (spec section 7.1).");
+    if (source == LightColourSource::rgb) {
+        dvec3 rgb = light.color;
+        if (color_edit("colour c", &rgb)) {
+            set_rgb_colour(light, rgb);
+            changed = true;
+        }
+        tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
+        return changed;
+    }
+    if (source == LightColourSource::temperature) {
+        double kelvin = light.temperature_k;
+        if (slider_double("temperature", &kelvin, kMinLightKelvin, kMaxLightKelvin, "%.0f K", true,
+                          std::log10(kMaxLightKelvin / kMinLightKelvin)) &&
+            set_temperature(light, std::round(kelvin), &error))
+            changed = true;
+        tooltip("The black body's temperature, 1000 to 40 000 K (logarithmic; Ctrl+click types): candle ~1900, "
+                "tungsten 3200, daylight 5600-6500, blue sky 10 000+");
+    } else {
+        const auto& names = light_illuminant_names();
+        if (ImGui::BeginCombo(field("illuminant").c_str(), light.illuminant.c_str())) {
+            for (const std::string& name : names)
+                if (ImGui::Selectable(name.c_str(), name == light.illuminant) && name != light.illuminant)
+                    changed |= set_illuminant(light, name, &error);
+            ImGui::EndCombo();
+        }
+        tooltip("A CIE standard illuminant as colord-data ships it: A (tungsten, 2856 K), D50/D65 (daylight), "
+                "F1-F12 (fluorescent) ...");
+    }
+    const double top = std::max({light.color.r, light.color.g, light.color.b});
+    const ImVec4 swatch(float(light.color.r / top), float(light.color.g / top), float(light.color.b / top), 1.0f);
+    ImGui::ColorButton("##swatch", swatch, ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoAlpha,
+                       ImVec2(ImGui::GetFrameHeight() * 2.0f, ImGui::GetFrameHeight()));
+    ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::Text("RGB %.3f %.3f %.3f", light.color.r, light.color.g, light.color.b);
+    ImGui::PopTextWrapPos();
+    tooltip("the spectrum's colour as linear sRGB at luminance Y = 1 (a channel may exceed 1; the swatch is "
+            "scaled so the largest is 1)");
+    return changed;
+}
+
 // Edits `light` (a copy of light `index`; `material` the selected object's, for the metals' own lobes).
-bool light_editor(Light& light, int index, const Material* material) {
+bool light_editor(Light& light, int index, const Material* material, std::string& error) {
     bool changed = name_field(light);
     tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
             "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
-    changed |= ImGui::Checkbox("enabled", &light.enabled);
+    changed |= checkbox("enabled", &light.enabled);
     tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
-    ImGui::SameLine();
     int type = static_cast<int>(light.type);
-    ImGui::SetNextItemWidth(120);
-    const bool type_changed = ImGui::Combo("type", &type, "directional\0point\0spot\0");
+    if (!narrow_panel()) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(120);
+    }
+    const bool type_changed = ImGui::Combo(field("type").c_str(), &type, "directional\0point\0spot\0");
     tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation)");
     if (type_changed) {
         light.type = static_cast<LightType>(type);
@@ -45,7 +116,7 @@ bool light_editor(Light& light, int index, const Material* material) {
     static double azimuth_memory[kMaxLights] = {};
     if (light.type == LightType::directional) {
         changed |= light_sphere_widget("##sphere", &light.direction, 38.0f);
-        ImGui::SameLine();
+        if (!narrow_panel()) ImGui::SameLine();  // narrow: the sliders under the sphere, whole width
         ImGui::BeginGroup();
         ImGui::PushItemWidth(150);
         changed |= light_angle_sliders(&light.direction, &azimuth_memory[index % kMaxLights]);
@@ -55,7 +126,7 @@ bool light_editor(Light& light, int index, const Material* material) {
         ImGui::EndGroup();
     } else {
         double p[3] = {light.position.x, light.position.y, light.position.z};
-        if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+        if (ImGui::DragScalarN(field("position").c_str(), ImGuiDataType_Double, p, 3, 0.05f)) {
             light.position = {p[0], p[1], p[2]};
             changed = true;
         }
@@ -75,32 +146,13 @@ bool light_editor(Light& light, int index, const Material* material) {
             tooltip("the spot's falloff (cos of the angle to its axis)^exponent, in [0, 1000] (spec section 4; logarithmic)");
         }
     }
-    if (light.temperature_k > 0.0 || !light.illuminant.empty()) {
-        // A spectral light (spec section 7.1): its colour comes from its spectrum;
-        // editing the RGB makes it an RGB light (clamped to [0, 1], as the format requires).
-        const std::string from = light.temperature_k > 0.0 ? text::format_number(light.temperature_k) + " K black body"
-                                                            : "CIE illuminant " + light.illuminant;
-        ImGui::Text("%s, RGB %.3f %.3f %.3f", from.c_str(), light.color.r, light.color.g, light.color.b);
-        tooltip("the light's spectrum integrated against the CIE 1931 observer, as linear sRGB at luminance 1 "
-                "(spec section 7.1); a channel may exceed 1");
-        dvec3 rgb = glm::clamp(light.color, dvec3(0.0), dvec3(1.0));
-        if (color_edit("colour c", &rgb)) {
-            light.color = rgb;
-            light.temperature_k = 0.0;
-            light.illuminant.clear();
-            changed = true;
-        }
-        tooltip("c_l: editing it replaces the spectrum by this RGB colour (spec section 7.1)");
-    } else {
-        changed |= color_edit("colour c", &light.color);
-        tooltip("c_l, the light's colour: RGB, each in [0, 1] (spec section 3 notation)");
-    }
+    changed |= colour_editor(light, error);
 
     // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
     if (material && material->model().light_lobes) {
         const LobeKind kind = *material->model().light_lobes;
         bool own = !light.lobes.empty() && light.lobe_kind == kind;
-        if (ImGui::Checkbox("own lobes (replace the material's for this light)", &own)) {
+        if (checkbox("own lobes (replace the material's for this light)", &own)) {
             light.lobes = own ? material->lobes().to_vector() : std::vector<Lobe>{};
             light.lobe_kind = kind;
             changed = true;
@@ -119,8 +171,11 @@ void lights_section(ExplorerState& state) {
     ImGui::TextUnformatted("presets:");
     int column = 0;
     for (LightPreset preset : kAllLightPresets) {
-        if (column++ % 2) ImGui::SameLine();
-        if (ImGui::Button(preset_label(preset), ImVec2(ImGui::GetContentRegionAvail().x * (column % 2 ? 0.49f : 1.0f), 0))) {
+        // Two columns; one on a narrow panel (the labels are longer than half of it).
+        const bool two = !narrow_panel();
+        if (two && column++ % 2) ImGui::SameLine();
+        const float width = ImGui::GetContentRegionAvail().x * (two && column % 2 ? 0.49f : 1.0f);
+        if (ImGui::Button(preset_label(preset), ImVec2(width, 0))) {
             apply_light_preset(state, preset);
         }
         tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
@@ -129,9 +184,12 @@ void lights_section(ExplorerState& state) {
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         ImGui::PushID(i);
         const std::string title = "light " + std::to_string(i) +
-                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") + " (" +
-                                  to_string(lights[i].type) +
-                                  (lights[i].enabled ? "" : ", off") + ")###light";
+                                  (lights[i].name.empty() ? "" : " \"" + lights[i].name + "\"") +
+                                  // the type on a narrow panel only in the editor (it would run under "remove")
+                                  (narrow_panel() ? (lights[i].enabled ? "" : " (off)")
+                                                  : " (" + std::string(to_string(lights[i].type)) +
+                                                        (lights[i].enabled ? "" : ", off") + ")") +
+                                  "###light";
         ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
         if (ImGui::IsItemClicked()) state.selected_light = i;
@@ -140,7 +198,7 @@ void lights_section(ExplorerState& state) {
         tooltip("Removes this light (undoable).");
         if (open) {
             Light edited = lights[std::size_t(i)];
-            if (!removed && light_editor(edited, i, selected_material(state))) {
+            if (!removed && light_editor(edited, i, selected_material(state), state.error)) {
                 edit_light(state, i, edited);
                 state.selected_light = i;
             }
@@ -156,7 +214,7 @@ void lights_section(ExplorerState& state) {
     if (ImGui::Button("+ add light")) add_light(state);
     tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
     ImGui::EndDisabled();
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize("8 of 8").x);
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
     if (!lights.empty()) light_plot(state);
 }

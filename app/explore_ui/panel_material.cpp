@@ -4,6 +4,7 @@
 // The metal family adds the eq. 14 read-out and rescale.
 #include "explore_ui/panels.h"
 
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 #include "models/model_table.h"
 #include "scene/presets.h"
@@ -37,7 +38,7 @@ void show_tooltip(const ParamSpec& param) {
 // lobes start again from the new form's defaults (m and n mean different things).
 bool choice_widget(Material& material, const ParamSpec& param) {
     int index = material.choice(param.name);
-    if (!ImGui::BeginCombo(param.label.c_str(), param.choices[std::size_t(index)].c_str())) {
+    if (!ImGui::BeginCombo(field(param.label).c_str(), param.choices[std::size_t(index)].c_str())) {
         show_tooltip(param);
         return false;
     }
@@ -59,7 +60,7 @@ bool choice_widget(Material& material, const ParamSpec& param) {
 bool direction_widget(Material& material, const ParamSpec& param) {
     const dvec3 v = material.vec3(param.name);
     double a[3] = {v.x, v.y, v.z};
-    if (!ImGui::DragScalarN(param.label.c_str(), ImGuiDataType_Double, a, 3, 0.02f)) return false;
+    if (!ImGui::DragScalarN(field(param.label).c_str(), ImGuiDataType_Double, a, 3, 0.02f)) return false;
     const dvec3 axis(a[0], a[1], a[2]);
     if (glm::length(axis) <= 1e-6) return false;  // the loader wants a non-zero direction, unit
     material.set_vec3(param.name, glm::normalize(axis));
@@ -86,7 +87,7 @@ bool param_widget(Material& material, const ParamSpec& param) {
         case ParamKind::choice: return choice_widget(material, param);
         case ParamKind::flag: {
             bool on = material.flag(param.name);
-            changed = ImGui::Checkbox(param.label.c_str(), &on);
+            changed = checkbox(param.label.c_str(), &on);
             if (changed) material.set_flag(param.name, on);
             break;
         }
@@ -109,8 +110,13 @@ bool eq14_readout(Material& material) {
     const bool beckmann = material.model().param("lobes").form_for(material).key == "m";
     const double peak = highlight_peak(material);
     const bool holds = std::abs(peak - 1.0) < 5e-4;
-    ImGui::Text(beckmann ? "d + D(0) = d + sum w/m^2 = %.4f" : "d + sum w = %.4f", peak);
-    ImGui::SameLine();
+    if (narrow_panel()) {  // the sum on a line, its value and verdict on the next
+        ImGui::TextUnformatted(beckmann ? "d + D(0) = d + sum w/m^2" : "d + sum w");
+        ImGui::Text("= %.4f", peak);
+    } else {
+        ImGui::Text(beckmann ? "d + D(0) = d + sum w/m^2 = %.4f" : "d + sum w = %.4f", peak);
+    }
+    same_line_if_fits(ImGui::CalcTextSize("(eq. 14 wants 1)").x);
     ImGui::TextColored(holds ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.8f, 0.3f, 1),
                        holds ? "(eq. 14 holds)" : "(eq. 14 wants 1)");
     const bool changed = ImGui::Button("Rescale weights to eq. 14") && rescale_to_eq14(material);
@@ -128,7 +134,7 @@ bool eq14_readout(Material& material) {
 // by the compare section's material B.
 bool material_editor(Material& material, std::string& action) {
     bool changed = false;
-    if (ImGui::BeginCombo("model", material.model().label.c_str())) {
+    if (ImGui::BeginCombo(field("model").c_str(), material.model().label.c_str())) {
         for (const ModelSpec* model : all_models()) {
             if (ImGui::Selectable(model->label.c_str(), model == &material.model())) {
                 material = with_model(material, *model);
@@ -156,7 +162,7 @@ bool material_editor(Material& material, std::string& action) {
 void material_section(ExplorerState& state) {
     Material* material = selected_material(state);
     if (!material) return;
-    ImGui::Text("object %d of %zu (choose in Objects)", state.selected_object,
+    ImGui::TextWrapped("object %d of %zu (choose in Objects)", state.selected_object,
                 state.scene.objects.size());
     brdf_material_note(state, *material);
     Material edited = *material;

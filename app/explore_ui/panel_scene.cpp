@@ -2,6 +2,7 @@
 #include "explore_ui/panels.h"
 
 #include "explore/figure_scenes.h"
+#include "explore_ui/narrow_panel.h"
 #include "explore_ui/shape_editor.h"
 #include "explore_ui/widgets.h"
 #include "grading/ab_compare.h"
@@ -20,21 +21,21 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
     Display display = state.scene.display;  // edited here, taken by edit_display
     if (ImGui::Button("M3055 (512 x 320, 5 bits)")) set_display_m3055(state);
     tooltip("The paper's display: 512 x 320 dots, 5 bits (32 levels) per channel.");
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Modern (window, 8 bits)"));
     if (ImGui::Button("Modern (window, 8 bits)")) set_display_modern(state, info.free_width, info.free_height);
     tooltip("A display the size of the free area of the window, 8 bits (256 levels) per channel.");
     int size[2] = {display.width, display.height};
-    if (ImGui::InputInt2("width, height", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    if (ImGui::InputInt2(field("width, height").c_str(), size, ImGuiInputTextFlags_EnterReturnsTrue)) {
         display.width = std::clamp(size[0], 1, kMaxDisplaySize);
         display.height = std::clamp(size[1], 1, kMaxDisplaySize);
         edit_display(state, display);
     }
     tooltip("the display's size in dots, each in [1, 8192] (Enter applies; spec section 2)");
-    if (ImGui::SliderInt("bits", &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) edit_display(state, display);
+    if (ImGui::SliderInt(field("bits").c_str(), &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) edit_display(state, display);
     tooltip("bits per channel, in [1, 8]: the M3055 has 5 (32 levels; spec section 2)");
-    ImGui::SameLine();
+    if (!narrow_panel()) ImGui::SameLine();  // narrow: the slider has the whole row
     ImGui::TextDisabled("%d levels", 1 << display.bits);
-    if (ImGui::Checkbox("ordered dithering (4x4 Bayer)", &display.dither)) edit_display(state, display);
+    if (checkbox("ordered dithering (4x4 Bayer)", &display.dither)) edit_display(state, display);
     tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
     dvec3 background = state.scene.background;
     if (color_edit("background", &background)) set_background(state, background);
@@ -42,12 +43,14 @@ void display_section(ExplorerState& state, const FrameInfo& info) {
 }
 
 void objects_section(ExplorerState& state) {
-    ImGui::TextUnformatted("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
+    ImGui::TextWrapped("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;
         if (label.rfind("fig", 0) == 0) label = "Fig. " + std::to_string(std::stoi(label.substr(3)));
-        if (n++ % 5) ImGui::SameLine();
+        // Five a row; on a narrow panel as many as fit.
+        const bool row_start = n++ % 5 == 0;
+        if (n > 1 && (!row_start || narrow_panel())) same_line_if_fits(button_width(label.c_str()));
         if (ImGui::Button(label.c_str())) load_figure(state, figure.name);
         tooltip("Replaces the scene with " + figure.name + ".json (undoable with Ctrl+Z).");
     }
@@ -76,7 +79,7 @@ void objects_section(ExplorerState& state) {
     }
     ImGui::TextUnformatted("add:");
     for (const char* name : {"sphere", "plane", "cube", "cylinder", "torus"}) {
-        ImGui::SameLine();
+        same_line_if_fits(button_width((std::string("+ ") + name).c_str()));
         if (ImGui::SmallButton((std::string("+ ") + name).c_str())) add_object(state, *parse_shape(name));
         tooltip(std::string("Adds a ") + name + " beside the others" +
                 (std::string(name) == "plane" ? " (a floor under all)." : "."));
@@ -86,7 +89,7 @@ void objects_section(ExplorerState& state) {
 void camera_section(ExplorerState& state) {
     Camera camera = state.scene.camera;  // edited here, taken by edit_camera
     int projection = static_cast<int>(camera.projection);
-    if (ImGui::Combo("projection", &projection, "perspective\0orthographic\0")) {
+    if (ImGui::Combo(field("projection").c_str(), &projection, "perspective\0orthographic\0")) {
         camera.projection = static_cast<Projection>(projection);
         edit_camera(state, camera);
     }
@@ -99,14 +102,14 @@ void camera_section(ExplorerState& state) {
         tooltip("The world-space height the view shows, 0.01 to 100 here (> 0 in the format; logarithmic).");
     }
     double p[3] = {camera.position.x, camera.position.y, camera.position.z};
-    if (ImGui::DragScalarN("position", ImGuiDataType_Double, p, 3, 0.05f)) {
+    if (ImGui::DragScalarN(field("position").c_str(), ImGuiDataType_Double, p, 3, 0.05f)) {
         const dvec3 moved(p[0], p[1], p[2]);
         if (moved != camera.target) camera.position = moved;  // docs/spec.md#7-scene-files: position != target
         edit_camera(state, camera);
     }
     tooltip("The eye: x, y, z in scene units; it must differ from the target (drag on the display orbits it).");
     double t[3] = {camera.target.x, camera.target.y, camera.target.z};
-    if (ImGui::DragScalarN("target", ImGuiDataType_Double, t, 3, 0.05f)) {
+    if (ImGui::DragScalarN(field("target").c_str(), ImGuiDataType_Double, t, 3, 0.05f)) {
         const dvec3 moved(t[0], t[1], t[2]);
         if (moved != camera.position) camera.target = moved;
         edit_camera(state, camera);
@@ -119,22 +122,24 @@ void camera_section(ExplorerState& state) {
 
 void compare_section(ExplorerState& state) {
     bool on = state.compare;
-    if (ImGui::Checkbox("split: A | B side by side", &on)) set_compare(state, on);
+    if (checkbox("split: A | B side by side", &on)) set_compare(state, on);
     tooltip("Off/on: show the scene twice, B with the selected object in material B. Both at the largest "
             "whole magnification that fits; B's curve is dashed in the polar plot.");
     hint("A is the scene as edited above; B is the same scene with the selected object "
          "wearing material B (e.g. metal eq. 12 against metal_blinn eq. 15).");
     ImGui::BeginDisabled(!state.compare);
-    ImGui::Checkbox("difference pane |A - B|", &state.compare_diff);
+    checkbox("difference pane |A - B|", &state.compare_diff);
     tooltip("A third pane: per channel the absolute difference of A's and B's display values (0-255) times "
             "the scale, clamped to 255; its label gives the scale and how many pixels are on another level.");
     bool automatic = state.diff_scale == 0;
-    if (ImGui::Checkbox("auto scale", &automatic)) state.diff_scale = automatic ? 0 : 8;
+    if (checkbox("auto scale", &automatic)) state.diff_scale = automatic ? 0 : 8;
     tooltip("Auto: the largest whole scale that keeps the largest difference within 255 (1 when A = B).");
     if (!automatic) {
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(120.0f);
-        ImGui::SliderInt("scale", &state.diff_scale, 1, grading::kMaxDifferenceScale, "x %d",
+        if (!narrow_panel()) {
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(120.0f);
+        }
+        ImGui::SliderInt(field("scale").c_str(), &state.diff_scale, 1, grading::kMaxDifferenceScale, "x %d",
                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
         tooltip("Whole factor, 1 to 255: at 5 bits one level is 8 PNG values, so x 4 shows it at 32.");
     }
@@ -149,21 +154,27 @@ void compare_section(ExplorerState& state) {
 }
 
 void file_section(ExplorerState& state) {
-    ImGui::Text("scene file: %s", state.scene_file.empty() ? "(none: Ctrl+S asks)" : state.scene_file.c_str());
+    ImGui::TextWrapped("scene file: %s", state.scene_file.empty() ? "(none: Ctrl+S asks)" : state.scene_file.c_str());
     if (ImGui::Button("Save (Ctrl+S)")) save_or_ask(state);
     tooltip("Writes the scene JSON to its own file (asks for one when it has none).");
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Save as..."));
     if (ImGui::Button("Save as...")) request_save_as(state);
     tooltip("Writes the scene JSON to a file you name; it becomes the scene's own file.");
-    ImGui::InputText("screenshot folder", &state.screenshot_dir);
+    ImGui::InputText(field("screenshot folder").c_str(), &state.screenshot_dir);
     tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");
     if (ImGui::Button("Screenshot PNG + JSON (F12)")) state.screenshot_requested = true;
     tooltip("Display A at its own resolution, exactly the bytes `m3055 render` writes for the JSON beside it.");
-    ImGui::SameLine();
-    ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
-    if (ImGui::InputText("load", &state.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) load_scene(state, state.load_path);
+    if (narrow_panel()) {  // a path: wrapped on its own line
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
+        ImGui::PopTextWrapPos();
+    } else {
+        ImGui::SameLine();
+        ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
+    }
+    if (ImGui::InputText(field("load").c_str(), &state.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) load_scene(state, state.load_path);
     tooltip("A scene JSON file; Enter or the Load button opens it (undoable with Ctrl+Z).");
-    ImGui::SameLine();
+    same_line_if_fits(button_width("Load"));
     if (ImGui::Button("Load")) load_scene(state, state.load_path);
     tooltip("Opens the scene file named in the field (undoable with Ctrl+Z).");
     if (!state.load_error.empty()) {  // here, beside the control the user just used

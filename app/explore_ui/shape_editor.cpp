@@ -1,5 +1,7 @@
 #include "explore_ui/shape_editor.h"
 
+#include "explore_ui/narrow_panel.h"
+
 #include "explore_ui/widgets.h"
 #include "geometry/mesh.h"
 
@@ -15,7 +17,7 @@ namespace {
 // A direction edited as three numbers; kept unit and non-zero.
 bool direction_edit(const char* label, dvec3* direction) {
     double v[3] = {direction->x, direction->y, direction->z};
-    if (!ImGui::DragScalarN(label, ImGuiDataType_Double, v, 3, 0.01f)) return false;
+    if (!ImGui::DragScalarN(field(label).c_str(), ImGuiDataType_Double, v, 3, 0.01f)) return false;
     const dvec3 d(v[0], v[1], v[2]);
     const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
     if (!(length > 1e-6)) return false;  // docs/spec.md#7-scene-files: non-zero
@@ -28,14 +30,14 @@ bool direction_edit(const char* label, dvec3* direction) {
 bool shape_editor(Object& o) {
     bool changed = false;
     int current = static_cast<int>(o.shape);
-    if (ImGui::Combo("shape", &current, "sphere\0plane\0cube\0cylinder\0torus\0")) {
+    if (ImGui::Combo(field("shape").c_str(), &current, "sphere\0plane\0cube\0cylinder\0torus\0")) {
         set_shape(o, kAllShapes[current]);
         changed = true;
     }
     tooltip("The object's shape (docs/shapes.md): the sphere is exact; plane, cube, cylinder and torus are "
             "triangle meshes. A new shape keeps the object's place and about its size.");
     double c[3] = {o.center.x, o.center.y, o.center.z};
-    if (ImGui::DragScalarN("centre", ImGuiDataType_Double, c, 3, 0.02f)) {
+    if (ImGui::DragScalarN(field("centre").c_str(), ImGuiDataType_Double, c, 3, 0.02f)) {
         o.center = {c[0], c[1], c[2]};
         changed = true;
     }
@@ -56,7 +58,7 @@ bool shape_editor(Object& o) {
             tooltip("The cube's edge in scene units, 0.01 to 20 here ((0, 1e6] in the format; logarithmic).");
             double r[3] = {o.rotation_deg.x, o.rotation_deg.y, o.rotation_deg.z};
             const double lo = -360.0, hi = 360.0;
-            if (ImGui::DragScalarN("rotation x,y,z", ImGuiDataType_Double, r, 3, 0.5f, &lo, &hi, "%.1f deg",
+            if (ImGui::DragScalarN(field("rotation x,y,z").c_str(), ImGuiDataType_Double, r, 3, 0.5f, &lo, &hi, "%.1f deg",
                                    ImGuiSliderFlags_AlwaysClamp)) {
                 o.rotation_deg = {r[0], r[1], r[2]};
                 changed = true;
@@ -71,7 +73,7 @@ bool shape_editor(Object& o) {
             tooltip("The cylinder's radius in scene units, 0.01 to 10 here ((0, 1e6] in the format).");
             changed |= slider_double("height", &o.height, 0.01, 20.0, "%.3f", true);
             tooltip("The length along the axis in scene units, 0.01 to 20 here ((0, 1e6] in the format).");
-            changed |= ImGui::Checkbox("capped", &o.capped);
+            changed |= checkbox("capped", &o.capped);
             tooltip("On: closed by two discs; off: an open tube (its inside shows).");
             break;
         case Shape::torus:
@@ -87,14 +89,14 @@ bool shape_editor(Object& o) {
     }
     if (o.shape == Shape::cylinder || o.shape == Shape::torus) {
         int segments = segments_of(o);
-        if (ImGui::SliderInt("segments", &segments, kMinSegments, kMaxSegments, "%d",
+        if (ImGui::SliderInt(field("segments").c_str(), &segments, kMinSegments, kMaxSegments, "%d",
                              ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic)) {
             o.segments = segments;
             changed = true;
         }
         tooltip("Segments of a full circle, 3 to 512 (defaults: cylinder 64, torus 128; docs/shapes.md gives "
                 "the shading error of each).");
-        ImGui::SameLine();
+        if (!narrow_panel()) ImGui::SameLine();
         ImGui::TextDisabled("%zu triangles", triangle_count(o));
     }
     return changed;

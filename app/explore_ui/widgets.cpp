@@ -1,6 +1,7 @@
 #include "explore_ui/widgets.h"
 
 #include "explore/slider_scale.h"
+#include "explore_ui/narrow_panel.h"
 
 #include <imgui.h>
 
@@ -99,6 +100,8 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
 
 bool slider_double(const char* label, double* value, double lo, double hi, const char* format,
                    bool logarithmic, double decades) {
+    const std::string shown = field(label);  // its own line on a narrow panel
+    label = shown.c_str();
     if (logarithmic) return log_slider(label, value, lo, hi, format, decades);
     const ImGuiID id = ImGui::GetID(label);
     const double old = *value;
@@ -129,7 +132,7 @@ bool color_edit(const char* label, dvec3* color) {
     float rgb[3] = {static_cast<float>(color->r), static_cast<float>(color->g),
                     static_cast<float>(color->b)};
     const float before[3] = {rgb[0], rgb[1], rgb[2]};
-    if (!ImGui::ColorEdit3(label, rgb, ImGuiColorEditFlags_Float)) return false;
+    if (!ImGui::ColorEdit3(field(label).c_str(), rgb, ImGuiColorEditFlags_Float)) return false;
     // ImGui edits floats: a channel left alone keeps its double exactly.
     for (int i = 0; i < 3; ++i)
         if (rgb[i] != before[i]) (*color)[i] = std::clamp(shortest_double(rgb[i]), 0.0, 1.0);

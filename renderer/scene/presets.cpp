@@ -1,11 +1,14 @@
 #include "scene/presets.h"
 
 #include "models/model_table.h"
+#include "scene/light_colour.h"
 #include "scene/light_direction.h"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace m3055 {
 
@@ -39,6 +42,7 @@ const char* preset_name(LightPreset preset) {
         case LightPreset::three_point_white: return "three_point_white";
         case LightPreset::three_point_warm: return "three_point_warm";
         case LightPreset::three_point_cool: return "three_point_cool";
+        case LightPreset::three_point_studio: return "three_point_studio";
         case LightPreset::paper_main_secondary: return "paper_main_secondary";
     }
     return "?";
@@ -50,6 +54,7 @@ const char* preset_label(LightPreset preset) {
         case LightPreset::three_point_white: return "3-point, white key";
         case LightPreset::three_point_warm: return "3-point, warm key";
         case LightPreset::three_point_cool: return "3-point, cool key";
+        case LightPreset::three_point_studio: return "studio: 3200 K key, 5600 K fill";
         case LightPreset::paper_main_secondary: return "Paper: main + secondary";
     }
     return "?";
@@ -73,6 +78,15 @@ std::vector<Light> light_preset(LightPreset preset) {
             return three_point({kWarmKey[0], kWarmKey[1], kWarmKey[2]});
         case LightPreset::three_point_cool:
             return three_point({kCoolKey[0], kCoolKey[1], kCoolKey[2]});
+        case LightPreset::three_point_studio: {
+            // Tungsten key, daylight fill and back: a film studio's mix.
+            std::vector<Light> lights = three_point({1.0, 1.0, 1.0});
+            std::string error;
+            for (Light& light : lights)
+                if (!set_temperature(light, light.name == "key" ? 3200.0 : 5600.0, &error))
+                    throw std::runtime_error("studio lights: " + error);
+            return lights;
+        }
         case LightPreset::paper_main_secondary: {
             // Main "upper right": the docs/spec.md#7-scene-files example direction (1, 1, 1).
             Light main;

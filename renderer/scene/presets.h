@@ -18,13 +18,15 @@ enum class LightPreset {
     three_point_white,   // key (a = 1) + fill (a = 0.4) + back (a = 0.7), all white
     three_point_warm,    // the same with a warm (orange-ish) key
     three_point_cool,    // the same with a cool (blue-ish) key
+    three_point_studio,  // the same lights as black bodies: a 3200 K (tungsten) key,
+                         // 5600 K (daylight) fill and back (docs/spec.md#71-spectral-lights)
     paper_main_secondary // the paper's Fig. 11-13 set-up: main upper right (a = 1),
                          // secondary left and below (a = 0.7)
 };
 
 inline constexpr LightPreset kAllLightPresets[] = {
     LightPreset::single_key, LightPreset::three_point_white, LightPreset::three_point_warm,
-    LightPreset::three_point_cool, LightPreset::paper_main_secondary};
+    LightPreset::three_point_cool, LightPreset::three_point_studio, LightPreset::paper_main_secondary};
 
 // Stable name used in scripts ("three_point_warm") and a label for the UI.
 const char* preset_name(LightPreset preset);
@@ -32,7 +34,9 @@ const char* preset_label(LightPreset preset);
 // Parses a preset_name(); returns false when unknown.
 bool parse_light_preset(const std::string& name, LightPreset* preset);
 
-// The lights of a preset (directional lights, no per-light lobes).
+// The lights of a preset (directional lights, no per-light lobes). Throws
+// std::runtime_error for the studio preset when the CIE data (colord-data)
+// cannot be read.
 std::vector<Light> light_preset(LightPreset preset);
 
 // Key-light colours of the three-point presets (c_l in [0,1]^3).
