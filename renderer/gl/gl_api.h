@@ -79,7 +79,7 @@ namespace m3055 {
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                               \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                     \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                               \
-    X(PFNGLTEXBUFFERPROC, TexBuffer)                                       \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                               \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                             \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                           \
     X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                           \
