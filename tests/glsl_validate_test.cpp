@@ -5,6 +5,7 @@
 #include "gl/shader_source.h"
 #include "models/model_table.h"
 #include "passes/shader_plan.h"
+#include "passes/translucent_blend.h"
 #include "scene/load.h"
 #include "test_support.h"
 
@@ -112,6 +113,12 @@ std::vector<std::string> specialized(const std::vector<std::string>& models, con
     return defines_for(ShaderMode::specialized, models, lights, translucent_pass);
 }
 
+// The same translucent pass for the blend without dual sources (passes/translucent_blend.h).
+std::vector<std::string> two_pass(std::vector<std::string> defines) {
+    defines.push_back(kTwoPassBlendDefine);
+    return defines;
+}
+
 Light light_of(LightType type, std::vector<Lobe> lobes = {}) {
     Light light;
     light.type = type;
@@ -142,6 +149,7 @@ std::vector<ProgramCase> renderer_programs() {
         {"quantize", "passes/fullscreen.vert", "passes/quantize.frag", {}},
         {"general_opaque", vert, frag, general()},
         {"general_translucent", vert, frag, general(true)},
+        {"general_translucent_two_pass", vert, frag, two_pass(general(true))},
         {"highlight_no_light", vert, frag, specialized({"highlight"}, {})},
         {"highlight_one_light", vert, frag, specialized({"highlight"}, {directional})},
         {"metal_only", vert, frag, specialized({"metal"}, {directional, directional})},
@@ -150,9 +158,11 @@ std::vector<ProgramCase> renderer_programs() {
         {"every_flag", vert, frag, specialized(every_opaque_model(), {beckmann_lobes, point, spot, directional})},
         {"translucent_no_light", vert, frag, specialized({"translucent"}, {}, true)},
         {"translucent_spot_lobes", vert, frag, specialized({"translucent"}, {beckmann_lobes, point, spot}, true)},
+        {"translucent_two_pass", vert, frag, two_pass(specialized({"translucent"}, {point}, true))},
         // The mesh pass (planes, cubes, cylinders, tori: passes/mesh_pass.cpp).
         {"mesh_general_opaque", "passes/mesh.vert", "passes/mesh.frag", general()},
         {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", general(true)},
+        {"mesh_general_translucent_two_pass", "passes/mesh.vert", "passes/mesh.frag", two_pass(general(true))},
         {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag", specialized({"highlight"}, {directional})},
     };
 }

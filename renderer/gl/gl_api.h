@@ -28,6 +28,16 @@ namespace m3055 {
     X(PFNGLDEPTHMASKPROC, DepthMask)                                       \
     X(PFNGLBLENDFUNCPROC, BlendFunc)                                       \
     X(PFNGLBLENDEQUATIONPROC, BlendEquation)                               \
+    X(PFNGLCOLORMASKPROC, ColorMask)                                       \
+    X(PFNGLSTENCILFUNCPROC, StencilFunc)                                   \
+    X(PFNGLSTENCILOPPROC, StencilOp)                                       \
+    X(PFNGLSTENCILMASKPROC, StencilMask)                                   \
+    X(PFNGLCLEARBUFFERIVPROC, ClearBufferiv)                               \
+    X(PFNGLGENQUERIESPROC, GenQueries)                                     \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                               \
+    X(PFNGLBEGINQUERYPROC, BeginQuery)                                     \
+    X(PFNGLENDQUERYPROC, EndQuery)                                         \
+    X(PFNGLGETQUERYOBJECTUIVPROC, GetQueryObjectuiv)                       \
     X(PFNGLFINISHPROC, Finish)                                             \
     X(PFNGLFLUSHPROC, Flush)                                               \
     X(PFNGLREADPIXELSPROC, ReadPixels)                                     \

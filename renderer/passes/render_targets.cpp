@@ -42,8 +42,8 @@ void FloatTargets::ensure_size(int width, int height) {
         gl_.FramebufferTexture2D(GL_FRAMEBUFFER, buffers.back(), GL_TEXTURE_2D, colours_[i].id(), 0);
     }
     if (depth_) {
-        define_texture_2d(gl_, depth_, kDepth32f, width, height, nullptr);
-        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
+        define_texture_2d(gl_, depth_, kDepth32fStencil8, width, height, nullptr);
+        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     }
     gl_.DrawBuffers(GLsizei(buffers.size()), buffers.data());
     check_framebuffer(gl_, name_, width, height);

@@ -17,7 +17,10 @@ struct TextureFormat {
     unsigned format, type;
 };
 inline constexpr TextureFormat kRgba32f{GL_RGBA32F, GL_RGBA, GL_FLOAT};
-inline constexpr TextureFormat kDepth32f{GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT};
+// 32-bit float depth with an 8-bit stencil (the two-pass translucent
+// blend's fragment counts, passes/translucent_blend.h).
+inline constexpr TextureFormat kDepth32fStencil8{GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL,
+                                                 GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
 inline constexpr TextureFormat kRgba8{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
 
 // (Re)defines `texture` as width x height of `format`, from `pixels` (or
@@ -30,7 +33,8 @@ void define_texture_2d(const GlApi& gl, const GlTexture& texture, TextureFormat 
 void check_framebuffer(const GlApi& gl, const char* name, int width, int height);
 
 // A framebuffer of `colours` RGBA32F colour attachments (drawn into all at
-// once: DrawBuffers) and, with `depth`, a 32-bit float depth attachment.
+// once: DrawBuffers) and, with `depth`, a 32-bit float depth attachment with
+// an 8-bit stencil.
 class FloatTargets {
 public:
     FloatTargets(const GlApi& gl, int colours, bool depth, const char* name);
