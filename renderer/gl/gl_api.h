@@ -21,7 +21,6 @@ namespace m3055 {
     X(PFNGLVIEWPORTPROC, Viewport)                                         \
     X(PFNGLSCISSORPROC, Scissor)                                           \
     X(PFNGLCLEARCOLORPROC, ClearColor)                                     \
-    X(PFNGLCLEARDEPTHPROC, ClearDepth)                                     \
     X(PFNGLCLEARPROC, Clear)                                               \
     X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                               \
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                       \
@@ -57,7 +56,6 @@ namespace m3055 {
     X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                               \
     X(PFNGLUSEPROGRAMPROC, UseProgram)                                     \
     X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation)                     \
-    X(PFNGLBINDFRAGDATALOCATIONINDEXEDPROC, BindFragDataLocationIndexed)   \
     X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                     \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                                       \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                       \
