@@ -329,6 +329,7 @@ struct Renderer::Impl {
         const SphereSets spheres = sort_spheres(scene, sequence.camera());
         meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
+        targets.set_stencil(blend == TranslucentBlend::two_pass);
         sequence.begin();  // background and depth cleared
         draw_opaque(scene, spheres, sequence);
         draw_translucent(scene, spheres, sequence);
