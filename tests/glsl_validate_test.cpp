@@ -5,6 +5,7 @@
 #include "gl/shader_source.h"
 #include "models/model_table.h"
 #include "passes/shader_plan.h"
+#include "passes/translucent_blend.h"
 #include "scene/load.h"
 #include "test_support.h"
 
@@ -112,6 +113,12 @@ std::vector<std::string> specialized(const std::vector<std::string>& models, con
     return defines_for(ShaderMode::specialized, models, lights, translucent_pass);
 }
 
+// The same translucent pass for the blend without dual sources (passes/translucent_blend.h).
+std::vector<std::string> two_pass(std::vector<std::string> defines) {
+    defines.push_back(kTwoPassBlendDefine);
+    return defines;
+}
+
 Light light_of(LightType type, std::vector<Lobe> lobes = {}) {
     Light light;
     light.type = type;
@@ -142,6 +149,7 @@ std::vector<ProgramCase> renderer_programs() {
         {"quantize", "passes/fullscreen.vert", "passes/quantize.frag", {}},
         {"general_opaque", vert, frag, general()},
         {"general_translucent", vert, frag, general(true)},
+        {"general_translucent_two_pass", vert, frag, two_pass(general(true))},
         {"highlight_no_light", vert, frag, specialized({"highlight"}, {})},
         {"highlight_one_light", vert, frag, specialized({"highlight"}, {directional})},
         {"metal_only", vert, frag, specialized({"metal"}, {directional, directional})},
@@ -150,9 +158,11 @@ std::vector<ProgramCase> renderer_programs() {
         {"every_flag", vert, frag, specialized(every_opaque_model(), {beckmann_lobes, point, spot, directional})},
         {"translucent_no_light", vert, frag, specialized({"translucent"}, {}, true)},
         {"translucent_spot_lobes", vert, frag, specialized({"translucent"}, {beckmann_lobes, point, spot}, true)},
+        {"translucent_two_pass", vert, frag, two_pass(specialized({"translucent"}, {point}, true))},
         // The mesh pass (planes, cubes, cylinders, tori: passes/mesh_pass.cpp).
         {"mesh_general_opaque", "passes/mesh.vert", "passes/mesh.frag", general()},
         {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", general(true)},
+        {"mesh_general_translucent_two_pass", "passes/mesh.vert", "passes/mesh.frag", two_pass(general(true))},
         {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag", specialized({"highlight"}, {directional})},
     };
 }
@@ -235,6 +245,84 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
         EXPECT_EQ(run.exit_code, 0) << "defines" << label << ":\n" << run.output;
     }
     RecordProperty("distinct_programs", int(keys.size()));
+}
+
+// ---- GLSL ES 3.00 (WebGL2, issue 21) -------------------------------------------
+
+// The programs a WebGL2 build would compile, composed for GlslTarget::es: per
+// model of the table its specialized sphere and mesh programs (the translucent
+// family's translucent pass with the two-pass blend, as WebGL2 has no dual
+// sources without an extension) and its BRDF grid program; the general
+// programs; the quantize pass. glslangValidator takes the profile from
+// "#version 300 es", so a desktop-only construct (an implicit int to float
+// conversion, a samplerBuffer, a dual-source output) fails here, on the desktop.
+std::vector<ProgramCase> es_programs() {
+    const std::string vert = "passes/sphere.vert", frag = "passes/sphere.frag";
+    const std::string mesh_vert = "passes/mesh.vert", mesh_frag = "passes/mesh.frag";
+    const std::vector<Light> lights = {light_of(LightType::directional, {{0.01, 0.4}}), light_of(LightType::point),
+                                       light_of(LightType::spot)};
+    std::vector<ProgramCase> cases = {
+        {"quantize", "passes/fullscreen.vert", "passes/quantize.frag", {}},
+        {"general_opaque", vert, frag, general()},
+        {"general_translucent_two_pass", vert, frag, two_pass(general(true))},
+        {"mesh_general_opaque", mesh_vert, mesh_frag, general()},
+        {"mesh_general_translucent_two_pass", mesh_vert, mesh_frag, two_pass(general(true))},
+    };
+    for (const ModelSpec& model : model_table().models()) {
+        const bool translucent = model.family == Family::translucent;
+        std::vector<std::string> defines = specialized({model.name}, lights, translucent);
+        if (translucent) defines = two_pass(defines);
+        cases.push_back({model.name, vert, frag, defines});
+        cases.push_back({model.name + "_mesh", mesh_vert, mesh_frag, defines});
+        if (!translucent)
+            cases.push_back({model.name + "_brdf_grid", "passes/fullscreen.vert", "passes/brdf_grid.frag",
+                             specialized({model.name}, {light_of(LightType::point)})});
+    }
+    return cases;
+}
+
+class EsProgram : public ::testing::TestWithParam<ProgramCase> {
+protected:
+    std::string write_stage(const std::string& glsl_path, const std::string& ext) {
+        const ComposedShader shader = compose_shader(glsl_path, GetParam().defines, GlslTarget::es);
+        EXPECT_EQ(shader.text.rfind("#version 300 es\n", 0), 0u) << glsl_path;
+        const std::string file = dir_.file(GetParam().name + "." + ext);
+        test::write_text(file, shader.text);
+        return file;
+    }
+    TempDir dir_;
+};
+
+TEST_P(EsProgram, StagesValidateAndLinkAsGlslEs300) {
+    const std::string vert = write_stage(GetParam().vertex, "vert");
+    const std::string frag = write_stage(GetParam().fragment, "frag");
+    const ToolRun run = run_glslang({"-l", vert, frag});
+    EXPECT_EQ(run.exit_code, 0) << GetParam().vertex << " + " << GetParam().fragment << ":\n" << run.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(WebGl2, EsProgram, ::testing::ValuesIn(es_programs()),
+                         [](const ::testing::TestParamInfo<ProgramCase>& info) { return info.param.name; });
+
+// The ES check can fail: a desktop-only construct (GLSL ES has no implicit int
+// to float conversion) is rejected in the ES profile, accepted in the desktop one.
+TEST(GlslangHarness, DesktopOnlyConstructFailsInTheEsProfile) {
+    TempDir dir;
+    const std::string body = "out vec4 color;\nvoid main() { float x = max(gl_FragCoord.x, 0); color = vec4(x); }\n";
+    const std::string es = dir.file("implicit.frag"), desktop = dir.file("implicit_desktop.frag");
+    test::write_text(es, glsl_header(GlslTarget::es) + body);
+    test::write_text(desktop, glsl_header(GlslTarget::desktop) + body);
+    EXPECT_NE(run_glslang({es}).exit_code, 0);
+    EXPECT_EQ(run_glslang({desktop}).exit_code, 0);
+}
+
+// The desktop composition is what it was: the ES target changes only the header.
+TEST(ComposeShader, EsTargetDiffersFromDesktopOnlyInTheHeader) {
+    const std::vector<std::string> defines = general(true);
+    const std::string desktop = compose_shader("passes/sphere.frag", defines).text;
+    const std::string es = compose_shader("passes/sphere.frag", defines, GlslTarget::es).text;
+    ASSERT_EQ(desktop.rfind(glsl_header(GlslTarget::desktop), 0), 0u);
+    ASSERT_EQ(es.rfind(glsl_header(GlslTarget::es), 0), 0u);
+    EXPECT_EQ(desktop.substr(glsl_header(GlslTarget::desktop).size()), es.substr(glsl_header(GlslTarget::es).size()));
 }
 
 // The harness can fail: a broken shader is rejected, with its error in the log.

@@ -10,6 +10,7 @@
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
+#include "passes/translucent_blend.h"
 #include "models/material.h"
 #include "scene/presets.h"
 
@@ -83,6 +84,8 @@ struct Renderer::Impl {
     GlBuffer instance_buffer;
     GlVertexArray sphere_vao;
     ShaderMode shader_mode = ShaderMode::specialized;
+    TranslucentBlend blend;       // set_translucent_blend; default_translucent_blend at first
+    TranslucentBlender blender;   // the two-pass draws
     bool defer_compiles = false;         // set_defer_compiles
     std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
@@ -90,7 +93,7 @@ struct Renderer::Impl {
 
     Impl(const GlApi& api, std::unique_ptr<ProgramCache> own, ProgramCache* shared)
         : gl(api), own_programs(std::move(own)), programs(shared ? *shared : *own_programs), targets(api, programs),
-          meshes(api), instance_buffer(api), sphere_vao(api) {
+          meshes(api), instance_buffer(api), sphere_vao(api), blend(default_translucent_blend(api)), blender(api) {
         gl.BindVertexArray(sphere_vao.id());
         gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         for (unsigned attribute = 0; attribute < 3; ++attribute) {
@@ -116,7 +119,10 @@ struct Renderer::Impl {
     // set-up data of one draw call until it is rasterized, and 4 million
     // triangles in one call took 2.3 GB more at 8192 x 8192 than in chunks
     // (docs/limits.md). The pixels are the same.
-    void draw_meshes(const CameraFrame& frame, std::size_t lights, const MeshPass::Translucent* only) {
+    // `two_pass_program`: the translucent mesh's program in use when the blend
+    // is two_pass (passes/translucent_blend.h), 0 otherwise.
+    void draw_meshes(const CameraFrame& frame, std::size_t lights, const MeshPass::Translucent* only,
+                     unsigned two_pass_program = 0) {
         std::vector<DrawSpan> spans;
         std::vector<MeshPass::Range> ranges = meshes.opaque_ranges();
         if (only) ranges = {{only->first, only->count, only->object}};
@@ -125,8 +131,12 @@ struct Renderer::Impl {
             if (rect) spans.push_back(chunks->span_of(range.first, range.count, range.count / 3, rect->data(), lights));
             else spans.push_back(DrawSpan{range.first, range.count, kPrimitiveWork * double(range.count / 3), 0, 0});
         }
-        chunks->run(plan_chunks(spans, kChunkWork, 3),
-                    [&](std::size_t first, std::size_t count) { meshes.draw(first, count); });
+        chunks->run(plan_chunks(spans, kChunkWork, 3), [&](std::size_t first, std::size_t count) {
+            if (!two_pass_program) return meshes.draw(first, count);
+            // Back faces culled, a convex shape covers each pixel at most once.
+            const bool convex = only->object->shape != Shape::torus;
+            blender.draw_two_pass(two_pass_program, [&] { meshes.draw(first, count); }, convex);
+        });
     }
 
     // The program for `key`; with deferral, a specialized one not built yet is
@@ -137,30 +147,73 @@ struct Renderer::Impl {
         deferred.insert(key);
         std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
         if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
+        if (translucent_pass && blend == TranslucentBlend::two_pass) general.push_back(kTwoPassBlendDefine);
         return programs.get({key.vertex, key.fragment, general});
     }
 
-    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances, const FrameSequence& sequence) {
+    // Instances [first, first + count) of `instances` (the buffer's). With the
+    // two-pass blend, in groups of consecutive spheres whose quads, one pixel
+    // wider, do not overlap: no pixel is covered twice in a group (a sphere's
+    // quad covers a pixel once), so a multiply and an add draw per group are
+    // exact without the stencil's layers, whose cost grows with the overlap
+    // (2000 overlapping spheres: 51 s in layers against 1 s dual-source). A
+    // group is at most kMaxGroup spheres, which bounds the overlap tests.
+    void draw_instances(const std::vector<SphereInstance>& instances, std::size_t first, std::size_t count,
+                        unsigned two_pass_program) {
+        if (!two_pass_program) {
+            point_instances(first);
+            gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count));
+            return;
+        }
+        constexpr std::size_t kMaxGroup = 256;
+        const float margin_x = 2.0f / float(targets.width()), margin_y = 2.0f / float(targets.height());
+        auto apart = [&](const float* a, const float* b) {  // NDC rectangles {x0, y0, x1, y1}
+            return a[2] + margin_x < b[0] || b[2] + margin_x < a[0] || a[3] + margin_y < b[1] ||
+                   b[3] + margin_y < a[1];
+        };
+        for (std::size_t start = first, end; start < first + count; start = end) {
+            for (end = start + 1; end < first + count && end - start < kMaxGroup; ++end) {
+                bool overlaps = false;
+                for (std::size_t i = start; i < end && !overlaps; ++i)
+                    overlaps = !apart(instances[i].rect, instances[end].rect);
+                if (overlaps) break;
+            }
+            point_instances(start);
+            const GLsizei n = GLsizei(end - start);
+            blender.draw_two_pass(two_pass_program, [&] { gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n); },
+                                  true);
+        }
+    }
+
+    // `two_pass`: a translucent run drawn with the two-pass blend.
+    void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances, const FrameSequence& sequence,
+                      bool two_pass = false) {
         if (instances.empty()) return;
         sequence.use_program(program);
         gl.BindVertexArray(sphere_vao.id());
         gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
         gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
                       GL_STREAM_DRAW);
+        const unsigned two_pass_program = two_pass ? program : 0;
         // Instances are drawn, and blended, in buffer order: back to front.
-        if (!deadline) return gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
+        if (!deadline && !two_pass) return gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
+        if (!deadline) {
+            const Rewind rewind{*this};
+            return draw_instances(instances, 0, instances.size(), two_pass_program);
+        }
         std::vector<DrawSpan> spans;
         for (std::size_t i = 0; i < instances.size(); ++i)
             spans.push_back(chunks->span_of(i, 1, 1, instances[i].rect, std::size_t(sequence.lights().count)));
-        struct Rewind {  // the next draw starts at instance 0 again, even after a RenderTimeout
-            Impl& impl;
-            ~Rewind() { impl.point_instances(0); }
-        } rewind{*this};
+        const Rewind rewind{*this};
         chunks->run(plan_chunks(spans, kChunkWork, 1), [&](std::size_t first, std::size_t count) {
-            point_instances(first);
-            gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count));
+            draw_instances(instances, first, count, two_pass_program);
         });
     }
+
+    struct Rewind {  // the next draw starts at instance 0 again, even after a RenderTimeout
+        Impl& impl;
+        ~Rewind() { impl.point_instances(0); }
+    };
 
     // The spheres on screen by pass: opaque ones, and translucent ones sorted far to near.
     struct SphereSets {
@@ -208,19 +261,23 @@ struct Renderer::Impl {
     }
 
     // Pass 2: translucent spheres and meshes over what is behind them (docs/spec.md#42-translucent),
-    // as a premultiplied "over" with a per-channel transmittance: dual-source
-    // blending, dst = src0 + src1 * dst. Spheres and meshes merged far to near:
-    // runs of spheres between meshes. Skipped when there are none.
+    // as a premultiplied "over" with a per-channel transmittance,
+    // dst = src0 + src1 * dst: dual-source blending, or the same in two draws
+    // per layer (passes/translucent_blend.h). Spheres and meshes merged far to
+    // near: runs of spheres between meshes. Skipped when there are none.
     void draw_translucent(const Scene& scene, const SphereSets& spheres, const FrameSequence& sequence) {
         if (spheres.translucent.empty() && meshes.translucent().empty()) return;
         gl.DepthMask(GL_FALSE);
-        gl.Enable(GL_BLEND);
-        gl.BlendEquation(GL_FUNC_ADD);
-        gl.BlendFunc(GL_ONE, GL_SRC1_COLOR);
+        blender.begin(blend);
+        const bool two_pass = blend == TranslucentBlend::two_pass;
         auto defines = specialization_defines(shader_mode, spheres.translucent_objects, scene.lights);
         defines.push_back("TRANSLUCENT_PASS");
         auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
         mesh_defines.push_back("TRANSLUCENT_PASS");
+        if (two_pass) {
+            defines.push_back(kTwoPassBlendDefine);
+            mesh_defines.push_back(kTwoPassBlendDefine);
+        }
         std::vector<MeshPass::Translucent> mesh_order = meshes.translucent();
         std::stable_sort(mesh_order.begin(), mesh_order.end(),
                          [](const auto& a, const auto& b) { return a.key > b.key; });
@@ -232,10 +289,13 @@ struct Renderer::Impl {
                    (m == mesh_order.size() || sorted[next_sphere].first >= mesh_order[m].key))
                 run.push_back(sorted[next_sphere++].second);
             if (!run.empty())
-                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, sequence);
+                draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, true), run, sequence,
+                             two_pass);
             if (m == mesh_order.size()) break;
-            sequence.use_program(program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true));
-            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), &mesh_order[m]);
+            const unsigned mesh_program = program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true);
+            sequence.use_program(mesh_program);
+            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), &mesh_order[m],
+                        two_pass ? mesh_program : 0);
         }
         gl.Disable(GL_BLEND);
         gl.DepthMask(GL_TRUE);
@@ -250,6 +310,8 @@ struct Renderer::Impl {
         } catch (...) {
             gl.DepthMask(GL_TRUE);
             gl.Disable(GL_BLEND);
+            gl.Disable(GL_STENCIL_TEST);
+            gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             gl.Disable(GL_SCISSOR_TEST);
             gl.Disable(GL_CULL_FACE);
             gl.Disable(GL_DEPTH_TEST);
@@ -267,6 +329,7 @@ struct Renderer::Impl {
         const SphereSets spheres = sort_spheres(scene, sequence.camera());
         meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
+        targets.set_stencil(blend == TranslucentBlend::two_pass);
         sequence.begin();  // background and depth cleared
         draw_opaque(scene, spheres, sequence);
         draw_translucent(scene, spheres, sequence);
@@ -283,6 +346,8 @@ void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
 void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
     impl_->deadline = deadline;
 }
+void Renderer::set_translucent_blend(TranslucentBlend blend) { impl_->blend = blend; }
+TranslucentBlend Renderer::translucent_blend() const { return impl_->blend; }
 void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }
 bool Renderer::defers_compiles() const { return impl_->defer_compiles; }
 void Renderer::render_specialized(const Scene& scene) {

@@ -11,6 +11,7 @@
 #include "image/image.h"
 #include "passes/draw_chunks.h"  // RenderTimeout
 #include "passes/shader_plan.h"
+#include "passes/translucent_blend.h"
 #include "scene/scene.h"
 
 #include <chrono>
@@ -39,6 +40,13 @@ public:
     // Specialized programs (the default) are compiled per scene shape and
     // cached; general ones serve every scene. Both give the same pixels.
     void set_shader_mode(ShaderMode mode);
+    // How translucent objects are composited (passes/translucent_blend.h):
+    // dual-source blending in one draw, or a multiply and an add draw per
+    // layer of fragments; the same display levels either way. A new renderer
+    // takes default_translucent_blend (M3055_NO_DUAL_SOURCE, or no dual-source
+    // blending in the context, gives two_pass).
+    void set_translucent_blend(TranslucentBlend blend);
+    TranslucentBlend translucent_blend() const;
     // A time budget for the following renders (issue 11, class 10): with a
     // deadline, each draw is split into chunks of bounded work
     // (passes/draw_chunks.h), the GPU is waited for between them, and render()

@@ -21,13 +21,22 @@ namespace m3055 {
     X(PFNGLVIEWPORTPROC, Viewport)                                         \
     X(PFNGLSCISSORPROC, Scissor)                                           \
     X(PFNGLCLEARCOLORPROC, ClearColor)                                     \
-    X(PFNGLCLEARDEPTHPROC, ClearDepth)                                     \
     X(PFNGLCLEARPROC, Clear)                                               \
     X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                               \
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                       \
     X(PFNGLDEPTHMASKPROC, DepthMask)                                       \
     X(PFNGLBLENDFUNCPROC, BlendFunc)                                       \
     X(PFNGLBLENDEQUATIONPROC, BlendEquation)                               \
+    X(PFNGLCOLORMASKPROC, ColorMask)                                       \
+    X(PFNGLSTENCILFUNCPROC, StencilFunc)                                   \
+    X(PFNGLSTENCILOPPROC, StencilOp)                                       \
+    X(PFNGLSTENCILMASKPROC, StencilMask)                                   \
+    X(PFNGLCLEARBUFFERIVPROC, ClearBufferiv)                               \
+    X(PFNGLGENQUERIESPROC, GenQueries)                                     \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                               \
+    X(PFNGLBEGINQUERYPROC, BeginQuery)                                     \
+    X(PFNGLENDQUERYPROC, EndQuery)                                         \
+    X(PFNGLGETQUERYOBJECTUIVPROC, GetQueryObjectuiv)                       \
     X(PFNGLFINISHPROC, Finish)                                             \
     X(PFNGLFLUSHPROC, Flush)                                               \
     X(PFNGLREADPIXELSPROC, ReadPixels)                                     \
@@ -47,7 +56,6 @@ namespace m3055 {
     X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                               \
     X(PFNGLUSEPROGRAMPROC, UseProgram)                                     \
     X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation)                     \
-    X(PFNGLBINDFRAGDATALOCATIONINDEXEDPROC, BindFragDataLocationIndexed)   \
     X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                     \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                                       \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                       \
@@ -79,7 +87,7 @@ namespace m3055 {
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                               \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                     \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                               \
-    X(PFNGLTEXBUFFERPROC, TexBuffer)                                       \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                               \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                             \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                           \
     X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                           \

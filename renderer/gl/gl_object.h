@@ -77,6 +77,14 @@ struct VertexArray {
     }
     static void destroy(const GlApi& gl, unsigned id) { gl.DeleteVertexArrays(1, &id); }
 };
+struct Query {
+    static unsigned make(const GlApi& gl) {
+        unsigned id = 0;
+        gl.GenQueries(1, &id);
+        return id;
+    }
+    static void destroy(const GlApi& gl, unsigned id) { gl.DeleteQueries(1, &id); }
+};
 // Programs are made by build_program (gl/program.h) and adopted: no make.
 struct Program {
     static void destroy(const GlApi& gl, unsigned id) { gl.DeleteProgram(id); }
@@ -88,5 +96,6 @@ using GlBuffer = GlObject<gl_kind::Buffer>;
 using GlFramebuffer = GlObject<gl_kind::Framebuffer>;
 using GlVertexArray = GlObject<gl_kind::VertexArray>;
 using GlProgram = GlObject<gl_kind::Program>;
+using GlQuery = GlObject<gl_kind::Query>;
 
 }  // namespace m3055

@@ -87,14 +87,23 @@ struct Composer {
 
 }  // namespace
 
-ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines) {
-    return compose_shader(path, defines, generated_glsl());
+std::string glsl_header(GlslTarget target) {
+    if (target == GlslTarget::desktop) return "#version 330 core\n";
+    return "#version 300 es\n"
+           "precision highp float;\n"
+           "precision highp int;\n"
+           "precision highp sampler2D;\n"
+           "#define M3055_GLSL_ES 1\n";
+}
+
+ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines, GlslTarget target) {
+    return compose_shader(path, defines, generated_glsl(), target);
 }
 
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
-                              const ExtraSources& extra) {
+                              const ExtraSources& extra, GlslTarget target) {
     Composer composer{extra, {}, {}, {}};
-    composer.out.text = "#version 330 core\n";
+    composer.out.text = glsl_header(target);
     for (const auto& define : defines) composer.out.text += "#define " + define + "\n";
     composer.append(path, "compose_shader");
     return composer.out;

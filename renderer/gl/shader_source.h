@@ -20,11 +20,22 @@ struct ComposedShader {
 // Files that are not in glsl/: (path, text), e.g. models/glsl_generator.h's.
 using ExtraSources = std::vector<std::pair<std::string, std::string>>;
 
+// The GLSL a shader is composed for. desktop: "#version 330 core", what every
+// desktop program compiles. es: "#version 300 es" with highp defaults for
+// float, int and sampler2D (GLSL ES 3.00 has no default float precision in
+// fragment shaders, and float textures need highp samplers) and M3055_GLSL_ES
+// defined: what WebGL2 compiles (issue 21).
+enum class GlslTarget { desktop, es };
+
+// The first lines of a composed shader for `target`, up to the defines.
+std::string glsl_header(GlslTarget target);
+
 // Throws std::runtime_error naming the file when a path or include is unknown
 // or an include is circular. `extra` defaults to the model table's files.
-ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines);
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
-                              const ExtraSources& extra);
+                              GlslTarget target = GlslTarget::desktop);
+ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
+                              const ExtraSources& extra, GlslTarget target = GlslTarget::desktop);
 
 // Rewrites a GL info log's "N:LINE(COL)" / "N(LINE)" prefixes to "glsl/PATH:LINE".
 std::string annotate_shader_log(const std::string& log, const std::vector<std::string>& files);

@@ -108,7 +108,7 @@ std::string material_struct(const ModelTable& table) {
 std::string unpack(const ModelSpec& spec) {
     std::string out = "#ifdef " + has_define(spec) + "\n    if (mat.model == MODEL_" + spec.macro_name() + ") {\n";
     for (int t = 1; t < (spec.gpu_floats + 3) / 4; ++t)
-        out += "        vec4 t" + std::to_string(t) + " = texelFetch(u_materials, base + " + std::to_string(t) + ");\n";
+        out += "        vec4 t" + std::to_string(t) + " = m3055_material_texel(base + " + std::to_string(t) + ");\n";
     int k = 2;
     for (const ParamSpec& param : spec.params) {
         const std::string field = "        mat." + param.name;
@@ -138,11 +138,17 @@ std::string material_file(const ModelTable& table) {
         "// Generated from the model table (renderer/models/builtin_models.cpp) by\n"
         "// renderer/models/glsl_generator.cpp: ids, struct Material, fetch_material.\n";
     out += defines(table);
-    out += "\nuniform samplerBuffer u_materials;  // the records of passes/material_buffer.cpp\n";
-    out += "uniform int u_material_texels;       // texels per record\n\n";
+    // A 2D texture, not a buffer texture: WebGL2 (GLSL ES 3.00) has no
+    // samplerBuffer. Texel i of the records sits at (i % width, i / width).
+    out += "\n#define M3055_MATERIAL_TEXTURE_WIDTH " + std::to_string(kMaterialTextureWidth) + "\n";
+    out += "uniform sampler2D u_materials;  // the records of passes/material_buffer.cpp, RGBA32F\n";
+    out += "uniform int u_material_texels;  // texels per record\n\n";
+    out += "vec4 m3055_material_texel(int i) {\n"
+           "    const int w = M3055_MATERIAL_TEXTURE_WIDTH;\n"
+           "    return texelFetch(u_materials, ivec2(i % w, i / w), 0);\n}\n\n";
     out += material_struct(table);
     out += "\nMaterial fetch_material(int index) {\n    int base = index * u_material_texels;\n";
-    out += "    vec4 t0 = texelFetch(u_materials, base);\n    Material mat;\n";
+    out += "    vec4 t0 = m3055_material_texel(base);\n    Material mat;\n";
     out += "    mat.model = int(t0.x);\n    mat.family = int(t0.y);\n";
     for (const ModelSpec& spec : table.models()) out += unpack(spec);
     out += "    return mat;\n}\n\n// The families' dispatchers to their models' hooks (generated/models.glsl).\n";

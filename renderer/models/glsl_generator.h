@@ -18,6 +18,11 @@ namespace m3055 {
 struct ModelSpec;
 class ModelTable;
 
+// Texels per row of the material records' 2D texture (passes/material_texture.h,
+// fetch_material): WebGL2 guarantees textures of 2048 texels a side, and
+// 2048 rows of 2048 texels hold 100000 objects' records many times over.
+inline constexpr int kMaterialTextureWidth = 2048;
+
 // The generated files for `table` (their paths as above).
 std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table);
 

@@ -95,11 +95,17 @@ RgbFloatImage FrameTargets::read_raw() const {
     RgbFloatImage image;
     image.width = w, image.height = h;
     image.pixels.resize(std::size_t(w) * h * 3);
+    // Read as RGBA: GLES/WebGL2 allow no RGB float read-back, and the floats are the same.
+    std::vector<float> rgba(std::size_t(w) * std::min(h, kReadRows) * 4);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, scene_.framebuffer());
-    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    for (int y0 = 0; y0 < h; y0 += kReadRows)
-        gl_.ReadPixels(0, y0, w, std::min(kReadRows, h - y0), GL_RGB, GL_FLOAT,
-                       image.pixels.data() + std::size_t(y0) * w * 3);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int y0 = 0; y0 < h; y0 += kReadRows) {
+        const int rows = std::min(kReadRows, h - y0);
+        gl_.ReadPixels(0, y0, w, rows, GL_RGBA, GL_FLOAT, rgba.data());
+        float* dst = image.pixels.data() + std::size_t(y0) * w * 3;
+        for (std::size_t i = 0; i < std::size_t(w) * std::size_t(rows); ++i)
+            for (std::size_t c = 0; c < 3; ++c) dst[i * 3 + c] = rgba[i * 4 + c];
+    }
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
     return image;
 }

@@ -27,6 +27,10 @@ public:
     // test LESS, depth writes on and blending off.
     void begin(const Scene& scene);
 
+    // Gives the scene target a stencil from the next begin on (the two-pass
+    // translucent blend, passes/translucent_blend.h), or takes it away.
+    void set_stencil(bool on) { scene_.set_stencil(on); }
+
     // Sets a program's material uniforms (the sampler's unit, the record stride); call after UseProgram.
     void set_material_uniforms(unsigned program) const;
 

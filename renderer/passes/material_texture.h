@@ -1,7 +1,10 @@
 // The material records (passes/material_buffer.h) as every pass that shades
-// reads them: a buffer texture of RGBA32F texels on texture unit 0
-// (u_materials), one record every material_record_texels() texels. The one
-// upload for the frame, the BRDF grid and the stress harness.
+// reads them: a 2D texture of RGBA32F texels on texture unit 0 (u_materials),
+// kMaterialTextureWidth texels a row, texel i at (i % width, i / width), one
+// record every material_record_texels() texels (fetch_material in
+// models/glsl_generator.cpp). A 2D texture rather than a buffer texture
+// because WebGL2 has none; the floats, and so the pixels, are the same. The
+// one upload for the frame, the BRDF grid and the stress harness.
 #pragma once
 
 #include "gl/gl_api.h"
@@ -16,7 +19,8 @@ public:
     explicit MaterialTexture(const GlApi& gl);
 
     // Uploads `records` (pack_material's floats, record after record) and
-    // binds them as the buffer texture of unit 0, leaving unit 0 active.
+    // binds them as the 2D texture of unit 0, leaving unit 0 active. Throws
+    // std::runtime_error when they need more rows than GL_MAX_TEXTURE_SIZE.
     void upload(const std::vector<float>& records);
 
     // A program's material uniforms: the sampler's unit and the record
@@ -25,8 +29,8 @@ public:
 
 private:
     const GlApi& gl_;
-    GlBuffer buffer_;
     GlTexture texture_;
+    int rows_ = 0;  // rows allocated: the texture is redefined only to grow
 };
 
 }  // namespace m3055

@@ -31,6 +31,12 @@ FloatTargets::FloatTargets(const GlApi& gl, int colours, bool depth, const char*
     if (depth) depth_ = GlTexture(gl);
 }
 
+void FloatTargets::set_stencil(bool on) {
+    if (on == stencil_) return;
+    stencil_ = on;
+    width_ = height_ = 0;  // redefined at the next ensure_size
+}
+
 void FloatTargets::ensure_size(int width, int height) {
     gl_.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     if (width == width_ && height == height_) return;
@@ -41,7 +47,12 @@ void FloatTargets::ensure_size(int width, int height) {
         buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
         gl_.FramebufferTexture2D(GL_FRAMEBUFFER, buffers.back(), GL_TEXTURE_2D, colours_[i].id(), 0);
     }
-    if (depth_) {
+    if (depth_ && stencil_) {
+        define_texture_2d(gl_, depth_, kDepth32fStencil8, width, height, nullptr);
+        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
+    } else if (depth_) {
+        // No stencil left attached from an earlier size with one.
+        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
         define_texture_2d(gl_, depth_, kDepth32f, width, height, nullptr);
         gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
     }
