@@ -22,6 +22,8 @@ std::string field(const char* label) {
     return std::string("##") + label;
 }
 
+int combo_flags() { return narrow ? ImGuiComboFlags_NoArrowButton : ImGuiComboFlags_None; }
+
 bool checkbox(const char* label, bool* value) {
     if (!narrow) return ImGui::Checkbox(label, value);
     ImGui::PushID(label);

@@ -20,6 +20,10 @@ bool narrow_panel();
 std::string field(const char* label);
 inline std::string field(const std::string& label) { return field(label.c_str()); }
 
+// A combo box's flags: on a narrow panel without the arrow button, so the
+// chosen entry (e.g. "metal, Cook-Torrance (eq. 12)") has the whole width.
+int combo_flags();
+
 // A checkbox whose label wraps on a narrow panel (a checkbox's own label cannot).
 bool checkbox(const char* label, bool* value);
 

@@ -129,7 +129,13 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
                        float width, float height, StripShape shape) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
-    ImGui::Begin("Plane of incidence", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    // The strip under the display fits without scrolling; the column beside
+    // the panes (or in the free cell of three) scrolls when it is low, so the
+    // statistics under the plots stay reachable.
+    const ImGuiWindowFlags scrolling = shape == StripShape::column
+                                           ? ImGuiWindowFlags_None
+                                           : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
+    ImGui::Begin("Plane of incidence", nullptr, kFixed | scrolling);
     const ImVec2 room = ImGui::GetContentRegionAvail();
     // Beside the stacked panes or in the free cell beside the third of three
     // (explore/layout.h): the three one under another, each the column's width.
@@ -140,7 +146,10 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
         plot_section(state, info.plane_curves, room.x, plot_h);
         ImGui::EndGroup();
         profile_plot(info.profile, info.profile_b, room.x, profile_h - 2.0f * line);
-        ImGui::BeginChild("stats", ImVec2(0.0f, 0.0f));
+        // At least eight lines of statistics: below the window's edge when the
+        // column is low, where the column's scrolling reaches them.
+        const float stats_h = std::max(ImGui::GetContentRegionAvail().y, 8.0f * line);
+        ImGui::BeginChild("stats", ImVec2(0.0f, stats_h));
         stats_column(state, info);
         ImGui::EndChild();
         ImGui::End();

@@ -38,7 +38,7 @@ void show_tooltip(const ParamSpec& param) {
 // lobes start again from the new form's defaults (m and n mean different things).
 bool choice_widget(Material& material, const ParamSpec& param) {
     int index = material.choice(param.name);
-    if (!ImGui::BeginCombo(field(param.label).c_str(), param.choices[std::size_t(index)].c_str())) {
+    if (!ImGui::BeginCombo(field(param.label).c_str(), param.choices[std::size_t(index)].c_str(), combo_flags())) {
         show_tooltip(param);
         return false;
     }
@@ -134,7 +134,7 @@ bool eq14_readout(Material& material) {
 // by the compare section's material B.
 bool material_editor(Material& material, std::string& action) {
     bool changed = false;
-    if (ImGui::BeginCombo(field("model").c_str(), material.model().label.c_str())) {
+    if (ImGui::BeginCombo(field("model").c_str(), material.model().label.c_str(), combo_flags())) {
         for (const ModelSpec* model : all_models()) {
             if (ImGui::Selectable(model->label.c_str(), model == &material.model())) {
                 material = with_model(material, *model);
