@@ -105,7 +105,7 @@ void apply_light_preset(ExplorerState& state, LightPreset preset) {
         state.error = e.what();
         return;
     }
-    note_edit(state, "light preset");
+    note_edit(state, std::string("light preset ") + preset_name(preset));  // as "figure preset fig05"
     state.selected_light = 0;
 }
 

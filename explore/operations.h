@@ -6,7 +6,7 @@
 // A panel edits a copy (a Material, a Light, ...) with its widgets and hands
 // it to edit_*; the label names what differs ("objects[0].material.m 10 ->
 // 40", "model metal -> half_lambert", "light key intensity 1 -> 0.5").
-// Actions with a name of their own say it ("light preset", "add sphere",
+// Actions with a name of their own say it ("light preset three_point_warm", "add sphere",
 // "B = copy of A"). Each call asks for one render (state.scene_changed); the
 // frame loop makes the undo step when no widget or drag is in progress
 // (explore/undo.h commit_edits), so a slider drag is one step.

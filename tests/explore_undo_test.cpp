@@ -46,7 +46,7 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
     }
     apply_light_preset(state, LightPreset::three_point_warm);
     commit_edits(state);
-    EXPECT_EQ(undo_label(state), "light preset");
+    EXPECT_EQ(undo_label(state), "light preset three_point_warm");
     ASSERT_TRUE(undo(state));
     EXPECT_EQ(state.history.undo_steps(), 251u);  // the preset and 250 values
     EXPECT_EQ(undo_label(state), "objects[0].material.m 251 -> 252");
@@ -59,7 +59,7 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
         ASSERT_TRUE(redo(state)) << i;
         EXPECT_EQ(scene_to_json(state.scene), after_step[std::size_t(i)]) << "after redoing step " << i;
     }
-    EXPECT_EQ(state.history.redo_label(), "light preset");
+    EXPECT_EQ(state.history.redo_label(), "light preset three_point_warm");
 }
 
 TEST(ExploreUndo, HistoryForgetsTheOldestStepsBeyondItsLimit) {

@@ -440,12 +440,19 @@ TEST_F(ExplorerInput, ABurstOfKeysIntoATextFieldLosesNothing) {
 TEST_F(ExplorerInput, SplitOnKeepsB) {
     // B set to metal_blinn with the split off (the script runs the same code as the combo).
     test::write_text(dir_.file("b.txt"), "compare_model metal_blinn\nsection Display closed\nsection Material closed\n"
-                                         "section Lights closed\nsection File closed\nsection A/B compare open\n");
+                                         "section Lights closed\nsection File closed\nsection A/B compare open\n"
+                                         "print_state\n");
     ASSERT_TRUE(start(1920, 1080, {"--script", dir_.file("b.txt")}));
     const Rgb8Image expected = headless(dir_);
     Place start;
     app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (start = find_magnified(s, expected)).scale > 0; });
     ASSERT_GT(start.scale, 0);
+    // The script has run to its end (its last line printed), so the A/B
+    // section is open where the click goes: under load the display can show
+    // before the script's one-command-a-frame has got there.
+    for (int i = 0; i < 240 && test::read_text(dir_.file("explore.log")).find("state title=") == std::string::npos; ++i)
+        sleep_ms(250);
+    sleep_ms(500);  // and a frame drawn after it
     app_->click(kSplitCheckboxX, kSplitCheckboxY);
     app_->move(kRestX, kRestY);
     Place a;
