@@ -6,6 +6,7 @@
 //   |gpu - ref| <= 1e-3 * max(1, |ref|), >= 99.5 % of pixels on the same
 //   display level, none more than one level off, no NaN or Inf.
 #include "gpu_compare.h"
+#include "object_builders.h"
 #include "models/model_table.h"
 #include "reference/reference.h"
 
@@ -19,7 +20,11 @@
 namespace m3055 {
 namespace {
 
+using test::cube;
+using test::cylinder;
 using test::directional;
+using test::sphere;
+using test::torus;
 
 constexpr double kTolerance = 1e-3;
 constexpr double kSameLevelShare = 0.995;
@@ -63,35 +68,9 @@ Object plane(double y, double size, Material material) {
     return o;
 }
 
-Object cube(dvec3 center, double size, dvec3 rotation, Material material) {
-    Object o;
-    o.shape = Shape::cube;
-    o.center = center, o.size = size, o.rotation_deg = rotation;
-    o.material = material;
-    return o;
-}
 
-Object cylinder(dvec3 center, dvec3 axis, double radius, double height, bool capped, Material material) {
-    Object o;
-    o.shape = Shape::cylinder;
-    o.center = center, o.axis = glm::normalize(axis), o.radius = radius, o.height = height, o.capped = capped;
-    o.material = material;
-    return o;
-}
 
-Object torus(dvec3 center, dvec3 axis, double major, double minor, Material material) {
-    Object o;
-    o.shape = Shape::torus;
-    o.center = center, o.axis = glm::normalize(axis), o.major_radius = major, o.minor_radius = minor;
-    o.material = material;
-    return o;
-}
 
-Object sphere(dvec3 center, double radius, Material material) {
-    Object o;
-    o.center = center, o.radius = radius, o.material = material;
-    return o;
-}
 
 std::vector<Light> key_and_fill() {
     Light point;

@@ -9,7 +9,8 @@
 // colour is compared too: in float targets fl(fl(dst * t) + c) is the blend's
 // own arithmetic, so it matches to the bit on llvmpipe.
 #include "frame/renderer.h"
-#include "gl/context.h"
+#include "gpu_compare.h"
+#include "object_builders.h"
 #include "models/model_table.h"
 #include "scene/load.h"
 #include "scene/presets.h"
@@ -21,7 +22,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,15 +30,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Gpu {
-    std::unique_ptr<HeadlessContext> context = HeadlessContext::create(Backend::automatic);
-    Renderer renderer{context->gl()};
-};
-
-Gpu& gpu() {
-    static Gpu instance;
-    return instance;
-}
+using test::cube;
+using test::cylinder;
+using test::shared_renderer;
+using test::sphere;
+using test::torus;
 
 struct Render {
     Rgb8Image display;
@@ -47,7 +43,7 @@ struct Render {
 
 Render render(const Scene& scene, TranslucentBlend blend, ShaderMode mode = ShaderMode::specialized,
               bool chunked = false) {
-    Renderer& renderer = gpu().renderer;
+    Renderer& renderer = shared_renderer();
     renderer.set_translucent_blend(blend);
     renderer.set_shader_mode(mode);
     // A deadline far away: the draws go in chunks (passes/draw_chunks.h), nothing times out.
@@ -82,19 +78,7 @@ Material translucent(dvec3 color, double t_n, double t_p) {
     return material;
 }
 
-Object sphere(dvec3 center, double radius, Material material) {
-    Object o;
-    o.center = center, o.radius = radius, o.material = material;
-    return o;
-}
 
-Object torus(dvec3 center, dvec3 axis, double major, double minor, Material material) {
-    Object o;
-    o.shape = Shape::torus;
-    o.center = center, o.axis = glm::normalize(axis), o.major_radius = major, o.minor_radius = minor;
-    o.material = material;
-    return o;
-}
 
 // The default scene (camera, lights, an opaque sphere at the origin) at a small size.
 Scene small_scene(std::vector<Object> more) {
@@ -159,20 +143,13 @@ TEST(TranslucentBlend, TorusWithTwoFrontFacesOnOnePixelOverASphere) {
 }
 
 TEST(TranslucentBlend, TranslucentMeshesAmongSpheresInPerspectiveAndOrthographic) {
-    Object cube;
-    cube.shape = Shape::cube;
-    cube.center = {-0.8, 0, 0.8}, cube.size = 0.8, cube.rotation_deg = {20, 35, 10};
-    cube.material = translucent({0.9, 0.9, 0.3}, 0.4, 1.0);
-    Object cylinder;
-    cylinder.shape = Shape::cylinder;
-    cylinder.center = {0.8, 0, 0.6}, cylinder.axis = glm::normalize(dvec3(0.3, 1, 0.6));
-    cylinder.radius = 0.4, cylinder.height = 1.2, cylinder.capped = false;
-    cylinder.material = translucent({0.4, 0.6, 0.9}, 0.5, 0.5);
+    const Object box = cube({-0.8, 0, 0.8}, 0.8, {20, 35, 10}, translucent({0.9, 0.9, 0.3}, 0.4, 1.0));
+    const Object tube = cylinder({0.8, 0, 0.6}, {0.3, 1, 0.6}, 0.4, 1.2, false, translucent({0.4, 0.6, 0.9}, 0.5, 0.5));
     Object plane;
     plane.shape = Shape::plane;
     plane.center = {0, -0.2, 1.4}, plane.axis = glm::normalize(dvec3(0, 0.4, 1)), plane.size = 1.5;
     plane.material = translucent({0.8, 0.8, 0.8}, 0.2, 0.0);
-    Scene scene = small_scene({cube, cylinder, plane, sphere({0, 0.3, 1.2}, 0.4, translucent({1, 0.3, 0.3}, 0.5, 1))});
+    Scene scene = small_scene({box, tube, plane, sphere({0, 0.3, 1.2}, 0.4, translucent({1, 0.3, 0.3}, 0.5, 1))});
     EXPECT_EQ(compare_blends(scene), "");
     scene.camera.projection = Projection::orthographic;
     scene.camera.height = 3.0;
@@ -180,7 +157,7 @@ TEST(TranslucentBlend, TranslucentMeshesAmongSpheresInPerspectiveAndOrthographic
 }
 
 TEST(TranslucentBlend, DefaultIsDualSourceWhereTheContextHasItUnlessTheEnvironmentSaysNo) {
-    const GlApi& gl = gpu().context->gl();
+    const GlApi& gl = test::shared_gl();
     const char* before = std::getenv("M3055_NO_DUAL_SOURCE");
     const std::string saved = before ? before : "";
     unsetenv("M3055_NO_DUAL_SOURCE");

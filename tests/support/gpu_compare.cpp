@@ -28,6 +28,9 @@ Gpu& gpu() {
 
 }  // namespace
 
+Renderer& shared_renderer() { return gpu().renderer; }
+const GlApi& shared_gl() { return gpu().context->gl(); }
+
 std::string Comparison::describe() const {
     std::ostringstream text;
     text << "interior pixels " << interior_pixels << ", max |diff| " << max_abs_diff << ", max scaled diff "

@@ -7,6 +7,11 @@
 
 #include <string>
 
+namespace m3055 {
+class Renderer;   // frame/renderer.h
+struct GlApi;     // gl/gl_api.h
+}  // namespace m3055
+
 namespace m3055::test {
 
 struct Comparison {
@@ -32,5 +37,11 @@ Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& refere
 Scene single_sphere_scene(const Material& material, const std::vector<Light>& lights, bool orthographic);
 
 Light directional(const dvec3& direction, double intensity = 1.0, const dvec3& color = dvec3(1.0));
+
+// The process's one headless context and renderer (made on first use), which
+// the comparisons above render with; a test that sets a renderer option
+// (shader mode, blend) sets it back or sets it before each render.
+Renderer& shared_renderer();
+const GlApi& shared_gl();
 
 }  // namespace m3055::test
