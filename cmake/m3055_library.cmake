@@ -1,8 +1,10 @@
 # m3055_library(NAME FOLDER folder [USES lib...] [EXTERNAL target...]
-#               [PRIVATE_EXTERNAL target...] [SOURCES file...])
+#               [PRIVATE_EXTERNAL target...] [SOURCES file...] [DESKTOP_ONLY file...])
 #
 # EXTERNAL: third-party targets its headers expose; PRIVATE_EXTERNAL: used only
-# in its .cpp files. SOURCES: generated files that belong to it.
+# in its .cpp files. SOURCES: generated files that belong to it. DESKTOP_ONLY:
+# files of the folder left out of the browser build (Emscripten: scripts/web),
+# e.g. the headless EGL and OSMesa contexts.
 #
 # One folder of the source tree becomes one static library, m3055_<name>. Its
 # headers are reached as "<leaf>/file.h" (leaf: the folder's last component),
@@ -13,7 +15,7 @@
 # tests/repository_test.cpp fails when the two disagree (it reads
 # library_graph.txt, written below).
 function(m3055_library name)
-  cmake_parse_arguments(ARG "" "FOLDER" "USES;EXTERNAL;PRIVATE_EXTERNAL;SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "FOLDER" "USES;EXTERNAL;PRIVATE_EXTERNAL;SOURCES;DESKTOP_ONLY" ${ARGN})
   set(folder "${PROJECT_SOURCE_DIR}/${ARG_FOLDER}")
   get_filename_component(leaf "${folder}" NAME)
   set(root "${PROJECT_BINARY_DIR}/include_roots/${name}")
@@ -22,6 +24,11 @@ function(m3055_library name)
     file(CREATE_LINK "${folder}" "${root}/${leaf}" SYMBOLIC)
   endif()
   file(GLOB sources CONFIGURE_DEPENDS "${folder}/*.cpp")
+  if(EMSCRIPTEN)
+    foreach(file IN LISTS ARG_DESKTOP_ONLY)
+      list(REMOVE_ITEM sources "${folder}/${file}")
+    endforeach()
+  endif()
   add_library(m3055_${name} STATIC ${sources} ${ARG_SOURCES})
   target_include_directories(m3055_${name} PUBLIC "${root}")
   set(uses "")

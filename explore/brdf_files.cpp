@@ -19,7 +19,9 @@ std::string stamp(const std::string& path) {
     const auto time = std::filesystem::last_write_time(path, ec);
     if (ec) return "missing";
     const auto size = std::filesystem::file_size(path, ec);
-    return std::to_string(time.time_since_epoch().count()) + " " + std::to_string(ec ? 0 : size);
+    // long long: the clock's count is __int128 in some C++ libraries (Emscripten's libc++).
+    return std::to_string(static_cast<long long>(time.time_since_epoch().count())) + " " +
+           std::to_string(ec ? 0 : static_cast<unsigned long long>(size));
 }
 
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }

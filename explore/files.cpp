@@ -68,6 +68,7 @@ bool save_scene(ExplorerState& state, const std::string& path) {
     try {
         const std::string text = scene_to_json(state.scene).dump(2) + "\n";
         write_file_atomic(path, text.data(), text.size());
+        if (state.platform.file_written) state.platform.file_written(path);
         state.scene_file = path;
         state.overwrite_warned.clear();
         state.save_dir = std::filesystem::path(path).parent_path().string();
@@ -156,6 +157,10 @@ void take_screenshot(ExplorerState& state, Renderer& renderer) {
         write_png(png, renderer.read_display());
         const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
         write_file_atomic(json, text.data(), text.size());
+        if (state.platform.file_written) {
+            state.platform.file_written(png);
+            state.platform.file_written(json);
+        }
         std::error_code ec;
         const std::string full = std::filesystem::absolute(png, ec).string();
         state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);

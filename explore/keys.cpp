@@ -40,7 +40,7 @@ bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus
                            kFigureKeys[press.digit] + ", undoably";
             return false;
         }
-        case Key::escape: state.quit_requested = true; return true;
+        case Key::escape: state.quit_requested = state.platform.can_quit; return true;
         case Key::r: reset_camera(state); return true;
         case Key::f1: state.show_panels = !state.show_panels; return true;
         case Key::f12: state.screenshot_requested = true; return true;

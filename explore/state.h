@@ -110,6 +110,16 @@ struct ExplorerState {
     // --assignment: the live grade shown in the Assignment section (practice.h).
     PracticeStatus practice;
 
+    // Where the explorer runs. In a browser page (app/web/) nothing quits the
+    // page, a file the explorer writes (a saved scene, a screenshot) is also
+    // offered as a download, and File > Open is the browser's file chooser:
+    // the page sets these; the desktop window leaves them as they are.
+    struct Platform {
+        bool can_quit = true;
+        std::function<void(const std::string& path)> file_written;
+        std::function<void()> pick_file;
+    } platform;
+
     // Set by every edit (operations.h); the frame loop re-renders the scene once and clears it.
     bool scene_changed = true;
     void changed() { scene_changed = true; }

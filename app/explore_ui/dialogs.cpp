@@ -104,8 +104,10 @@ void draw_menu_bar(ExplorerState& state) {
         if (ImGui::MenuItem("Save as...")) request_save_as(state);
         if (ImGui::MenuItem("Open BRDF...")) state.open_brdf_requested = true;
         if (ImGui::MenuItem("Screenshot", "F12")) state.screenshot_requested = true;
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Esc")) state.quit_requested = true;
+        if (state.platform.can_quit) {
+            ImGui::Separator();
+            if (ImGui::MenuItem("Quit", "Esc")) state.quit_requested = true;
+        }
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {

@@ -260,6 +260,24 @@ public:
         return status;
     }
 
+    // The display as `m3055 render` writes it: A rendered now with its
+    // specialized program (no deferral), as F12's screenshot is; the window
+    // shows it on the next frame. Throws what the render throws.
+    Rgb8Image render_display_now() {
+        if (!renderer_a_) throw std::runtime_error(state_.error);
+        const bool deferring = renderer_a_->defers_compiles();
+        renderer_a_->set_defer_compiles(false);
+        try {
+            renderer_a_->render(state_.scene);
+        } catch (...) {
+            renderer_a_->set_defer_compiles(deferring);
+            throw;
+        }
+        renderer_a_->set_defer_compiles(deferring);
+        state_.changed();  // the panes, read-outs and practice follow on the next frame
+        return renderer_a_->read_display();
+    }
+
 private:
     std::size_t deferred_programs() const {
         return renderer_a_ ? explore::deferred_programs(*renderer_a_, *renderer_b_) : 0;
@@ -292,13 +310,22 @@ private:
         window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
     }
 
-    // --script's `print_grade`: the grade of the scene as it is now (graded at once if stale).
+public:
+    // The grade of the scene as it is now (graded at once if stale); "" outside practice mode.
+    std::string grade_now() {
+        if (!practice_) return "";
+        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
+        return grade_line(state_.practice);
+    }
+
+private:
+
+    // --script's `print_grade`.
     void answer_grade_print() {
         if (!state_.practice.print_requested) return;
         state_.practice.print_requested = false;
         if (!practice_) return;
-        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
-        std::printf("%s\n", grade_line(state_.practice).c_str());
+        std::printf("%s\n", grade_now().c_str());
         std::fflush(stdout);
     }
 
@@ -600,55 +627,102 @@ private:
 
 }  // namespace
 
-int run_explorer(const ExploreOptions& options) {
-    // ---- The starting scene and script (before any window, so errors are quick) ----
+// ---- One explorer: the starting scene, a window with its GL table, ImGui on it ----
+struct ExplorerSession::Parts {
+    ExploreOptions options;  // the Explorer keeps a reference
     ExplorerState state;
+    std::optional<Script> script;
+    std::optional<Window> window;
+    GlApi gl;
+    FrameInfo info;
+    std::optional<ImGuiLayer> imgui;
+    std::optional<Explorer> explorer;
+};
+
+std::unique_ptr<ExplorerSession> ExplorerSession::open(const ExploreOptions& options,
+                                                       const std::function<void(ExplorerState&)>& prepare) {
+    std::unique_ptr<ExplorerSession> session(new ExplorerSession);
+    Parts& p = *session->parts_;
+    p.options = options;
+    // The starting scene and script (before any window, so errors are quick).
     std::optional<grading::Assignment> assignment;
     try {
-        assignment = start_scene(state, options.scene_path, options.assignment_path);
+        assignment = start_scene(p.state, options.scene_path, options.assignment_path);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
-        return 1;
+        return nullptr;
     }
-    std::optional<Script> script;
     if (!options.script_path.empty()) {
         try {
-            script = Script::from_file(options.script_path);
+            p.script = Script::from_file(options.script_path);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
-            return 1;
+            return nullptr;
         }
     }
+    if (prepare) prepare(p.state);
 
-    // ---- A window with an OpenGL 3.3 core context, and the GL table from it ----
-    Window window(options.window_width, options.window_height, "M3055 material explorer");
-    if (!window.ok()) {
-        std::fprintf(stderr, "%s\n", window.error().c_str());
-        return 1;
+    // A window with an OpenGL 3.3 core context (in a browser: WebGL2), and the GL table from it.
+    p.window.emplace(options.window_width, options.window_height, "M3055 material explorer");
+    if (!p.window->ok()) {
+        std::fprintf(stderr, "%s\n", p.window->error().c_str());
+        return nullptr;
     }
-    GlApi gl;
     std::string missing;
-    if (!load_gl_api(gl, [](const char* name, void*) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); },
-                     nullptr, &missing)) {
+    if (!load_gl_api(p.gl, [](const char* name, void*) { return Window::gl_proc_address(name); }, nullptr, &missing)) {
         std::fprintf(stderr, "m3055 explore: the window's OpenGL lacks %s\n", missing.c_str());
-        return 1;
+        return nullptr;
     }
-    FrameInfo info;
-    info.gl_renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
-    info.gl_version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
-    info.window_system = glfwGetVersionString();
+    p.info.gl_renderer = reinterpret_cast<const char*>(p.gl.GetString(GL_RENDERER));
+    p.info.gl_version = reinterpret_cast<const char*>(p.gl.GetString(GL_VERSION));
+    p.info.window_system = glfwGetVersionString();
 
-    // ---- Dear ImGui on the window (its callbacks chain to the window's) ----
-    ImGuiLayer imgui(window.handle());
+    // Dear ImGui on the window (its callbacks chain to the window's).
+    p.imgui.emplace(p.window->handle());
+    p.explorer.emplace(p.options, p.state, p.script, *p.window, *p.imgui, p.gl, p.info);
+    if (assignment && !p.explorer->practise(std::move(*assignment))) return nullptr;
+    return session;
+}
 
-    // ---- The frame loop: sleep until something happens, then draw one frame ----
-    Explorer explorer(options, state, script, window, imgui, gl, info);
-    if (assignment && !explorer.practise(std::move(*assignment))) return 1;
-    while (!explorer.done()) {
-        explorer.wait_for_work();
-        if (explorer.frame_needed()) explorer.draw_frame();
+ExplorerSession::ExplorerSession() : parts_(std::make_unique<Parts>()) {}
+
+ExplorerSession::~ExplorerSession() {
+    // In reverse order of making: the GL objects while the context is current.
+    parts_->explorer.reset();
+    parts_->imgui.reset();
+    parts_->window.reset();
+}
+
+// One turn of the frame loop: sleep until something happens (in a browser:
+// return at once, the page calls again on its next animation frame), then
+// draw one frame when one is due.
+bool ExplorerSession::step() {
+    Explorer& explorer = *parts_->explorer;
+    if (explorer.done()) return false;
+    explorer.wait_for_work();
+    if (explorer.frame_needed()) explorer.draw_frame();
+    return true;
+}
+
+int ExplorerSession::finish() { return parts_->explorer->finish(); }
+
+ExplorerState& ExplorerSession::state() { return parts_->state; }
+
+Rgb8Image ExplorerSession::render_display_now() { return parts_->explorer->render_display_now(); }
+
+std::string ExplorerSession::grade_now() { return parts_->explorer->grade_now(); }
+
+bool ExplorerSession::practise(grading::Assignment assignment) {
+    return parts_->explorer->practise(std::move(assignment));
+}
+
+int run_explorer(const ExploreOptions& options) {
+    const std::unique_ptr<ExplorerSession> session = ExplorerSession::open(options);
+    if (!session) return 1;
+    // The frame loop: sleep until something happens, then draw one frame.
+    while (session->step()) {
     }
-    return explorer.finish();
+    return session->finish();
 }
 
 }  // namespace m3055

@@ -2,6 +2,11 @@
 // ImGui panels, and the same Renderer as `m3055 render` drawing the scene.
 #pragma once
 
+#include "grading/assignment.h"
+#include "image/image.h"
+
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace m3055 {
@@ -20,6 +25,42 @@ struct ExploreOptions {
     // room for the display at 2x beside the panels); 1500 x 940 without one.
     int window_width = 0;
     int window_height = 0;
+};
+
+namespace explore {
+struct ExplorerState;
+}
+
+// One running explorer for a frame loop that someone else owns: the desktop's
+// run_explorer below, or the browser's animation frames (app/web/).
+class ExplorerSession {
+public:
+    // The starting scene (and script), the window with its GL table, ImGui and
+    // the renderers. nullptr, the reason printed (one line), when any fails.
+    // `prepare` sees the state before the window opens (the page's platform hooks).
+    static std::unique_ptr<ExplorerSession> open(const ExploreOptions& options,
+                                                 const std::function<void(explore::ExplorerState&)>& prepare = {});
+    ~ExplorerSession();
+    ExplorerSession(const ExplorerSession&) = delete;
+    ExplorerSession& operator=(const ExplorerSession&) = delete;
+
+    // One turn of the loop: waits for work (the desktop sleeps until an event;
+    // a browser returns at once) and draws a frame when one is due. False once done.
+    bool step();
+    int finish();  // --stats; the exit status
+    explore::ExplorerState& state();
+    // The display as `m3055 render` writes it for the scene as it is now.
+    Rgb8Image render_display_now();
+    // Practice mode against an assignment (--assignment; the page's ?assignment=).
+    bool practise(grading::Assignment assignment);
+    // Practice mode's grade of the scene as it is now (graded at once when
+    // stale), the line --script's print_grade prints; "" outside practice mode.
+    std::string grade_now();
+
+private:
+    ExplorerSession();
+    struct Parts;
+    std::unique_ptr<Parts> parts_;
 };
 
 // Runs until the window closes, Esc, or the script ends with exit_after_script.

@@ -65,7 +65,11 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     ImGui_ImplGlfw_InitForOpenGL(window, true);  // its key and char callbacks chain to the window's
     glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)
     glfwSetCharCallback(window, queue_char);
+#ifdef __EMSCRIPTEN__
+    ImGui_ImplOpenGL3_Init("#version 300 es");  // WebGL2
+#else
     ImGui_ImplOpenGL3_Init("#version 330");
+#endif
 }
 
 ImGuiLayer::~ImGuiLayer() {
@@ -85,6 +89,10 @@ void ImGuiLayer::new_frame() {
     if (!queue.empty()) events_of(window_).frames_owed = kFramesAfterInput;  // the rest: the next frames
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    // Dear ImGui 1.86 asserts on a zero time step; two frames in one tick of
+    // the clock happen in a browser (its timers are coarse on purpose).
+    ImGuiIO& io = ImGui::GetIO();
+    if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1e-4f;
     ImGui::NewFrame();
 }
 

@@ -18,6 +18,11 @@ const ImVec4 kRed(1, 0.43f, 0.43f, 1);
 }
 
 void open_brdf_dialog(ExplorerState& state) {
+    if (state.open_brdf_requested && state.platform.pick_file) {  // the browser's file chooser
+        state.open_brdf_requested = false;
+        state.platform.pick_file();
+        return;
+    }
     if (state.open_brdf_requested) {
         state.open_brdf_requested = false;
         state.brdf_error.clear();

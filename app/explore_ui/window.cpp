@@ -31,7 +31,9 @@ Window::Window(int width, int height, const char* title) {
     // Within the monitor's work area (without task bars), so nothing is off screen.
     // No size asked: the whole work area.
     int area_x = 0, area_y = 0, area_w = 0, area_h = 0;
+#ifndef __EMSCRIPTEN__  // in a page the canvas is the window (app/web/): its size is asked for
     if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(monitor, &area_x, &area_y, &area_w, &area_h);
+#endif
     if (width <= 0 || height <= 0) {
         width = area_w > 0 ? area_w : 1500;
         height = area_h > 0 ? area_h : 940;
@@ -91,11 +93,29 @@ void Window::set_title(const std::string& title) {
 void Window::poll() { glfwPollEvents(); }
 
 void Window::wait(double seconds) {
+#ifdef __EMSCRIPTEN__
+    (void)seconds;  // a page cannot block: the browser calls the loop again on its next animation frame
+#else
     if (seconds < 0.0) glfwWaitEvents();  // idle: no CPU until the next event
     else glfwWaitEventsTimeout(seconds);
+#endif
 }
 
 double Window::time() const { return glfwGetTime(); }
+
+#ifdef __EMSCRIPTEN__
+extern "C" void* emscripten_webgl2_get_proc_address(const char* name);  // Emscripten's system/lib/gl/webgl2.c
+#endif
+
+void* Window::gl_proc_address(const char* name) {
+#ifdef __EMSCRIPTEN__
+    // Emscripten 3.1.6's glfwGetProcAddress answers "glGenQueries" (and the
+    // other query functions) with WebGL 1's EXT_disjoint_timer_query, absent
+    // on WebGL2: WebGL2's own functions are looked up first.
+    if (void* function = emscripten_webgl2_get_proc_address(name)) return function;
+#endif
+    return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
 
 void Window::framebuffer_size(int* width, int* height) const { glfwGetFramebufferSize(window_, width, height); }
 

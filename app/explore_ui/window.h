@@ -46,6 +46,8 @@ public:
     void poll();                                // handle pending events, don't wait
     void wait(double seconds);                  // sleep until an event or `seconds` (< 0: forever)
     double time() const;                        // glfwGetTime()
+    // A GL function of the window's context, by name (for load_gl_api).
+    static void* gl_proc_address(const char* name);
     void framebuffer_size(int* width, int* height) const;
     void swap();
 

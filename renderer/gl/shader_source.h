@@ -26,6 +26,12 @@ using ExtraSources = std::vector<std::pair<std::string, std::string>>;
 // fragment shaders, and float textures need highp samplers) and M3055_GLSL_ES
 // defined: what WebGL2 compiles (issue 21).
 enum class GlslTarget { desktop, es };
+// What this build's contexts compile: WebGL2's in the browser build (Emscripten).
+#ifdef __EMSCRIPTEN__
+inline constexpr GlslTarget kContextGlsl = GlslTarget::es;
+#else
+inline constexpr GlslTarget kContextGlsl = GlslTarget::desktop;
+#endif
 
 // The first lines of a composed shader for `target`, up to the defines.
 std::string glsl_header(GlslTarget target);
@@ -33,9 +39,9 @@ std::string glsl_header(GlslTarget target);
 // Throws std::runtime_error naming the file when a path or include is unknown
 // or an include is circular. `extra` defaults to the model table's files.
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
-                              GlslTarget target = GlslTarget::desktop);
+                              GlslTarget target = kContextGlsl);
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,
-                              const ExtraSources& extra, GlslTarget target = GlslTarget::desktop);
+                              const ExtraSources& extra, GlslTarget target = kContextGlsl);
 
 // Rewrites a GL info log's "N:LINE(COL)" / "N(LINE)" prefixes to "glsl/PATH:LINE".
 std::string annotate_shader_log(const std::string& log, const std::vector<std::string>& files);

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 namespace m3055::text {
@@ -176,6 +177,53 @@ std::string quote(std::string_view text, std::size_t max) { return "\"" + cut_en
 
 std::string one_line(std::string_view text, std::size_t max) { return cut_middle_impl(text, false, max); }
 
+#ifdef __EMSCRIPTEN__
+namespace {
+// std::to_chars(double)'s output without <charconv>: the fewest significant
+// digits that read back as the same double (printf's %.*e, 1 to 17 digits),
+// written fixed or scientific ("1e+20", "1.5e-07"), whichever is shorter,
+// fixed on a tie. Only the browser build uses it.
+std::string shortest_round_trip(double value) {
+    char buffer[64];
+    int digits = 1;
+    for (; digits < 17; ++digits) {
+        std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, value);
+        if (std::strtod(buffer, nullptr) == value) break;
+    }
+    std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, value);
+    const std::string sci_text = buffer;
+    // Mantissa digits and exponent of that form.
+    const std::size_t e = sci_text.find('e');
+    std::string mantissa = sci_text.substr(0, e);
+    const int exponent = std::atoi(sci_text.c_str() + e + 1);
+    const bool negative = mantissa[0] == '-';
+    std::string all_digits;
+    for (char c : mantissa) {
+        if (c >= '0' && c <= '9') all_digits += c;
+    }
+    while (all_digits.size() > 1 && all_digits.back() == '0') all_digits.pop_back();
+    // Scientific: d[.ddd]e(+|-)XX, at least two exponent digits.
+    std::string scientific = std::string(negative ? "-" : "") + all_digits.substr(0, 1);
+    if (all_digits.size() > 1) scientific += "." + all_digits.substr(1);
+    char exponent_text[16];
+    std::snprintf(exponent_text, sizeof exponent_text, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
+    scientific += exponent_text;
+    // Fixed: the same digits with the point moved.
+    std::string fixed;
+    const int point = exponent + 1;  // digits before the point
+    if (point <= 0) {
+        fixed = "0." + std::string(std::size_t(-point), '0') + all_digits;
+    } else if (std::size_t(point) >= all_digits.size()) {
+        fixed = all_digits + std::string(std::size_t(point) - all_digits.size(), '0');
+    } else {
+        fixed = all_digits.substr(0, std::size_t(point)) + "." + all_digits.substr(std::size_t(point));
+    }
+    if (negative) fixed = "-" + fixed;
+    return fixed.size() <= scientific.size() ? fixed : scientific;
+}
+}  // namespace
+#endif
+
 std::string format_number(double value) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
@@ -186,8 +234,12 @@ std::string format_number(double value) {
         return buffer;
     }
     // Shortest round-trip form (C++17 <charconv>): fixed or scientific, whichever is shorter.
+#ifdef __EMSCRIPTEN__
+    return shortest_round_trip(value);  // Emscripten's libc++ has no std::to_chars(double)
+#else
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
+#endif
 }
 
 }  // namespace m3055::text

@@ -9,6 +9,12 @@ namespace m3055 {
 TranslucentBlend default_translucent_blend(const GlApi& gl) {
     const char* no_dual_source = std::getenv("M3055_NO_DUAL_SOURCE");
     if (no_dual_source && *no_dual_source && std::string(no_dual_source) != "0") return TranslucentBlend::two_pass;
+#ifdef __EMSCRIPTEN__
+    // WebGL2 has dual-source blending only as WEBGL_blend_func_extended, which
+    // Emscripten 3.1.6's GL layer does not expose: the exact two passes (docs/web.md).
+    (void)gl;
+    return TranslucentBlend::two_pass;
+#else
     GLint buffers = 0;
     gl.GetIntegerv(GL_MAX_DUAL_SOURCE_DRAW_BUFFERS, &buffers);
     if (buffers >= 1) return TranslucentBlend::dual_source;
@@ -17,6 +23,7 @@ TranslucentBlend default_translucent_blend(const GlApi& gl) {
     while (gl.GetError() != GL_NO_ERROR) {
     }
     return TranslucentBlend::two_pass;
+#endif
 }
 
 TranslucentBlender::TranslucentBlender(const GlApi& gl) : gl_(gl), query_(gl) {}

@@ -1,0 +1,70 @@
+// The explorer as a web page (scripts/web): the desktop explorer's session
+// (app/explore_ui/explore.h) on a WebGL2 canvas, driven by the browser's
+// animation frames instead of a blocking loop. page.js starts it with
+// arguments: --assignment PATH (practice mode, the assignment's files already
+// fetched into the work folder) and/or a scene path (a share link's scene).
+#include "app/web/page.h"
+#include "explore/files.h"
+#include "explore/brdf_files.h"
+#include "explore/state.h"
+
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using namespace m3055;
+
+// A written file leaves the page as a download (the browser's "save").
+EM_JS(void, offer_download, (const char* path), { window.m3055Page.download(UTF8ToString(path)); });
+// File > Open: the browser's file chooser (page.js loads what is picked).
+EM_JS(void, open_file_chooser, (), { window.m3055Page.chooseFile(); });
+// The page shows why the explorer could not start.
+EM_JS(void, report_start_failure, (), { window.m3055Page.startFailed(); });
+// The page's window.m3055.ready resolves.
+EM_JS(void, report_started, (), { window.m3055Page.started(); });
+
+void frame(void*) {
+    if (ExplorerSession* s = web::session()) s->step();  // the page never ends: nothing quits it
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::error_code ec;
+    std::filesystem::create_directories(web::kWorkFolder, ec);
+    std::filesystem::current_path(web::kWorkFolder, ec);
+
+    ExploreOptions options;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--assignment") == 0 && i + 1 < argc) options.assignment_path = argv[++i];
+        else options.scene_path = argv[i];
+    }
+    // The canvas as page.js sized it: the page's area in device pixels, so
+    // that a whole-pixel magnification stays sharp on a HiDPI screen.
+    int canvas_w = 0, canvas_h = 0;
+    emscripten_get_canvas_element_size("#canvas", &canvas_w, &canvas_h);
+    options.window_width = canvas_w > 0 ? canvas_w : 1280;
+    options.window_height = canvas_h > 0 ? canvas_h : 720;
+
+    auto session = ExplorerSession::open(options, [](explore::ExplorerState& state) {
+        state.platform.can_quit = false;
+        state.platform.file_written = [](const std::string& path) { offer_download(path.c_str()); };
+        state.platform.pick_file = [] { open_file_chooser(); };
+        state.screenshot_dir = "screenshots";  // downloaded as they are taken
+        std::filesystem::create_directories(state.screenshot_dir);
+    });
+    if (!session) {
+        report_start_failure();
+        return 1;
+    }
+    web::set_session(std::move(session));
+    emscripten_set_main_loop_arg(frame, nullptr, 0, false);
+    report_started();
+    return 0;
+}

@@ -1,0 +1,184 @@
+// The page around the explorer (docs/web.md): sizes the canvas in device
+// pixels, starts main() once a practice assignment or a share link is in the
+// work folder, turns the explorer's written files into downloads and its
+// File > Open into the browser's file chooser, and offers window.m3055, the
+// test API.
+'use strict';
+(function () {
+  const WORK = '/work';
+  const canvas = document.getElementById('canvas');
+  const note = document.getElementById('note');
+  const message = document.getElementById('message');
+  const fileInput = document.getElementById('file');
+  let started, failed;
+  const ready = new Promise((resolve, reject) => { started = resolve; failed = reject; });
+
+  function deviceSize() {
+    const dpr = window.devicePixelRatio || 1;
+    const rect = canvas.getBoundingClientRect();
+    return [Math.max(1, Math.round(rect.width * dpr)), Math.max(1, Math.round(rect.height * dpr))];
+  }
+  function say(text) { note.textContent = text; note.title = text; }
+  function basename(path) { return path.split('/').pop(); }
+
+  // Files written by the explorer (Save, Save as, F12) leave as downloads.
+  function download(path) {
+    const bytes = Module.FS.readFile(path);
+    const type = path.endsWith('.png') ? 'image/png' : 'application/json';
+    const url = URL.createObjectURL(new Blob([bytes], { type }));
+    const a = document.createElement('a');
+    a.href = url;
+    a.download = basename(path);
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+    say('downloaded ' + basename(path));
+  }
+
+  function writeWorkFile(name, data) {
+    const path = WORK + '/' + name;
+    const parts = path.split('/').slice(1, -1);
+    let dir = '';
+    for (const part of parts) {
+      dir += '/' + part;
+      try { Module.FS.mkdir(dir); } catch (e) { /* exists */ }
+    }
+    Module.FS.writeFile(path, data);
+    return path;
+  }
+
+  // Picked files: every file into the work folder, then the scene (or the
+  // one .brdf) opened, so a scene finds the .brdf files picked with it.
+  async function openFiles(files) {
+    const list = Array.from(files);
+    for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
+    const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
+    if (!scene) return;
+    const error = Module.ccall('m3055_open_file', 'string', ['string'], [scene.name]);
+    say(error ? error : 'opened ' + scene.name);
+    canvas.focus();
+  }
+  fileInput.addEventListener('change', () => { openFiles(fileInput.files); fileInput.value = ''; });
+  document.getElementById('open').addEventListener('click', () => fileInput.click());
+
+  async function shareLink() {
+    await ready;
+    const fragment = Module.ccall('m3055_share_fragment', 'string', [], []);
+    return location.origin + location.pathname + location.search + '#' + fragment;
+  }
+  document.getElementById('share').addEventListener('click', async () => {
+    const link = await shareLink();
+    try {
+      await navigator.clipboard.writeText(link);
+      say('share link copied (' + link.length + ' characters)');
+    } catch (e) {
+      window.prompt('Copy the share link:', link);
+    }
+  });
+
+  // Browser shortcuts that would fight the explorer's: Ctrl+S saves the
+  // scene, not the page; Ctrl+O, Ctrl+Z/Y, F1 and F12 are the explorer's.
+  window.addEventListener('keydown', (e) => {
+    const ctrl = e.ctrlKey || e.metaKey;
+    if ((ctrl && ['s', 'o', 'z', 'y'].includes(e.key.toLowerCase())) || e.key === 'F1' || e.key === 'F12') {
+      e.preventDefault();
+    }
+  }, true);
+
+  // Practice mode: ?assignment=FOLDER/ fetches the assignment and its scenes
+  // into the work folder; main() then starts with --assignment.
+  async function fetchAssignment(url) {
+    const base = new URL(url.endsWith('/') || url.endsWith('.json') ? url : url + '/', location.href);
+    const jsonUrl = base.href.endsWith('.json') ? base : new URL('assignment.json', base);
+    const response = await fetch(jsonUrl);
+    if (!response.ok) throw new Error('assignment ' + jsonUrl + ': HTTP ' + response.status);
+    const text = await response.text();
+    const path = writeWorkFile('assignment/assignment.json', text);
+    let spec = {};
+    try { spec = JSON.parse(text); } catch (e) { return path; }  // the explorer names the error
+    for (const key of ['reference', 'start']) {
+      const name = spec[key];
+      if (typeof name !== 'string' || name.includes('..') || name.startsWith('/')) continue;
+      const r = await fetch(new URL(name, jsonUrl));
+      if (r.ok) writeWorkFile('assignment/' + name, new Uint8Array(await r.arrayBuffer()));
+    }
+    return path;
+  }
+
+  async function start() {
+    const args = [];
+    const params = new URLSearchParams(location.search);
+    try {
+      if (params.get('assignment')) args.push('--assignment', await fetchAssignment(params.get('assignment')));
+      const hash = new URLSearchParams(location.hash.slice(1));
+      if (hash.get('scene')) {
+        writeWorkFile('.keep', '');
+        const error = Module.ccall('m3055_unpack_share_token', 'string', ['string', 'string'],
+                                   [hash.get('scene'), WORK + '/shared-scene.json']);
+        if (error) say(error); else args.push(WORK + '/shared-scene.json');
+      }
+    } catch (e) {
+      say(String(e.message || e));
+    }
+    const [w, h] = deviceSize();
+    canvas.width = w;
+    canvas.height = h;
+    Module.callMain(args);
+  }
+
+  window.m3055Page = {
+    download,
+    chooseFile: () => fileInput.click(),
+    started: () => {
+      message.remove();
+      say('ready: drop a scene or .brdf file on the explorer, or use Open…');
+      canvas.focus();
+      started();
+    },
+    startFailed: () => {
+      message.textContent = 'The explorer could not start: ' + (window.m3055Page.lastError || 'see the console');
+      failed(new Error(message.textContent));
+    },
+  };
+
+  window.addEventListener('resize', () => {
+    if (!Module.setCanvasSize) return;
+    const [w, h] = deviceSize();
+    if (w !== canvas.width || h !== canvas.height) Module.setCanvasSize(w, h);
+  });
+
+  window.Module = {
+    canvas,
+    print: (text) => console.log(text),
+    printErr: (text) => { console.warn(text); window.m3055Page.lastError = text; },
+    onRuntimeInitialized: start,
+    onAbort: (what) => { message.textContent = 'The explorer stopped: ' + what; failed(new Error(String(what))); },
+  };
+
+  // The test API (docs/web.md): each call waits for the explorer to start.
+  function rejectIf(error) { if (error) throw new Error(error); }
+  window.m3055 = {
+    ready,
+    async loadScene(jsonText, name = 'scene.json') {
+      await ready;
+      writeWorkFile(name, jsonText);
+      rejectIf(Module.ccall('m3055_load_scene', 'string', ['string'], [name]));
+    },
+    async displayPNG() {
+      await ready;
+      const url = Module.ccall('m3055_display_png', 'string', [], []);
+      if (!url) throw new Error(Module.ccall('m3055_last_error', 'string', [], []));
+      return url;
+    },
+    async addFile(name, text) {
+      await ready;
+      writeWorkFile(name, text);
+    },
+    async gradeLine() {
+      await ready;
+      return Module.ccall('m3055_grade_line', 'string', [], []);
+    },
+    shareLink,
+  };
+})();

@@ -1,0 +1,132 @@
+// The functions page.js calls (docs/web.md "Test API" and the page's own
+// controls). Each is synchronous here; page.js wraps them in Promises. A
+// returned string lives until the next call of the same function.
+#include "app/web/page.h"
+#include "explore/brdf_files.h"
+#include "explore/files.h"
+#include "explore/share_link.h"
+#include "explore/state.h"
+#include "gl/program.h"
+#include "image/image.h"
+#include "io/message_text.h"
+
+#include <emscripten.h>
+
+#include <exception>
+#include <memory>
+#include <string>
+
+namespace m3055::web {
+
+namespace {
+std::unique_ptr<ExplorerSession> g_session;
+}
+
+ExplorerSession* session() { return g_session.get(); }
+void set_session(std::unique_ptr<ExplorerSession> session) { g_session = std::move(session); }
+
+std::string render_error_line(const std::exception& error) {
+    if (dynamic_cast<const ShaderError*>(&error)) return std::string("m3055: ") + error.what();
+    return text::one_line(std::string("m3055: ") + error.what());
+}
+
+}  // namespace m3055::web
+
+using namespace m3055;
+
+extern "C" {
+
+// Loads the scene file `path` (in the work folder) as the explorer's scene
+// and renders it. "" on success; else the line `m3055 render --scene PATH`
+// prints for it (the previous scene stays when the file does not load).
+EMSCRIPTEN_KEEPALIVE const char* m3055_load_scene(const char* path) {
+    static std::string result;
+    result.clear();
+    ExplorerSession* s = web::session();
+    if (!s) return result.assign("m3055: the explorer did not start").c_str();
+    explore::ExplorerState& state = s->state();
+    if (!explore::load_scene(state, path)) return result.assign(text::one_line("m3055: " + state.load_error)).c_str();
+    try {
+        s->render_display_now();
+    } catch (const std::exception& e) {
+        result = web::render_error_line(e);
+    }
+    return result.c_str();
+}
+
+// A picked or dropped file: a .brdf opens on the selected object, anything
+// else loads as a scene. "" or the error (also shown in the explorer).
+EMSCRIPTEN_KEEPALIVE const char* m3055_open_file(const char* path) {
+    static std::string result;
+    result.clear();
+    ExplorerSession* s = web::session();
+    if (!s) return result.assign("m3055: the explorer did not start").c_str();
+    explore::ExplorerState& state = s->state();
+    const bool ok = explore::is_brdf_path(path) ? explore::open_brdf(state, path) : explore::load_scene(state, path);
+    if (!ok) {
+        state.show_load_error = !explore::is_brdf_path(path);
+        result = explore::is_brdf_path(path) ? state.brdf_error : state.load_error;
+    }
+    state.changed();
+    return result.c_str();
+}
+
+// The PNG `m3055 render` writes for the scene as it is now, as a data: URL;
+// on a render error, "" (m3055_last_error says why).
+EMSCRIPTEN_KEEPALIVE const char* m3055_display_png(void) {
+    static std::string result, error;
+    result.clear();
+    ExplorerSession* s = web::session();
+    if (!s) return result.c_str();
+    try {
+        const std::vector<std::uint8_t> png = encode_png(s->render_display_now());
+        result = "data:image/png;base64," + explore::base64_encode(std::string(png.begin(), png.end()));
+    } catch (const std::exception& e) {
+        s->state().error = web::render_error_line(e);
+    }
+    return result.c_str();
+}
+
+// The explorer's last error line ("" when none).
+EMSCRIPTEN_KEEPALIVE const char* m3055_last_error(void) {
+    ExplorerSession* s = web::session();
+    return s ? s->state().error.c_str() : "";
+}
+
+// The share link's fragment for the scene as it is now: "scene=TOKEN".
+EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
+    static std::string result;
+    result.clear();
+    if (ExplorerSession* s = web::session()) {
+        try {
+            result = "scene=" + explore::share_token(s->state().scene);
+        } catch (const std::exception& e) {
+            s->state().error = e.what();
+        }
+    }
+    return result.c_str();
+}
+
+// A share link's token unpacked into the work folder as `path` (a scene
+// file main() then starts with). "" or the one-line reason.
+EMSCRIPTEN_KEEPALIVE const char* m3055_unpack_share_token(const char* token, const char* path) {
+    static std::string result;
+    result.clear();
+    try {
+        const std::string text = explore::scene_text_from_share_token(token);
+        write_file_atomic(path, text.data(), text.size());
+    } catch (const std::exception& e) {
+        result = e.what();
+    }
+    return result.c_str();
+}
+
+// The practice grade line as `m3055 grade` scores it ("" outside practice mode).
+EMSCRIPTEN_KEEPALIVE const char* m3055_grade_line(void) {
+    static std::string result;
+    ExplorerSession* s = web::session();
+    result = s ? s->grade_now() : "";
+    return result.c_str();
+}
+
+}  // extern "C"

@@ -1,0 +1,307 @@
+// The browser build (scripts/web) against the desktop, in Debian's headless
+// Chromium through puppeteer-core (docs/web.md "Tests"):
+//  1. every scene of a set (scenes/, the worked assignment's, every model
+//     under one and three lights, every shape, translucency, bits 1-8, .brdf
+//     files) loaded through window.m3055 and its display PNG compared level by
+//     level with `m3055 render`'s; a scene m3055 render refuses must be
+//     rejected with the same line;
+//  2. real input through the DevTools protocol: a slider dragged changes the
+//     display and Ctrl+Z gives identical bytes; a value typed; a .brdf file
+//     opened through the file chooser; the share link's round trip; practice
+//     mode's score equal to `m3055 grade`'s.
+// Usage: node browser_test.js --m3055 BUILD/m3055 --site build-web/site
+//          --work DIR --backend swiftshader|angle [--out DIR]
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const http = require('http');
+const zlib = require('zlib');
+const { execFileSync } = require('child_process');
+const puppeteer = require('puppeteer-core');
+const { decodePng, compareLevels } = require('./png');
+
+const repo = path.resolve(__dirname, '..', '..');
+function option(name, fallback) {
+  const i = process.argv.indexOf('--' + name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+}
+const m3055 = path.resolve(option('m3055', path.join(repo, 'build', 'm3055')));
+const site = path.resolve(option('site', path.join(repo, 'build-web', 'site')));
+const work = path.resolve(option('work', fs.mkdtempSync('/tmp/m3055-web-')));
+const backend = option('backend', 'swiftshader');
+const out = path.resolve(option('out', work));
+fs.mkdirSync(work, { recursive: true });
+fs.mkdirSync(out, { recursive: true });
+
+const BACKENDS = {
+  // SwiftShader: the CPU WebGL2 every Chromium has (no WEBGL_blend_func_extended).
+  swiftshader: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  // ANGLE over the machine's OpenGL (Mesa llvmpipe here).
+  angle: ['--enable-gpu', '--ignore-gpu-blocklist', '--use-gl=angle', '--use-angle=gl-egl'],
+};
+
+let failures = 0;
+function check(ok, what) {
+  console.log((ok ? 'ok    ' : 'FAIL  ') + what);
+  if (!ok) ++failures;
+}
+
+// ---- The scene set -----------------------------------------------------------
+function sceneSet() {
+  const scenes = [];  // { set, name, text, files: {name: text} }
+  const add = (set, name, text, files = {}) => scenes.push({ set, name, text, files });
+  for (const f of fs.readdirSync(path.join(repo, 'scenes')).filter((f) => f.endsWith('.json')).sort())
+    add('scenes/', f, fs.readFileSync(path.join(repo, 'scenes', f), 'utf8'));
+  const assignment = path.join(repo, 'assignments', 'three-point');
+  for (const f of ['reference.json', 'start.json'])
+    add('assignment', 'assignment-' + f, fs.readFileSync(path.join(assignment, f), 'utf8'));
+  for (const f of fs.readdirSync(path.join(assignment, 'submissions')).filter((f) => f.endsWith('.json')).sort())
+    add('assignment', 'submission-' + f, fs.readFileSync(path.join(assignment, 'submissions', f), 'utf8'));
+
+  const camera = { projection: 'perspective', position: [0, 0, 4.5], target: [0, 0, 0], up: [0, 1, 0], fov_y_deg: 30 };
+  const oneLight = [{ type: 'directional', direction: [1, 1, 1], intensity: 1.0, color: [1, 1, 1] }];
+  const threeLights = [
+    { type: 'point', position: [3, 2, 4], intensity: 2.0, color: [1, 0.8, 0.6], attenuation: [1, 0.1, 0] },
+    { type: 'spot', position: [-3, 1, 3], spot_direction: [0.6, -0.2, -0.6], spot_exponent: 4, intensity: 1.5, color: [0.6, 0.7, 1] },
+    { type: 'directional', direction: [0, -1, 0.3], intensity: 0.5, color: [1, 1, 1] },
+  ];
+  const scene = (lights, objects, bits = 5) => JSON.stringify({
+    display: { width: 512, height: 320, bits }, background: [0.1, 0.1, 0.15], camera, lights, objects }, null, 2);
+  const models = execFileSync(m3055, ['models', '--names'], { encoding: 'utf8' }).trim().split(/\s+/);
+  for (const model of models) {
+    for (const [setup, lights] of [['one', oneLight], ['three', threeLights]]) {
+      // The paper's models take "color", the classic ones "kd": the one m3055 accepts.
+      let text;
+      for (const key of ['color', 'kd']) {
+        text = scene(lights, [{ shape: 'sphere', center: [0, 0, 0], radius: 1, material: { model, [key]: [0.8, 0.5, 0.3] } }]);
+        fs.writeFileSync(path.join(work, 'probe.json'), text);
+        try { execFileSync(m3055, ['render', '--scene', 'probe.json', '--out', 'probe.png'], { cwd: work, stdio: 'ignore' }); break; } catch (e) { /* next key */ }
+      }
+      add('models', `model-${model}-${setup}.json`, text);
+    }
+  }
+  const plain = { model: 'phong', kd: [0.7, 0.5, 0.3] };
+  const shapes = {
+    cube: { shape: 'cube', center: [0, 0, 0], size: 1.2, rotation_deg: [20, 30, 0], material: plain },
+    cylinder: { shape: 'cylinder', center: [0, 0, 0], radius: 0.6, height: 1.4, material: plain },
+    torus: { shape: 'torus', center: [0, 0, 0], axis: [0, 0.8, 0.6], major_radius: 0.8, minor_radius: 0.3, material: plain },
+    plane: { shape: 'plane', center: [0, -0.5, 0], normal: [0, 1, 0], size: 3, material: plain },
+  };
+  for (const [name, object] of Object.entries(shapes)) add('shapes', `shape-${name}.json`, scene(threeLights, [object]));
+  const glass = { model: 'translucent', color: [0.3, 0.6, 0.9], d: 0.5, w: 1, m: 10, t_n: 0.2, t_p: 0.6 };
+  add('translucency', 'translucent-spheres.json', scene(oneLight, [
+    { shape: 'sphere', center: [0.4, 0, -0.5], radius: 0.8, material: { model: 'highlight', color: [0.9, 0.3, 0.2] } },
+    { shape: 'sphere', center: [-0.3, 0, 0.5], radius: 0.7, material: glass }]));
+  add('translucency', 'translucent-torus.json', scene(oneLight, [
+    { shape: 'sphere', center: [0, 0, -1], radius: 0.6, material: { model: 'highlight', color: [0.9, 0.3, 0.2] } },
+    { ...shapes.torus, material: glass }]));
+  const fig10 = JSON.parse(fs.readFileSync(path.join(repo, 'scenes', 'fig10.json'), 'utf8'));
+  for (let bits = 1; bits <= 8; ++bits) {
+    add('bits 1-8', `bits-${bits}.json`, JSON.stringify({ ...fig10, display: { ...fig10.display, bits } }, null, 2));
+  }
+  const brdfDir = path.join(repo, 'tests', 'data', 'brdf');
+  for (const f of fs.readdirSync(brdfDir).filter((f) => f.endsWith('.brdf')).sort()) {
+    add('.brdf', `brdf-${f}.json`, scene(oneLight, [{ shape: 'sphere', center: [0, 0, 0], radius: 1, material: { model: 'brdf', file: f } }]),
+        { [f]: fs.readFileSync(path.join(brdfDir, f), 'utf8') });
+  }
+  return scenes;
+}
+
+// `m3055 render` of each scene, in the work folder under the scene's own name.
+function renderNatively(scenes) {
+  for (const s of scenes) {
+    for (const [name, text] of Object.entries(s.files)) fs.writeFileSync(path.join(work, name), text);
+    fs.writeFileSync(path.join(work, s.name), s.text);
+    try {
+      execFileSync(m3055, ['render', '--scene', s.name, '--out', s.name + '.png'], { cwd: work, stdio: ['ignore', 'ignore', 'pipe'] });
+      s.png = fs.readFileSync(path.join(work, s.name + '.png'));
+    } catch (e) {
+      s.error = String(e.stderr).trim().split('\n')[0];
+    }
+  }
+}
+
+// ---- A static server for the site (what any web host does) ------------------
+function serve(root) {
+  const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.json': 'application/json' };
+  const server = http.createServer((req, res) => {
+    const url = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    let file = path.join(root, path.normalize(url));
+    if (!file.startsWith(root)) { res.writeHead(403); return res.end(); }
+    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
+    if (!fs.existsSync(file)) { res.writeHead(404); return res.end(); }
+    res.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' });
+    fs.createReadStream(file).pipe(res);
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
+}
+
+function pngOf(dataUrl) { return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64'); }
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+
+async function openPage(browser, url) {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 750 });  // the canvas: 1280 x 720 under the page's bar
+  page.on('pageerror', (e) => console.log('  page error: ' + e.message));
+  const start = Date.now();
+  await page.goto(url, { waitUntil: 'load' });
+  await page.evaluate(() => window.m3055.ready);
+  page.readyMs = Date.now() - start;
+  return page;
+}
+
+async function compareScenes(page, scenes) {
+  const sets = {};
+  for (const s of scenes) {
+    const result = await page.evaluate(async (scene) => {
+      try {
+        for (const [name, text] of Object.entries(scene.files)) await window.m3055.addFile(name, text);
+        await window.m3055.loadScene(scene.text, scene.name);
+        return { png: await window.m3055.displayPNG() };
+      } catch (e) {
+        return { error: e.message };
+      }
+    }, { name: s.name, text: s.text, files: s.files });
+    const set = (sets[s.set] = sets[s.set] || { scenes: 0, identical: 0, pixels: 0, differing: 0, maxLevels: 0, refused: 0, bad: [] });
+    ++set.scenes;
+    if (s.error !== undefined || result.error !== undefined) {
+      if (s.error === result.error) { ++set.refused; continue; }
+      set.bad.push(`${s.name}: m3055 render: ${s.error || 'ok'} / page: ${result.error || 'ok'}`);
+      continue;
+    }
+    const web = pngOf(result.png);
+    fs.writeFileSync(path.join(out, `${backend}-${s.name}.png`), web);
+    if (web.equals(s.png)) { ++set.identical; set.pixels += 512 * 320; continue; }
+    const bits = JSON.parse(s.text).display.bits || 5;
+    const c = compareLevels(decodePng(s.png), decodePng(web), bits);
+    set.pixels += c.pixels || 0;
+    set.differing += c.differing;
+    set.maxLevels = Math.max(set.maxLevels, c.maxLevels);
+    if (c.sizeDiffers || c.differing / c.pixels > 0.001 || c.maxLevels > 1)
+      set.bad.push(`${s.name}: ${c.differing} px on another level (max ${c.maxLevels})`);
+  }
+  for (const [name, set] of Object.entries(sets)) {
+    const percent = set.pixels ? (100 * set.differing / set.pixels).toFixed(4) : '0';
+    check(set.bad.length === 0, `${backend}: ${name}: ${set.scenes} scenes, ${set.identical} byte-identical to m3055 render, ` +
+      `${set.refused} refused with the same line; ${percent} % of pixels on another level, at most ${set.maxLevels} level(s)`);
+    for (const b of set.bad) console.log('        ' + b);
+  }
+}
+
+// Real mouse and keyboard input (the DevTools protocol's Input domain), at the
+// places the side panel puts the spec example's controls at 1280 x 720.
+const M_SLIDER = { y: 384 + 0, grab: 178 };  // "m (size)", page coordinates (the bar is 30 px)
+async function realInput(browser, base) {
+  const page = await openPage(browser, base);
+  const spec = fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8');
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'), spec);
+  await sleep(500);
+  const before = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  await page.screenshot({ path: path.join(out, `${backend}-page.png`) });
+
+  // Drag the m slider to the right: the highlight changes.
+  await page.mouse.move(M_SLIDER.grab, M_SLIDER.y);
+  await page.mouse.down();
+  for (let x = M_SLIDER.grab; x <= M_SLIDER.grab + 60; x += 10) { await page.mouse.move(x, M_SLIDER.y); await sleep(30); }
+  await page.mouse.up();
+  await sleep(400);
+  const dragged = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  check(!dragged.equals(before), `${backend}: dragging the "m (size)" slider changes the display`);
+  await page.screenshot({ path: path.join(out, `${backend}-after-drag.png`) });
+
+  // Ctrl+Z over the display (not in a text field): the exact bytes of before.
+  await page.mouse.move(900, 300);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('z');
+  await page.keyboard.up('Control');
+  await sleep(400);
+  const undone = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  check(undone.equals(before), `${backend}: Ctrl+Z after the drag gives the display byte for byte as before`);
+
+  // Ctrl+click the slider and type a value: m3055 render with that value.
+  await page.keyboard.down('Control');
+  await page.mouse.click(M_SLIDER.grab, M_SLIDER.y);
+  await page.keyboard.up('Control');
+  await sleep(200);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.type('20');
+  await page.keyboard.press('Enter');
+  await sleep(400);
+  const typed = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  fs.writeFileSync(path.join(work, 'spec_example.json'), spec);
+  execFileSync(m3055, ['render', '--scene', 'spec_example.json', '--set', 'objects[0].material.m=20', '--out', 'typed.png'], { cwd: work });
+  check(typed.equals(fs.readFileSync(path.join(work, 'typed.png'))),
+    `${backend}: typing 20 into "m (size)" gives m3055 render --set objects[0].material.m=20, byte for byte`);
+
+  // The share link opens the same scene in a new page.
+  const link = await page.evaluate(() => window.m3055.shareLink());
+  const shared = await openPage(browser, link);
+  const sharedPng = pngOf(await shared.evaluate(() => window.m3055.displayPNG()));
+  check(sharedPng.equals(typed), `${backend}: the share link (${link.length} characters) restores the scene exactly`);
+  await shared.close();
+
+  // A .brdf file through the page's file chooser: it becomes object 0's material;
+  // the scene it makes (read back through the share link) renders the same natively.
+  const brdf = path.join(repo, 'tests', 'data', 'brdf', 'lambert.brdf');
+  const [chooser] = await Promise.all([page.waitForFileChooser(), page.click('#open')]);
+  await chooser.accept([brdf]);
+  await sleep(800);
+  const opened = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  const token = new URLSearchParams((await page.evaluate(() => window.m3055.shareLink())).split('#')[1]).get('scene');
+  const sceneText = zlib.inflateSync(Buffer.from(token, 'base64url')).toString();
+  const openedScene = JSON.parse(sceneText);
+  check(openedScene.objects[0].material.model === 'brdf', `${backend}: the file chooser opened lambert.brdf on object 0`);
+  openedScene.objects[0].material.file = 'lambert.brdf';  // the page's work folder is /work
+  fs.copyFileSync(brdf, path.join(work, 'lambert.brdf'));
+  fs.writeFileSync(path.join(work, 'opened.json'), JSON.stringify(openedScene));
+  execFileSync(m3055, ['render', '--scene', 'opened.json', '--out', 'opened.png'], { cwd: work });
+  check(opened.equals(fs.readFileSync(path.join(work, 'opened.png'))), `${backend}: ... and the display is m3055 render's of that scene, byte for byte`);
+  await page.screenshot({ path: path.join(out, `${backend}-brdf-opened.png`) });
+  await page.close();
+
+  // Practice mode: the page's live grade of the start scene equals m3055 grade's.
+  const practice = await openPage(browser, base + '?assignment=assignments/three-point/');
+  await sleep(500);
+  const line = await practice.evaluate(() => window.m3055.gradeLine());
+  await practice.screenshot({ path: path.join(out, `${backend}-practice.png`) });
+  await practice.close();
+  const folder = path.join(work, 'practice');
+  fs.mkdirSync(path.join(folder, 'submissions'), { recursive: true });
+  fs.copyFileSync(path.join(repo, 'assignments', 'three-point', 'start.json'), path.join(folder, 'submissions', 'student.json'));
+  execFileSync(m3055, ['grade', path.join(repo, 'assignments', 'three-point', 'assignment.json'), path.join(folder, 'submissions'),
+    '--out', path.join(folder, 'out')], { stdio: 'ignore' });
+  const csv = fs.readFileSync(path.join(folder, 'out', 'grades.csv'), 'utf8');
+  const score = (line.match(/score=([0-9.]+)/) || [])[1];
+  check(score !== undefined && csv.split('\n').some((row) => row.startsWith('student,' + score + ',') || row.split(',').includes(score)),
+    `${backend}: practice mode's grade (${line.split('\t')[0]}) is m3055 grade's (grades.csv: ${csv.split('\n')[1]})`);
+}
+
+(async () => {
+  const scenes = sceneSet();
+  renderNatively(scenes);
+  const server = await serve(site);
+  const base = `http://127.0.0.1:${server.address().port}/`;
+  const browser = await puppeteer.launch({
+    executablePath: process.env.M3055_CHROMIUM || '/usr/bin/chromium',
+    args: ['--headless=new', '--no-sandbox', '--window-size=1280,750', ...BACKENDS[backend]],
+  });
+  try {
+    const page = await openPage(browser, base);
+    const renderer = await page.evaluate(() => {
+      const gl = document.createElement('canvas').getContext('webgl2');
+      const info = gl.getExtension('WEBGL_debug_renderer_info');
+      return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+    });
+    console.log(`${backend}: WebGL2 renderer: ${renderer}; page ready in ${page.readyMs} ms`);
+    await compareScenes(page, scenes);
+    await page.close();
+    await realInput(browser, base);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  console.log(failures ? `browser_test (${backend}): ${failures} failed` : `browser_test (${backend}): all passed`);
+  process.exit(failures ? 1 : 0);
+})().catch((e) => { console.error(e); process.exit(1); });
