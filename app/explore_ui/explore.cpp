@@ -708,6 +708,8 @@ int ExplorerSession::finish() { return parts_->explorer->finish(); }
 
 ExplorerState& ExplorerSession::state() { return parts_->state; }
 
+long ExplorerSession::renders() const { return parts_->info.renders; }
+
 Rgb8Image ExplorerSession::render_display_now() { return parts_->explorer->render_display_now(); }
 
 std::string ExplorerSession::grade_now() { return parts_->explorer->grade_now(); }

@@ -49,6 +49,7 @@ public:
     bool step();
     int finish();  // --stats; the exit status
     explore::ExplorerState& state();
+    long renders() const;  // scene renders so far (a changed scene drawn once each)
     // The display as `m3055 render` writes it for the scene as it is now.
     Rgb8Image render_display_now();
     // Practice mode against an assignment (--assignment; the page's ?assignment=).

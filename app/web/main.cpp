@@ -29,8 +29,15 @@ EM_JS(void, report_start_failure, (), { window.m3055Page.startFailed(); });
 // The page's window.m3055.ready resolves.
 EM_JS(void, report_started, (), { window.m3055Page.started(); });
 
+// A frame that rendered a changed scene: page.js notes input-to-pixels latency.
+EM_JS(void, report_rendered, (), { window.m3055Page.rendered(); });
+
 void frame(void*) {
-    if (ExplorerSession* s = web::session()) s->step();  // the page never ends: nothing quits it
+    ExplorerSession* s = web::session();
+    if (!s) return;
+    const long before = s->renders();
+    s->step();  // the page never ends: nothing quits it
+    if (s->renders() != before) report_rendered();
 }
 
 }  // namespace

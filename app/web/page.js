@@ -127,8 +127,19 @@
     Module.callMain(args);
   }
 
+  // Input to pixels: from a pointer or key event on the canvas to the end of
+  // the animation frame that rendered the changed scene (m3055.latency()).
+  let pendingInput = null;
+  const latencies = [];
+  for (const type of ['mousemove', 'mousedown', 'keydown'])
+    canvas.addEventListener(type, () => { if (pendingInput === null) pendingInput = performance.now(); }, true);
+
   window.m3055Page = {
     download,
+    rendered: () => {
+      if (pendingInput !== null) latencies.push(performance.now() - pendingInput);
+      pendingInput = null;
+    },
     chooseFile: () => fileInput.click(),
     started: () => {
       message.remove();
@@ -180,5 +191,12 @@
       return Module.ccall('m3055_grade_line', 'string', [], []);
     },
     shareLink,
+    // Milliseconds from each input event (the first since the last render) to
+    // the frame that rendered its change; clear: start a new measurement.
+    latency(clear = false) {
+      const samples = latencies.slice();
+      if (clear) latencies.length = 0;
+      return samples;
+    },
   };
 })();

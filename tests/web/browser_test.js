@@ -287,6 +287,30 @@ async function realInput(browser, base) {
     `${backend}: practice mode's grade (${line.split('\t')[0]}) is m3055 grade's (grades.csv: ${csv.split('\n')[1]})`);
 }
 
+// Slider to pixels: a drag of the "m (size)" slider, 40 moves 25 ms apart;
+// the page notes each input's time to the frame that rendered it. Reported
+// (medians and p95 of this run), never asserted: the machine is shared.
+async function measureLatency(browser, base) {
+  const page = await openPage(browser, base);
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
+    fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
+  await sleep(1500);  // the specialized program compiled when idle
+  await page.mouse.move(M_SLIDER.grab, M_SLIDER.y);
+  await page.mouse.down();
+  await page.evaluate(() => window.m3055.latency(true));
+  for (let i = 0; i < 40; ++i) {
+    await page.mouse.move(M_SLIDER.grab + 4 * (i % 20) + (i >= 20 ? -2 : 2), M_SLIDER.y);
+    await sleep(25);
+  }
+  await page.mouse.up();
+  await sleep(300);
+  const samples = (await page.evaluate(() => window.m3055.latency(true))).sort((a, b) => a - b);
+  const at = (q) => samples[Math.min(samples.length - 1, Math.floor(q * samples.length))];
+  console.log(`${backend}: slider to pixels: ${samples.length} renders, p50 ${at(0.5).toFixed(1)} ms, ` +
+              `p95 ${at(0.95).toFixed(1)} ms (page ready in ${page.readyMs} ms)`);
+  await page.close();
+}
+
 (async () => {
   const scenes = sceneSet();
   renderNatively(scenes);
@@ -307,6 +331,7 @@ async function realInput(browser, base) {
     await compareScenes(page, scenes);
     await page.close();
     await realInput(browser, base);
+    await measureLatency(browser, base);
   } finally {
     await browser.close();
     server.close();
