@@ -114,6 +114,14 @@ Layout layout_for_panes(float width, float height, bool panels, int panes, int w
     return usual;
 }
 
+void fold_plots(Layout& l, float title_h) {
+    if (!l.plots_under_side) return;
+    const float bottom = l.bottom.y + l.bottom.h;
+    l.bottom.h = std::min(title_h, l.bottom.h);
+    l.bottom.y = bottom - l.bottom.h;
+    l.side.h = l.bottom.y - l.side.y;
+}
+
 Extent grid_extent(const Grid& g, int n, int w, int h, float fb_scale, float label_h) {
     const float iw = float(w) * g.shown / fb_scale, ih = float(h) * g.shown / fb_scale;
     Extent e;

@@ -64,6 +64,10 @@ inline constexpr float kMinNarrowSideWidth = 236.0f;   // the narrowest side pan
 inline constexpr float kPlotsUnderSideHeight = 430.0f;
 inline constexpr float kMinStatsHeight = 100.0f;  // five lines: timings, scale, levels used, a message
 
+// plots_under_side with the plots folded to their title bar (title_h high):
+// the side panel takes the rest of the column; its controls stay where they were.
+void fold_plots(Layout& l, float title_h);
+
 // The largest whole-pixel magnification of a w x h image that fits
 // area_w x area_h (framebuffer pixels); 0 when even 1:1 does not fit.
 int whole_pixel_scale(int w, int h, float area_w, float area_h);

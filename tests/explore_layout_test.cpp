@@ -170,6 +170,27 @@ TEST(ExploreLayout, TheColumnOnlyWhereItMagnifiesMore) {
     }
 }
 
+// The plots under the side panel folded to their title bar: the side panel
+// takes the column; its top (and its controls) stay; nothing else moves.
+TEST(ExploreLayout, FoldedPlotsGiveTheColumnToTheSidePanel) {
+    const Layout open = layout_for_panes(1920, 1080, true, 1, 512, 320, 1.0f, 21.0f);
+    Layout folded = open;
+    fold_plots(folded, 21.0f);
+    EXPECT_FLOAT_EQ(folded.side.y, open.side.y);
+    EXPECT_FLOAT_EQ(folded.side.h, 1080.0f - 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.y, 1080.0f - 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.h, 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.w, open.bottom.w);
+    EXPECT_FLOAT_EQ(folded.display.x, open.display.x);
+    EXPECT_FLOAT_EQ(folded.display.h, open.display.h);
+    // Other layouts have no plots under the side panel: unchanged.
+    const Layout usual = layout_for_panes(1280, 720, true, 1, 512, 320, 1.0f, 21.0f);
+    Layout same = usual;
+    fold_plots(same, 21.0f);
+    EXPECT_FLOAT_EQ(same.side.h, usual.side.h);
+    EXPECT_FLOAT_EQ(same.bottom.h, usual.bottom.h);
+}
+
 TEST(ExploreLayout, GridExtentIsThePanesAndTheirLabels) {
     const Rect area{0, 0, 2000, 1000};
     const Grid one = best_grid(1, 512, 320, area, 1.0f, 21.0f);

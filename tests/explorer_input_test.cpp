@@ -528,6 +528,43 @@ TEST_F(ExplorerInput, At1920x1080TheDisplayShowsAt3xBesideTheColumn) {
     EXPECT_LE(at.y + 3 * 320, int(kBig.stats.y)) << "the statistics under it";
 }
 
+// At 1920 x 1080 the arrow on the plots' title bar (under the side panel)
+// folds them: the side panel takes the column, its controls where they
+// were; the arrow, now at the column's foot, unfolds them.
+TEST_F(ExplorerInput, At1920x1080FoldingThePlotsGivesTheColumnToTheSidePanel) {
+    ASSERT_TRUE(start(1920, 1080, {"--compile-at-once"}));  // no "compiling..." in the menu bar meanwhile
+    const Rgb8Image expected = headless(dir_);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image open =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, expected).scale > 0; });
+    // The title bar's arrow: its frame's padding in from the left, its middle.
+    constexpr int kTitleH = 21, kArrowX = 12;  // ImGui's frame height at the explorer's 15-px font
+    const int side_w = int(kBig.side.w) - 20;  // without the scrollbar, which shrinks as the panel grows
+    const int controls_h = int(kBig.side.h) - 60;  // under the menu bar, above the panel's old foot
+    app_->click(kArrowX, int(kBig.bottom.y) + kTitleH / 2);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image folded = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
+        return differing_pixels(crop(s, 0, int(kBig.bottom.y) + 40, side_w, 300),
+                                crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)) > 5000;
+    });
+    ASSERT_GT(differing_pixels(crop(folded, 0, int(kBig.bottom.y) + 40, side_w, 300),
+                               crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)),
+              5000)
+        << "the side panel's sections where the polar plot was";
+    EXPECT_EQ(differing_pixels(crop(folded, 0, 45, side_w, controls_h), crop(open, 0, 45, side_w, controls_h)), 0)
+        << "the controls stayed where they were";
+    app_->click(kArrowX, 1080 - kTitleH / 2);
+    app_->move(kRestX, kRestY);
+    // The column as it was, but for the title bar (the focused window's colour).
+    const int plots_y = int(kBig.bottom.y) + kTitleH, plots_h = 1080 - plots_y;
+    auto column_differs = [&](const Rgb8Image& s) {
+        return differing_pixels(crop(s, 0, 0, side_w, int(kBig.bottom.y)), crop(open, 0, 0, side_w, int(kBig.bottom.y))) +
+               differing_pixels(crop(s, 0, plots_y, side_w, plots_h), crop(open, 0, plots_y, side_w, plots_h));
+    };
+    const Rgb8Image again = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return column_differs(s) == 0; }, 20);
+    EXPECT_EQ(column_differs(again), 0) << "unfolded: the column as it was";
+}
+
 // Issue 20, item 5: A/B split at 1280 x 720 with the panels shown: both
 // panes at whole pixels (A over B, the plots beside them), never a fraction.
 TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {

@@ -192,10 +192,15 @@ public:
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
         const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0) +
                           (shows_practice_difference() ? 1 : 0);
-        const Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
-                                               renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
-                                               renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
-                                               ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
+        Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
+                                         renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
+                                         renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
+                                         ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
+        // The plots under the side panel folded (their title bar's arrow);
+        // not where the BRDF views take their place.
+        const bool views_shown = state_.show_brdf_views && brdf_views_;
+        if (state_.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
+        const bool plots_were_folded = state_.plots_folded;
         note_free_area(layout, fb_scale);
         apply_mouse();
         note_hovered_row();
@@ -223,7 +228,6 @@ public:
             // where they are a column or a cell (too narrow for both).
             Rect strip = layout.bottom, views = layout.bottom;
             const bool row = !layout.plots_in_cell && !layout.plots_beside && !layout.plots_under_side;
-            const bool views_shown = state_.show_brdf_views && brdf_views_;
             StripShape shape = row ? StripShape::row : StripShape::column;
             if (views_shown && row) {
                 views.w = std::min(460.0f, strip.w * 0.5f);
@@ -238,6 +242,9 @@ public:
             }
             if (!views_shown || row) draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h, shape);
             draw_brdf_views(state_, brdf_views_.get(), views.x, views.y, views.w, views.h);
+            // Folded or unfolded: the side panel takes its new height next frame.
+            if (state_.plots_folded != plots_were_folded)
+                window_.events().frames_owed = std::max(window_.events().frames_owed, 2);
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;

@@ -168,7 +168,19 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     const ImGuiWindowFlags scrolling = shape != StripShape::row
                                            ? ImGuiWindowFlags_None
                                            : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
-    ImGui::Begin("Plane of incidence", nullptr, kFixed | scrolling);
+    if (shape == StripShape::plots) {
+        // Under the side panel: its title bar's arrow folds it (explore.cpp
+        // then gives the column to the side panel).
+        ImGui::SetNextWindowCollapsed(state.plots_folded, ImGuiCond_Always);
+        const bool open = ImGui::Begin(kPlotsTitle, nullptr, (kFixed & ~ImGuiWindowFlags_NoCollapse) | scrolling);
+        state.plots_folded = ImGui::IsWindowCollapsed();
+        if (!open) {
+            ImGui::End();
+            return;
+        }
+    } else {
+        ImGui::Begin(kPlotsTitle, nullptr, kFixed | scrolling);
+    }
     const ImVec2 room = ImGui::GetContentRegionAvail();
     // Beside the stacked panes or in the free cell beside the third of three
     // (explore/layout.h): the three one under another, each the column's width.
