@@ -27,8 +27,11 @@ Layout layout_for(float width, float height, bool panels, float side_width) {
     return l;
 }
 
-Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
-                        float label_h, float side_width) {
+namespace {
+
+// layout_for_panes without the column of plots_under_side.
+Layout usual_layout(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
+                    float label_h, float side_width) {
     if (w > 0 && fb_scale > 0.0f)  // one pane at 1:1 beside the panel, whatever its content asks
         side_width = std::max(kSideWidth, std::min(side_width, width - float(w) / fb_scale - 3.0f * kCompareGap));
     const Layout under = layout_for(width, height, panels, side_width);
@@ -69,6 +72,64 @@ Layout layout_for_panes(float width, float height, bool panels, int panes, int w
         }
     }
     return under;
+}
+
+// The side panel over the plots in one column at the left, the panes at the
+// right at the largest whole magnification the column's narrowest width
+// leaves them, the statistics under the panes; plots_under_side false when
+// no such layout fits.
+Layout column_layout(float width, float height, int panes, int w, int h, float fb_scale, float label_h) {
+    Layout l;
+    const Rect widest{kMinPlotsBesideWidth, 0, width - kMinPlotsBesideWidth, height};
+    if (widest.w <= 0.0f) return l;
+    const Grid g = best_grid(panes, w, h, widest, fb_scale, label_h);
+    if (g.scale < 1) return l;
+    // The panes with half a gap round them (their frames); the column takes
+    // the rest of the width, the statistics the rest of the height.
+    const Extent e = grid_extent(g, panes, w, h, fb_scale, label_h);
+    l.display = {0, 0, std::min(widest.w, e.w + kCompareGap), std::min(height, e.h + kCompareGap)};
+    l.display.x = width - l.display.w;
+    if (height - l.display.h < kMinStatsHeight) l.display.h = height;  // the statistics stay in the column
+    else l.stats = {l.display.x, l.display.h, l.display.w, height - l.display.h};
+    if (best_grid(panes, w, h, l.display, fb_scale, label_h).scale != g.scale) return Layout{};
+    const float column_w = l.display.x;
+    const float plots_h =
+        std::min(height * 0.5f, kPlotsUnderSideHeight + (l.stats.w > 0.0f ? 0.0f : 8.0f * label_h));
+    l.side = {0, 0, column_w, height - plots_h};
+    l.bottom = {0, l.side.h, column_w, plots_h};
+    l.plots_under_side = column_w >= kMinNarrowSideWidth;
+    return l;
+}
+
+}  // namespace
+
+Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
+                        float label_h, float side_width) {
+    const Layout usual = usual_layout(width, height, panels, panes, w, h, fb_scale, label_h, side_width);
+    if (!panels || panes < 1 || w <= 0 || h <= 0 || fb_scale <= 0.0f) return usual;
+    const Layout column = column_layout(width, height, panes, w, h, fb_scale, label_h);
+    if (column.plots_under_side && best_grid(panes, w, h, column.display, fb_scale, label_h).scale >
+                                       best_grid(panes, w, h, usual.display, fb_scale, label_h).scale)
+        return column;
+    return usual;
+}
+
+void fold_plots(Layout& l, float title_h) {
+    if (!l.plots_under_side) return;
+    const float bottom = l.bottom.y + l.bottom.h;
+    l.bottom.h = std::min(title_h, l.bottom.h);
+    l.bottom.y = bottom - l.bottom.h;
+    l.side.h = l.bottom.y - l.side.y;
+}
+
+Extent grid_extent(const Grid& g, int n, int w, int h, float fb_scale, float label_h) {
+    const float iw = float(w) * g.shown / fb_scale, ih = float(h) * g.shown / fb_scale;
+    Extent e;
+    e.w = iw * float(g.columns) + kCompareGap * float(g.columns - 1);
+    // Two panes or more have a label each, above its row (display_view.cpp).
+    const float first_label_h = n >= 2 ? label_h : 0.0f;
+    e.h = first_label_h + ih * float(g.rows) + (kCompareGap + g.row_label_h) * float(g.rows - 1);
+    return e;
 }
 
 // Labels sit above their row. Exceptions that keep a whole magnification

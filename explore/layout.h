@@ -23,10 +23,17 @@ struct Rect {
 // your scene, the reference over the difference) fill the display's area and
 // the plots take the free cell beside the third pane; the side panel is
 // narrowed to what is left of the window.
+// plots_under_side: the panes one whole magnification larger than beside the
+// usual panel (one pane at 3x at 1920 x 1080) at the right; the side panel
+// (its narrow form) over the polar plot and the profile (`bottom`) in the
+// column left of them; the statistics in the band under the panes (`stats`;
+// w == 0: too low for them, they stay under the plots in the column).
 struct Layout {
     Rect side, bottom, display;
+    Rect stats;  // the statistics apart from the plots (plots_under_side only)
     bool plots_beside = false;
     bool plots_in_cell = false;
+    bool plots_under_side = false;
 };
 
 inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
@@ -44,11 +51,22 @@ Layout layout_for(float width, float height, bool panels, float side_width = kSi
 // two columns with the plots in the fourth cell and a narrower side panel
 // (at least kMinNarrowSideWidth). Never a fraction
 // when a layout avoids it; layout_for's when none does (the statistics say
-// "shrunk"; F1 hides the panels).
+// "shrunk"; F1 hides the panels). Where one column at the left for the side
+// panel over the plots (at least kMinPlotsBesideWidth wide) lets the panes
+// show at a larger whole magnification than all of these, that column
+// (plots_under_side: one pane at 3x instead of 2x at 1920 x 1080).
 Layout layout_for_panes(float width, float height, bool panels, int panes, int w, int h, float fb_scale,
                         float label_h, float side_width = kSideWidth);
 inline constexpr float kMinPlotsBesideWidth = 300.0f;  // the narrowest column the plots are useful in
 inline constexpr float kMinNarrowSideWidth = 236.0f;   // the narrowest side panel whose labels still fit
+// plots_under_side: the plots' part of the column (polar plot, profile; the
+// statistics too when the band under the panes is lower than kMinStatsHeight).
+inline constexpr float kPlotsUnderSideHeight = 430.0f;
+inline constexpr float kMinStatsHeight = 100.0f;  // five lines: timings, scale, levels used, a message
+
+// plots_under_side with the plots folded to their title bar (title_h high):
+// the side panel takes the rest of the column; its controls stay where they were.
+void fold_plots(Layout& l, float title_h);
 
 // The largest whole-pixel magnification of a w x h image that fits
 // area_w x area_h (framebuffer pixels); 0 when even 1:1 does not fit.
@@ -69,6 +87,13 @@ Grid fit_grid(int n, int columns, int w, int h, const Rect& area, float fb_scale
 // One row, or (two panes or more) one column, or (three panes or more) two
 // columns, whichever magnifies more.
 Grid best_grid(int n, int w, int h, const Rect& area, float fb_scale, float label_h);
+
+// The room `n` panes take in grid `g` (ImGui units): what display_view.cpp
+// draws, their labels included (one row: the labels' line above it).
+struct Extent {
+    float w = 0, h = 0;
+};
+Extent grid_extent(const Grid& g, int n, int w, int h, float fb_scale, float label_h);
 
 // The display pixel (x, y; y = 0 the top row) under window point (mx, my)
 // when the display is drawn at `shown` (ImGui units); none outside it.

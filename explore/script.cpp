@@ -236,7 +236,8 @@ void section(Call& c) {  // a click on a side panel header: "section Lights clos
     const auto space = rest.find_last_of(' ');
     const std::string name = space == std::string::npos ? "" : rest.substr(0, space), how = rest.substr(space + 1);
     if (name.empty() || (how != "open" && how != "closed")) throw std::runtime_error("section: NAME open|closed");
-    c.state.section_requests[name] = how == "open";
+    if (name == kPlotsTitle) c.state.plots_folded = how == "closed";  // the plots' title bar under the side panel
+    else c.state.section_requests[name] = how == "open";
 }
 
 void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"

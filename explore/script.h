@@ -38,7 +38,8 @@
 //   print_profile [Y]       hover row Y of A (optional), then print the scanline profile (and B's, "profile_b ...", in the split):
 //                           "profile row Y bits B<TAB>R l l ...<TAB>G ...<TAB>B ..." (display levels)
 //   click X Y               a click on display pixel (X, Y): selects the object there
-//   section NAME open|closed   open or close a side panel section (its header's click)
+//   section NAME open|closed   open or close a side panel section (its header's click);
+//                           "Plane of incidence": fold the plots under the side panel (plots_under_side)
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
 //   print_grade             (--assignment) print the live grade once current, graded now if stale:
 //                           "grade score=S max=M passed=yes|no<TAB>reason<TAB>..." (the reasons grade writes)

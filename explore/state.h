@@ -21,6 +21,9 @@
 
 namespace m3055::explore {
 
+// The title of the plots' window (polar plot, profile, statistics).
+inline constexpr const char* kPlotsTitle = "Plane of incidence";
+
 struct ExplorerState {
     Scene scene;             // what is rendered and saved
     Camera camera_home;      // R / "Reset" goes back to this (the loaded scene's camera)
@@ -106,6 +109,10 @@ struct ExplorerState {
     // the lobe's turn (radians).
     bool show_brdf_views = false;
     bool views_log = true;
+    // The plots under the side panel (explore/layout.h, plots_under_side)
+    // folded to their title bar, the side panel taking the column: the
+    // title bar's arrow, or --script's `section Plane of incidence closed`.
+    bool plots_folded = false;
     float lobe_yaw = 0.6f, lobe_pitch = 0.5f;
     // --assignment: the live grade shown in the Assignment section (practice.h).
     PracticeStatus practice;

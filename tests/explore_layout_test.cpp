@@ -103,5 +103,108 @@ TEST(ExploreLayout, ThreePanesAt1280x720TakeTwoColumnsWithThePlotsInTheFourthCel
     EXPECT_FALSE(layout_for_panes(1200, 720, true, 3, 512, 320, 1.0f, label_h).plots_in_cell);
 }
 
+// Issue 20, item 10: at 1920 x 1080 one pane shows at 3x (2x beside the
+// usual 440-px panel): the side panel in its narrow form over the polar plot
+// and the profile in one column at the left, the pane at the right, the
+// statistics in the band under it.
+TEST(ExploreLayout, At1920x1080OnePaneShowsAt3xWithTheSidePanelOverThePlots) {
+    const float label_h = 21.0f;
+    EXPECT_EQ(best_grid(1, 512, 320, layout_for(1920, 1080, true).display, 1.0f, label_h).scale, 2)
+        << "beside the usual panel";
+    const Layout l = layout_for_panes(1920, 1080, true, 1, 512, 320, 1.0f, label_h);
+    ASSERT_TRUE(l.plots_under_side);
+    EXPECT_EQ(best_grid(1, 512, 320, l.display, 1.0f, label_h).scale, 3);
+    // The column: the side panel (narrow form) over the plots, the window's height.
+    EXPECT_FLOAT_EQ(l.side.x, 0.0f);
+    EXPECT_FLOAT_EQ(l.side.y, 0.0f);
+    EXPECT_GE(l.side.w, kMinNarrowSideWidth);
+    EXPECT_LT(l.side.w, kSideWidth) << "the narrow form";
+    EXPECT_FLOAT_EQ(l.bottom.x, 0.0f);
+    EXPECT_FLOAT_EQ(l.bottom.w, l.side.w);
+    EXPECT_FLOAT_EQ(l.bottom.y, l.side.h);
+    EXPECT_FLOAT_EQ(l.bottom.y + l.bottom.h, 1080.0f);
+    EXPECT_GE(l.bottom.h, kPlotsUnderSideHeight);
+    EXPECT_GE(l.side.h, 1080.0f / 2.0f) << "the controls keep most of the column";
+    // The pane right of the column, the statistics under it, all in the window.
+    EXPECT_FLOAT_EQ(l.display.x, l.side.w);
+    EXPECT_FLOAT_EQ(l.display.x + l.display.w, 1920.0f);
+    EXPECT_GE(l.display.w, 3.0f * 512.0f);
+    EXPECT_GE(l.display.h, 3.0f * 320.0f);
+    EXPECT_FLOAT_EQ(l.stats.x, l.display.x);
+    EXPECT_FLOAT_EQ(l.stats.w, l.display.w);
+    EXPECT_FLOAT_EQ(l.stats.y, l.display.h);
+    EXPECT_FLOAT_EQ(l.stats.y + l.stats.h, 1080.0f);
+    EXPECT_GE(l.stats.h, kMinStatsHeight);
+    // Panels hidden (F1): the whole window, as before.
+    EXPECT_FALSE(layout_for_panes(1920, 1080, false, 1, 512, 320, 1.0f, label_h).plots_under_side);
+}
+
+// Too low a band under the 3x pane for the statistics: they stay in the
+// column under the plots, and the pane has the window's height.
+TEST(ExploreLayout, WithNoRoomUnderThePaneTheStatisticsStayInTheColumn) {
+    const Layout l = layout_for_panes(1920, 1000, true, 1, 512, 320, 1.0f, 21.0f);
+    ASSERT_TRUE(l.plots_under_side);
+    EXPECT_EQ(best_grid(1, 512, 320, l.display, 1.0f, 21.0f).scale, 3);
+    EXPECT_FLOAT_EQ(l.stats.w, 0.0f);
+    EXPECT_FLOAT_EQ(l.display.h, 1000.0f);
+    EXPECT_GT(l.bottom.h, kPlotsUnderSideHeight) << "room for the statistics under the plots";
+    EXPECT_FLOAT_EQ(l.bottom.y + l.bottom.h, 1000.0f);
+}
+
+// The column is taken only where it magnifies more: 1280 x 720 (every pane
+// count), 1500 x 940 (2x either way) and, at 1920 x 1080, A/B and practice
+// (two or three panes: 1x either way) keep the layouts they had.
+TEST(ExploreLayout, TheColumnOnlyWhereItMagnifiesMore) {
+    const float label_h = 21.0f;
+    for (int panes = 1; panes <= 3; ++panes) {
+        EXPECT_FALSE(layout_for_panes(1280, 720, true, panes, 512, 320, 1.0f, label_h).plots_under_side) << panes;
+        EXPECT_FALSE(layout_for_panes(1500, 940, true, panes, 512, 320, 1.0f, label_h).plots_under_side) << panes;
+    }
+    for (int panes = 2; panes <= 3; ++panes) {
+        const Layout l = layout_for_panes(1920, 1080, true, panes, 512, 320, 1.0f, label_h);
+        EXPECT_FALSE(l.plots_under_side) << panes;
+        EXPECT_EQ(best_grid(panes, 512, 320, l.display, 1.0f, label_h).scale, 1) << panes;
+        // Even the column at its narrowest would not show them larger.
+        const Rect widest{kMinPlotsBesideWidth, 0, 1920 - kMinPlotsBesideWidth, 1080};
+        EXPECT_EQ(best_grid(panes, 512, 320, widest, 1.0f, label_h).scale, 1) << panes;
+    }
+}
+
+// The plots under the side panel folded to their title bar: the side panel
+// takes the column; its top (and its controls) stay; nothing else moves.
+TEST(ExploreLayout, FoldedPlotsGiveTheColumnToTheSidePanel) {
+    const Layout open = layout_for_panes(1920, 1080, true, 1, 512, 320, 1.0f, 21.0f);
+    Layout folded = open;
+    fold_plots(folded, 21.0f);
+    EXPECT_FLOAT_EQ(folded.side.y, open.side.y);
+    EXPECT_FLOAT_EQ(folded.side.h, 1080.0f - 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.y, 1080.0f - 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.h, 21.0f);
+    EXPECT_FLOAT_EQ(folded.bottom.w, open.bottom.w);
+    EXPECT_FLOAT_EQ(folded.display.x, open.display.x);
+    EXPECT_FLOAT_EQ(folded.display.h, open.display.h);
+    // Other layouts have no plots under the side panel: unchanged.
+    const Layout usual = layout_for_panes(1280, 720, true, 1, 512, 320, 1.0f, 21.0f);
+    Layout same = usual;
+    fold_plots(same, 21.0f);
+    EXPECT_FLOAT_EQ(same.side.h, usual.side.h);
+    EXPECT_FLOAT_EQ(same.bottom.h, usual.bottom.h);
+}
+
+TEST(ExploreLayout, GridExtentIsThePanesAndTheirLabels) {
+    const Rect area{0, 0, 2000, 1000};
+    const Grid one = best_grid(1, 512, 320, area, 1.0f, 21.0f);
+    const Extent e1 = grid_extent(one, 1, 512, 320, 1.0f, 21.0f);
+    EXPECT_FLOAT_EQ(e1.w, 3.0f * 512.0f);
+    EXPECT_FLOAT_EQ(e1.h, 3.0f * 320.0f) << "one pane has no label";
+    const Grid two = fit_grid(2, 2, 512, 320, area, 1.0f, 21.0f);
+    const Extent e2 = grid_extent(two, 2, 512, 320, 1.0f, 21.0f);
+    EXPECT_FLOAT_EQ(e2.w, 2.0f * 512.0f * float(two.scale) + kCompareGap);
+    EXPECT_FLOAT_EQ(e2.h, 21.0f + 320.0f * float(two.scale)) << "the labels' line above the row";
+    const Grid stacked = fit_grid(2, 1, 512, 320, area, 1.0f, 21.0f);
+    EXPECT_FLOAT_EQ(grid_extent(stacked, 2, 512, 320, 1.0f, 21.0f).h,
+                    21.0f + 2.0f * 320.0f * float(stacked.scale) + kCompareGap + 21.0f);
+}
+
 }  // namespace
 }  // namespace m3055::explore

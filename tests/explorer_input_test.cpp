@@ -11,6 +11,7 @@
 // 1280 x 720 here) and the spec example. Every
 // test first checks that its action changed what it should, so a moved
 // widget fails the test instead of passing it vacuously.
+#include "explore/layout.h"
 #include "image/image.h"
 #include "test_paths.h"
 #include "test_support.h"
@@ -300,13 +301,22 @@ Rgb8Image headless(const TempDir& dir, const std::vector<std::string>& extra = {
     return read_png(dir.file("headless.png"));
 }
 
-// Window coordinates of widgets (see the top of the file).
-constexpr int kSizeSliderX = 157, kSizeSliderY = 353;  // Material: m (size)
+// Window coordinates at 1920 x 1080 (see the top of the file). One pane
+// shows at 3x there, the side panel in its narrow form over the plots in the
+// column at its left (explore/layout.h, plots_under_side): what is not a
+// widget's row comes from that layout. (The label height does not matter to
+// one pane.)
+const explore::Layout kBig = explore::layout_for_panes(1920, 1080, true, 1, 512, 320, 1.0f, 19.0f);
+// Material: m (size) in the spec example: its slider spans the narrow panel, 550 px down.
+const int kSizeSliderX = int(kBig.side.w / 2.0f), kSizeSliderY = 550;
 // split: A | B, with the sections above it closed and A/B compare open (the
 // script's `section`, as clicks on the headers would).
 constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 210;
-constexpr int kDisplayX = 1000, kDisplayY = 300;  // on the display
-constexpr int kRestX = 1900, kRestY = 1065;  // the bottom strip's empty corner: no tooltip, no probe
+// The display's centre.
+const int kDisplayX = int(kBig.display.x + kBig.display.w / 2.0f), kDisplayY = int(kBig.display.y + kBig.display.h / 2.0f);
+// The window's bottom-right corner, in the statistics' empty corner (under
+// the display; in the bottom strip with two or three panes): no tooltip, no probe.
+const int kRestX = int(kBig.stats.x + kBig.stats.w) - 20, kRestY = int(kBig.stats.y + kBig.stats.h) - 15;
 
 class ExplorerInput : public ::testing::Test {
 protected:
@@ -499,6 +509,60 @@ TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
         app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
     ASSERT_EQ(screen.width, 1280);
     EXPECT_GT(at.scale, 0) << "the whole 512 x 320 display, whole pixels, inside the 1280 x 720 screen";
+}
+
+// Issue 20, item 10: at 1920 x 1080 the display shows at 3x, where
+// explore/layout.h puts it: right of the column of the side panel over the
+// plots, the statistics under it.
+TEST_F(ExplorerInput, At1920x1080TheDisplayShowsAt3xBesideTheColumn) {
+    ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image expected = headless(dir_);
+    Place at;
+    const Rgb8Image screen =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, expected)).scale > 0; });
+    ASSERT_EQ(screen.width, 1920);
+    EXPECT_EQ(at.scale, 3);
+    ASSERT_TRUE(kBig.plots_under_side);
+    EXPECT_EQ(at.x, int(kBig.display.x + (kBig.display.w - 3 * 512) / 2)) << "centred right of the column";
+    EXPECT_EQ(at.y, int(kBig.display.y + (kBig.display.h - 3 * 320) / 2));
+    EXPECT_LE(at.y + 3 * 320, int(kBig.stats.y)) << "the statistics under it";
+}
+
+// At 1920 x 1080 the arrow on the plots' title bar (under the side panel)
+// folds them: the side panel takes the column, its controls where they
+// were; the arrow, now at the column's foot, unfolds them.
+TEST_F(ExplorerInput, At1920x1080FoldingThePlotsGivesTheColumnToTheSidePanel) {
+    ASSERT_TRUE(start(1920, 1080, {"--compile-at-once"}));  // no "compiling..." in the menu bar meanwhile
+    const Rgb8Image expected = headless(dir_);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image open =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, expected).scale > 0; });
+    // The title bar's arrow: its frame's padding in from the left, its middle.
+    constexpr int kTitleH = 21, kArrowX = 12;  // ImGui's frame height at the explorer's 15-px font
+    const int side_w = int(kBig.side.w) - 20;  // without the scrollbar, which shrinks as the panel grows
+    const int controls_h = int(kBig.side.h) - 60;  // under the menu bar, above the panel's old foot
+    app_->click(kArrowX, int(kBig.bottom.y) + kTitleH / 2);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image folded = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
+        return differing_pixels(crop(s, 0, int(kBig.bottom.y) + 40, side_w, 300),
+                                crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)) > 5000;
+    });
+    ASSERT_GT(differing_pixels(crop(folded, 0, int(kBig.bottom.y) + 40, side_w, 300),
+                               crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)),
+              5000)
+        << "the side panel's sections where the polar plot was";
+    EXPECT_EQ(differing_pixels(crop(folded, 0, 45, side_w, controls_h), crop(open, 0, 45, side_w, controls_h)), 0)
+        << "the controls stayed where they were";
+    app_->click(kArrowX, 1080 - kTitleH / 2);
+    app_->move(kRestX, kRestY);
+    // The column as it was, but for the title bar (the focused window's colour).
+    const int plots_y = int(kBig.bottom.y) + kTitleH, plots_h = 1080 - plots_y;
+    auto column_differs = [&](const Rgb8Image& s) {
+        return differing_pixels(crop(s, 0, 0, side_w, int(kBig.bottom.y)), crop(open, 0, 0, side_w, int(kBig.bottom.y))) +
+               differing_pixels(crop(s, 0, plots_y, side_w, plots_h), crop(open, 0, plots_y, side_w, plots_h));
+    };
+    const Rgb8Image again = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return column_differs(s) == 0; }, 20);
+    EXPECT_EQ(column_differs(again), 0) << "unfolded: the column as it was";
 }
 
 // Issue 20, item 5: A/B split at 1280 x 720 with the panels shown: both

@@ -192,10 +192,15 @@ public:
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
         const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0) +
                           (shows_practice_difference() ? 1 : 0);
-        const Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
-                                               renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
-                                               renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
-                                               ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
+        Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
+                                         renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
+                                         renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
+                                         ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
+        // The plots under the side panel folded (their title bar's arrow);
+        // not where the BRDF views take their place.
+        const bool views_shown = state_.show_brdf_views && brdf_views_;
+        if (state_.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
+        const bool plots_were_folded = state_.plots_folded;
         note_free_area(layout, fb_scale);
         apply_mouse();
         note_hovered_row();
@@ -222,19 +227,24 @@ public:
             // room: its right part under the display; in place of the plots
             // where they are a column or a cell (too narrow for both).
             Rect strip = layout.bottom, views = layout.bottom;
-            const bool row = !layout.plots_in_cell && !layout.plots_beside;
-            const bool views_shown = state_.show_brdf_views && brdf_views_;
-            bool strip_column = layout.plots_in_cell || layout.plots_beside;
+            const bool row = !layout.plots_in_cell && !layout.plots_beside && !layout.plots_under_side;
+            StripShape shape = row ? StripShape::row : StripShape::column;
             if (views_shown && row) {
                 views.w = std::min(460.0f, strip.w * 0.5f);
                 strip.w -= views.w;
                 views.x = strip.x + strip.w;
-                strip_column = strip.w < 640.0f;  // too narrow for three columns: one under another
+                if (strip.w < 640.0f) shape = StripShape::column;  // too narrow for three columns: one under another
             }
-            if (!views_shown || row)
-                draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h,
-                                  strip_column ? StripShape::column : StripShape::row);
+            // Under the side panel with the statistics in the band under the display.
+            if (layout.stats.w > 0.0f) {
+                shape = StripShape::plots;
+                draw_stats_band(state_, info_, layout.stats.x, layout.stats.y, layout.stats.w, layout.stats.h);
+            }
+            if (!views_shown || row) draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h, shape);
             draw_brdf_views(state_, brdf_views_.get(), views.x, views.y, views.w, views.h);
+            // Folded or unfolded: the side panel takes its new height next frame.
+            if (state_.plots_folded != plots_were_folded)
+                window_.events().frames_owed = std::max(window_.events().frames_owed, 2);
         }
         if (state_.screenshot_requested && renderer_a_) {
             state_.screenshot_requested = false;
@@ -367,9 +377,10 @@ private:
     // The side panel's width follows its content: what reached past its edge
     // widens it (and its label column) from the next frame on; it never
     // narrows back, so controls do not jump as sections open and close. Not
-    // measured when it is narrowed beside three panes (there it is what is left).
+    // measured when it is narrowed beside three panes or shares a column with
+    // the plots (there it is what is left).
     void follow_side_panel_content(const Layout& layout) {
-        if (layout.plots_in_cell) return;
+        if (layout.plots_in_cell || layout.plots_under_side) return;
         const float overflow = info_.side_overflow;
         if (overflow < 0.5f) {
             side_stuck_ = false;

@@ -96,9 +96,12 @@ void level_histogram_view(const LevelHistogram& h, int bits) {
     }
 }
 
-// The strip's right column: timings, the display's scale, the A/B count, the
-// level histogram, the last message; scrolls on its own when the strip is low.
-void stats_column(const ExplorerState& state, const FrameInfo& info) {
+// The statistics, in three parts (one under another in the strip's right
+// column, side by side in the band under the display).
+namespace {
+
+// Timings, the display's scale, the A/B count.
+void stats_numbers(const ExplorerState& state, const FrameInfo& info) {
     const Display& d = state.scene.display;
     // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
     ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
@@ -112,8 +115,11 @@ void stats_column(const ExplorerState& state, const FrameInfo& info) {
         tooltip("Pixels of B whose display level differs from A's in any channel (the count `m3055 compare` "
                 "gives for the two PNGs).");
     }
-    if (info.histogram) level_histogram_view(*info.histogram, d.bits);
-    // The last message (saved, screenshot, loaded: with the full path) where it is seen.
+}
+
+// The last message (saved, screenshot, loaded: with the full path) where it
+// is seen, and the diagnostics.
+void stats_messages(const ExplorerState& state, const FrameInfo& info) {
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
     if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
         ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
@@ -121,6 +127,33 @@ void stats_column(const ExplorerState& state, const FrameInfo& info) {
         ImGui::TextWrapped("backend: GLFW window (%s)", info.window_system.c_str());
         ImGui::TreePop();
     }
+}
+
+}  // namespace
+
+// The strip's right column: timings, the display's scale, the A/B count, the
+// level histogram, the last message; scrolls on its own when the strip is low.
+void stats_column(const ExplorerState& state, const FrameInfo& info) {
+    stats_numbers(state, info);
+    if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
+    stats_messages(state, info);
+}
+
+void draw_stats_band(const ExplorerState& state, const FrameInfo& info, float x, float y, float width, float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    // Scrolls when the diagnostics are open (or a message is long).
+    ImGui::Begin("Statistics", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar);
+    if (ImGui::BeginTable("statistics", 3, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableNextColumn();
+        stats_numbers(state, info);
+        ImGui::TableNextColumn();
+        if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
+        ImGui::TableNextColumn();
+        stats_messages(state, info);
+        ImGui::EndTable();
+    }
+    ImGui::End();
 }
 
 // Three columns sized from the room there is (1280 x 720 included): the polar
@@ -132,13 +165,36 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     // The strip under the display fits without scrolling; the column beside
     // the panes (or in the free cell of three) scrolls when it is low, so the
     // statistics under the plots stay reachable.
-    const ImGuiWindowFlags scrolling = shape == StripShape::column
+    const ImGuiWindowFlags scrolling = shape != StripShape::row
                                            ? ImGuiWindowFlags_None
                                            : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
-    ImGui::Begin("Plane of incidence", nullptr, kFixed | scrolling);
+    if (shape == StripShape::plots) {
+        // Under the side panel: its title bar's arrow folds it (explore.cpp
+        // then gives the column to the side panel).
+        ImGui::SetNextWindowCollapsed(state.plots_folded, ImGuiCond_Always);
+        const bool open = ImGui::Begin(kPlotsTitle, nullptr, (kFixed & ~ImGuiWindowFlags_NoCollapse) | scrolling);
+        state.plots_folded = ImGui::IsWindowCollapsed();
+        if (!open) {
+            ImGui::End();
+            return;
+        }
+    } else {
+        ImGui::Begin(kPlotsTitle, nullptr, kFixed | scrolling);
+    }
     const ImVec2 room = ImGui::GetContentRegionAvail();
     // Beside the stacked panes or in the free cell beside the third of three
     // (explore/layout.h): the three one under another, each the column's width.
+    if (shape == StripShape::plots) {  // under the side panel: the statistics are under the display
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        const float plot_h = std::max(200.0f, room.y * 0.7f);
+        ImGui::BeginGroup();
+        plot_section(state, info.plane_curves, room.x, plot_h);
+        ImGui::EndGroup();
+        profile_plot(info.profile, info.profile_b, room.x,
+                     std::max(40.0f, ImGui::GetContentRegionAvail().y - 1.5f * line));
+        ImGui::End();
+        return;
+    }
     if (shape == StripShape::column) {
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.45f), profile_h = std::max(100.0f, room.y * 0.22f);

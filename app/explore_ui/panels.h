@@ -47,10 +47,15 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
 // Bottom strip: the polar plot of the selected material and the frame statistics.
 // Its shape (explore/layout.h): three columns under the display, or the three
 // one under another (beside stacked panes, in the free cell beside the third
-// of three panes, or beside the docked BRDF views).
-enum class StripShape { row, column };
+// of three panes, or beside the docked BRDF views), or the polar plot over
+// the profile alone (under the side panel, the statistics in a band of their
+// own under the display: draw_stats_band).
+enum class StripShape { row, column, plots };
 void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
                        float width, float height, StripShape shape = StripShape::row);
+// The statistics in three columns side by side (timings and scale, the
+// level histogram, the last message), in the band under the display.
+void draw_stats_band(const ExplorerState& state, const FrameInfo& info, float x, float y, float width, float height);
 
 // The side panel's menu bar (File, Edit: undo/redo by name) and the modal
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
