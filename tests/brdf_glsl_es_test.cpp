@@ -88,6 +88,15 @@ TEST(GlslEsConversions, IntVariablesAndVectorsAreWrapped) {
     EXPECT_EQ(es("uint f(int i) { return i; }"), "uint f(int i) { return uint(i); }");
 }
 
+TEST(GlslEsConversions, FloatLoopsArrayElementsAndMatrices) {
+    EXPECT_EQ(es("float f() { float s = 0; for (float t = 0; t < 1; t += 0.25) s += t; return s; }"),
+              "float f() { float s = 0.0; for (float t = 0.0; t < 1.0; t += 0.25) s += t; return s; }");
+    EXPECT_EQ(es("void f() { float a[3]; a[0] = 1; vec3 v; v.x = 2; v.yz = vec2(3); }"),
+              "void f() { float a[3]; a[0] = 1.0; vec3 v; v.x = 2.0; v.yz = vec2(3); }");
+    EXPECT_EQ(es("vec3 f(mat3 m, vec3 v) { return m * v * 2 + m[0] / 2; }"),
+              "vec3 f(mat3 m, vec3 v) { return m * v * 2.0 + m[0] / 2.0; }");
+}
+
 TEST(GlslEsConversions, LiteralForms) {
     EXPECT_EQ(es("float a = -1;"), "float a = -1.0;");
     EXPECT_EQ(es("float a = (2);"), "float a = (2.0);");
