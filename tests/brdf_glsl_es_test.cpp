@@ -2,12 +2,14 @@
 // the translator's conversions one by one (brdf_file/brdf_glsl_es.h), then
 // whole files loaded as the renderer loads them, composed for GlslTarget::es
 // and validated by glslangValidator's ES profile, and a broken file's error
-// still naming the .brdf's own line.
+// still naming the .brdf's own line; and a translated block, rendered by the
+// desktop renderer, draws the same bytes as the file's own.
 //
 // BRDF Explorer's 40 files (github.com/wdas/brdf, src/brdfs/) are third-party
 // and not in this repository: set M3055_BRDF_EXPLORER_BRDFS to a folder
 // holding them (e.g. a checkout's src/brdfs) and the test validates each;
 // without it that one test is skipped, saying so.
+#include "brdf_file/brdf_file.h"
 #include "brdf_file/brdf_glsl.h"
 #include "brdf_file/brdf_glsl_es.h"
 #include "brdf_file/brdf_model.h"
@@ -302,6 +304,77 @@ TEST(BrdfFilesAsGlslEs, BrdfExplorerFilesValidate) {
     RecordProperty("validated", validated);
     std::cout << validated << " of " << files.size() << " BRDF Explorer files validate as GLSL ES 3.00"
               << (failed.empty() ? "" : "; not:" + failed) << "\n";
+}
+
+// ---- the translation computes what the file computes ---------------------------------
+
+// `text` with its shader block replaced by the block's GLSL ES translation: the
+// explicit conversions are desktop GLSL too, so the desktop renderer draws it.
+std::string translated_file(const std::string& text, const std::string& name) {
+    const BrdfFile file = parse_brdf(text, name);
+    std::vector<std::pair<std::string, std::string>> globals;
+    for (const BrdfParam& p : file.params)
+        globals.push_back({p.kind == BrdfParam::Kind::number ? "float" : p.kind == BrdfParam::Kind::colour ? "vec3" : "bool",
+                           p.name});
+    const std::size_t at = text.find(file.shader);
+    EXPECT_NE(at, std::string::npos) << name;
+    return text.substr(0, at) + translate_glsl_es(file.shader, globals).text + text.substr(at + file.shader.size());
+}
+
+// `m3055 render` of a sphere of each of two .brdf texts, two lights: "" when
+// the PNGs and the linear PFMs are byte-identical, else why not.
+std::string render_same(const std::string& text, const std::string& other) {
+    TempDir dir;
+    test::write_text(dir.file("a.brdf"), text);
+    test::write_text(dir.file("b.brdf"), other);
+    for (const char* v : {"a", "b"}) {
+        test::write_text(dir.file(std::string(v) + ".json"),
+                         R"({"display": {"width": 96, "height": 96, "bits": 8}, "background": [0, 0, 0],
+ "camera": {"projection": "orthographic", "position": [0, 0, 10], "target": [0, 0, 0], "up": [0, 1, 0], "height": 2.4},
+ "lights": [{"type": "directional", "direction": [1, 1, 1], "intensity": 1.0, "color": [1, 1, 1]},
+            {"type": "point", "position": [-3, 1, 4], "intensity": 0.5, "color": [1, 1, 1]}],
+ "objects": [{"shape": "sphere", "center": [0, 0, 0], "radius": 1,
+              "material": {"model": "brdf", "file": ")" + std::string(v) + R"(.brdf"}}]})");
+        const test::RunResult r = test::run_m3055({"render", "--scene", dir.file(std::string(v) + ".json"), "--out",
+                                                   dir.file(std::string(v) + ".png"), "--raw", dir.file(std::string(v) + ".pfm")});
+        if (r.exit_code != 0) return std::string("render ") + v + ": " + r.err;
+    }
+    if (test::read_text(dir.file("a.png")) != test::read_text(dir.file("b.png"))) return "the PNGs differ";
+    if (test::read_text(dir.file("a.pfm")) != test::read_text(dir.file("b.pfm"))) return "the PFMs differ";
+    return "";
+}
+
+// A file and its translation draw the same bytes.
+std::string renders_identically(const std::string& path) {
+    const std::string text = test::read_text(path);
+    const std::string translated = translated_file(text, path);
+    return translated == text ? "" : render_same(text, translated);
+}
+
+// The comparison can fail: converting the literals of an int division (what a
+// textual rewrite of every int literal does) changes desktop_dialect.brdf's picture.
+TEST(BrdfFilesAsGlslEs, RewritingAnIntDivisionsLiteralsChangesThePicture) {
+    const std::string text = test::read_text(test::source_path("tests/data/brdf/desktop_dialect.brdf"));
+    const std::string translated = translated_file(text, "desktop_dialect.brdf");
+    const std::string naive = std::regex_replace(translated, std::regex(R"(float\(1 / 2 \+ 1\))"), "1.0 / 2.0 + 1.0");
+    ASSERT_NE(naive, translated);
+    EXPECT_NE(render_same(translated, naive), "");
+}
+
+TEST(BrdfFilesAsGlslEs, TranslatedOwnFilesRenderIdenticallyOnTheDesktop) {
+    int rendered = 0;
+    for (const std::string& path : brdf_files_in(test::source_path("tests/data/brdf"))) {
+        EXPECT_EQ(renders_identically(path), "") << path;
+        ++rendered;
+    }
+    EXPECT_GE(rendered, 5);
+}
+
+TEST(BrdfFilesAsGlslEs, TranslatedBrdfExplorerFilesRenderIdenticallyOnTheDesktop) {
+    const char* folder = std::getenv("M3055_BRDF_EXPLORER_BRDFS");
+    if (!folder || !fs::is_directory(folder))
+        GTEST_SKIP() << "M3055_BRDF_EXPLORER_BRDFS is not a folder (see BrdfExplorerFilesValidate)";
+    for (const std::string& path : brdf_files_in(folder)) EXPECT_EQ(renders_identically(path), "") << path;
 }
 
 // ---- errors still name the .brdf's line ---------------------------------------------
