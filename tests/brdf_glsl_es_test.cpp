@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -101,6 +102,8 @@ TEST(GlslEsConversions, FloatLoopsArrayElementsAndMatrices) {
 
 TEST(GlslEsConversions, LiteralForms) {
     EXPECT_EQ(es("float a = -1;"), "float a = -1.0;");
+    EXPECT_EQ(es("float a = -(-(2));"), "float a = -(-(2.0));");
+    EXPECT_EQ(es("float f(int i) { return -i; }"), "float f(int i) { return float(-i); }");
     EXPECT_EQ(es("float a = (2);"), "float a = (2.0);");
     EXPECT_EQ(es("float a = 0x10;"), "float a = float(0x10);");  // not 0x10.0
     EXPECT_EQ(es("float a = 010;"), "float a = float(010);");     // octal 8, not 10.0
@@ -110,7 +113,8 @@ TEST(GlslEsConversions, LiteralForms) {
 
 TEST(GlslEsConversions, ConditionalBranchesTakeTheOtherBranchsType) {
     EXPECT_EQ(es("float f(bool b, float x) { return b ? 1 : x; }"), "float f(bool b, float x) { return b ? 1.0 : x; }");
-    EXPECT_EQ(es("float f(bool b) { return b ? 1 : 0; }"), "float f(bool b) { return b ? 1.0 : 0.0; }");
+    // Both branches ints: the desktop converts the result, and so does the translation.
+    EXPECT_EQ(es("float f(bool b) { return b ? 1 : 0; }"), "float f(bool b) { return float(b ? 1 : 0); }");
     EXPECT_EQ(es("int f(bool b) { return b ? 1 : 0; }"), "int f(bool b) { return b ? 1 : 0; }");
 }
 
@@ -153,7 +157,7 @@ TEST(GlslEsConversions, VectorConstructorsIndicesAndLoopsAreLeftAlone) {
 
 TEST(GlslEsConversions, TheFilesParametersAreTyped) {
     EXPECT_EQ(es("float f() { return roughness * 2 + (flag ? 1 : 0); }", {{"float", "roughness"}, {"bool", "flag"}}),
-              "float f() { return roughness * 2.0 + (flag ? 1.0 : 0.0); }");
+              "float f() { return roughness * 2.0 + (float(flag ? 1 : 0)); }");
     EXPECT_EQ(es("vec3 f() { return base / 2; }", {{"vec3", "base"}}), "vec3 f() { return base / 2.0; }");
 }
 
@@ -375,6 +379,90 @@ TEST(BrdfFilesAsGlslEs, TranslatedBrdfExplorerFilesRenderIdenticallyOnTheDesktop
     if (!folder || !fs::is_directory(folder))
         GTEST_SKIP() << "M3055_BRDF_EXPLORER_BRDFS is not a folder (see BrdfExplorerFilesValidate)";
     for (const std::string& path : brdf_files_in(folder)) EXPECT_EQ(renders_identically(path), "") << path;
+}
+
+// ---- random expressions ---------------------------------------------------------------
+
+// Random desktop GLSL mixing ints into float expressions everywhere the desktop
+// allows (operands, built-ins' arguments, a user function's, ?: branches,
+// comparisons, initializers, compound assignments), with int sub-expressions
+// that must stay ints (%, int division, int max/abs, indices).
+class RandomGlsl {
+public:
+    explicit RandomGlsl(unsigned seed) : random_(seed) {}
+
+    std::string brdf(int statements) {
+        std::string code =
+            "analytic\n::begin parameters\nfloat a 0 1 0.3\nbool b 1\n::end parameters\n::begin shader\n"
+            "float sqr(float t) { return t * t; }\n"
+            "vec3 BRDF(vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y)\n{\n"
+            "    float x = dot(N, L);\n    int i = 3;\n    vec3 v = N;\n    float w[3] = float[3](0.5, 1, 2);\n"
+            "    float acc = 0;\n";
+        for (int k = 0; k < statements; ++k) {
+            if (pick(4) == 0) code += "    if (" + f(3) + " > " + i(2) + ") acc += 1;\n";
+            else code += "    acc += 0.01 * clamp(" + f(4) + ", -4, 4);\n";
+        }
+        return code + "    return vec3(0.5 + 0.1 * acc);\n}\n::end shader\n";
+    }
+
+private:
+    std::mt19937 random_;
+    int pick(int n) { return int(random_() % unsigned(n)); }
+
+    std::string int_literal() { return std::to_string(pick(9) + 1); }
+
+    std::string f(int depth) {
+        if (depth == 0) {
+            const std::string leaves[] = {"x", "a", "1.5", int_literal(), "i", "v.y", "w[i - 2]", "float(i)"};
+            return leaves[pick(8)];
+        }
+        const int d = depth - 1;
+        switch (pick(12)) {
+            case 0: return "(" + f(d) + " + " + f(d) + ")";
+            case 1: return "(" + f(d) + " - " + f(d) + ")";
+            case 2: return "(" + f(d) + " * " + f(d) + ")";
+            case 3: return "(" + f(d) + " / (" + f(d) + " + 9.5))";
+            case 4: return "max(" + f(d) + ", " + f(d) + ")";
+            case 5: return "pow(abs(" + f(d) + "), " + f(d) + " * 0.25)";
+            case 6: return "clamp(" + f(d) + ", " + int_literal() + ", " + f(d) + " + 10)";
+            case 7: return "(b ? " + f(d) + " : " + f(d) + ")";
+            case 8: return "sqr(" + f(d) + ")";
+            case 9: return "mix(" + f(d) + ", " + f(d) + ", " + f(d) + ")";
+            case 10: return "-(" + f(d) + ")";
+            default: return "(" + i(d) + ")";
+        }
+    }
+
+    std::string i(int depth) {
+        if (depth == 0) return pick(2) ? "i" : int_literal();
+        const int d = depth - 1;
+        switch (pick(6)) {
+            case 0: return "(" + i(d) + " + " + i(d) + ")";
+            case 1: return "(" + i(d) + " / " + int_literal() + ")";
+            case 2: return "(" + i(d) + " % 3)";
+            case 3: return "max(" + i(d) + ", " + i(d) + ")";
+            case 4: return "abs(" + i(d) + ")";
+            default: return "(b ? " + i(d) + " : " + i(d) + ")";
+        }
+    }
+};
+
+TEST(BrdfFilesAsGlslEs, RandomExpressionsValidateAndRenderIdentically) {
+    TempDir dir;
+    int conversions = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const std::string text = RandomGlsl(seed).brdf(30);
+        const std::string path = dir.file("random_" + std::to_string(seed) + ".brdf");
+        test::write_text(path, text);
+        const ModelSpec& spec = *load_brdf_model(path).spec;
+        expect_same_lines(spec, path);
+        EXPECT_EQ(validate(es_program(spec)), "") << text;
+        EXPECT_EQ(render_same(text, translated_file(text, path)), "") << text;
+        const BrdfFile file = parse_brdf(text, path);
+        conversions += translate_glsl_es(file.shader, {{"float", "a"}, {"bool", "b"}}).conversions;
+    }
+    EXPECT_GE(conversions, 100);
+    RecordProperty("conversions", conversions);
 }
 
 // ---- errors still name the .brdf's line ---------------------------------------------

@@ -161,18 +161,29 @@ private:
                 else if (e.token->decimal && e.token->kind == Token::int_literal) insert(e.end, ".0", 0, true);
                 else wrap(e, "float");
                 return;
-            case Expr::sign:
+            // Parentheses change nothing; a sign before a literal folds to a
+            // constant either way (-1 -> -1.0). Anything else, ?: included, is
+            // converted as a whole, where the desktop converts it: the same
+            // value computed in another order (float(-i) vs -float(i)) can
+            // compile to other instructions, and a contracted multiply-add then
+            // rounds differently in the last bit.
             case Expr::parens: convert(e.parts[0], to); return;
+            case Expr::sign:
+                if (constant_operand(e)) return convert(e.parts[0], to);
+                break;
             case Expr::choice:
-                convert(e.parts[0], to);
-                convert(e.parts[1], to);
-                return;
             case Expr::other: break;
         }
         ++conversions_;
         const std::string scalar = to == Type::uinteger ? "uint" : "float";
         const std::string vector = to == Type::uinteger ? "uvec" : "vec";
         wrap(e, e.type.size == 1 ? scalar : vector + std::to_string(e.type.size));
+    }
+    // A sign before a literal (in parentheses or not).
+    static bool constant_operand(const Expr& e) {
+        const Expr* operand = &e.parts[0];
+        while (operand->form == Expr::parens || operand->form == Expr::sign) operand = &operand->parts[0];
+        return operand->form == Expr::literal;
     }
     // The conversion an initializer, assignment, return or `in` argument of type `to` needs.
     void convert_to(const Expr& e, const Type& to) {
