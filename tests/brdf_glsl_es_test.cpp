@@ -399,7 +399,9 @@ public:
             "    float x = dot(N, L);\n    int i = 3;\n    vec3 v = N;\n    float w[3] = float[3](0.5, 1, 2);\n"
             "    float acc = 0;\n";
         for (int k = 0; k < statements; ++k) {
-            if (pick(4) == 0) code += "    if (" + f(3) + " > " + i(2) + ") acc += 1;\n";
+            const int kind = pick(5);
+            if (kind == 0) code += "    if (" + f(3) + " > " + i(2) + ") acc += 1;\n";
+            else if (kind == 1) code += "    acc += 0.01 * clamp(dot(" + vec(2) + ", vec3(0.3, 1, -2)), -4, 4);\n";
             else code += "    acc += 0.01 * clamp(" + f(4) + ", -4, 4);\n";
         }
         return code + "    return vec3(0.5 + 0.1 * acc);\n}\n::end shader\n";
@@ -430,6 +432,24 @@ private:
             case 9: return "mix(" + f(d) + ", " + f(d) + ", " + f(d) + ")";
             case 10: return "-(" + f(d) + ")";
             default: return "(" + i(d) + ")";
+        }
+    }
+
+    // vec3 expressions taking ints, int scalars and ivec3s.
+    std::string vec(int depth) {
+        if (depth == 0) {
+            const std::string leaves[] = {"v", "N", "vec3(" + f(1) + ")", "ivec3(i, 2, " + i(1) + ")"};
+            return leaves[pick(4)];
+        }
+        const int d = depth - 1;
+        switch (pick(7)) {
+            case 0: return "(" + vec(d) + " + " + vec(d) + ")";
+            case 1: return "(" + vec(d) + " * " + f(d) + ")";
+            case 2: return "(" + i(d) + " * " + vec(d) + ")";
+            case 3: return "max(" + vec(d) + ", " + f(d) + ")";
+            case 4: return "clamp(" + vec(d) + ", " + int_literal() + ", " + f(d) + " + 10)";
+            case 5: return "mix(" + vec(d) + ", " + vec(d) + ", " + f(d) + ")";
+            default: return "(" + vec(d) + " / (" + f(d) + " + 9.5))";
         }
     }
 
