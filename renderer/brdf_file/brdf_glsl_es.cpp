@@ -25,13 +25,13 @@ struct Edit {
 };
 
 // An expression: its type and where it is, and for the forms a conversion
-// reaches into (a literal, a sign, parentheses, a ?:) what it is made of.
+// reaches into (a literal, a sign, parentheses) what it is made of.
 struct Expr {
-    enum Form { other, literal, sign, parens, choice } form = other;
+    enum Form { other, literal, sign, parens } form = other;
     Type type;
     std::size_t begin = 0, end = 0;
     const Token* token = nullptr;  // literal
-    std::vector<Expr> parts;       // sign, parens: the operand; choice: the two branches
+    std::vector<Expr> parts;       // sign, parens: the operand
 };
 
 struct Function {
@@ -171,7 +171,6 @@ private:
             case Expr::sign:
                 if (constant_operand(e)) return convert(e.parts[0], to);
                 break;
-            case Expr::choice:
             case Expr::other: break;
         }
         ++conversions_;
@@ -482,13 +481,12 @@ private:
         Expr b = assignment();
         balance(a, b);
         Expr e;
-        e.form = Expr::choice;
         e.begin = cond.begin, e.end = b.end;
         if (a.type.known() && b.type.known()) {
             e.type = a.type;
-            if (a.type.base != b.type.base && a.type.array == 0 && b.type.array == 0) e.type.base = balanced_base(a.type, b.type);
+            if (a.type.base != b.type.base && a.type.array == 0 && b.type.array == 0)
+                e.type.base = balanced_base(a.type, b.type);
         }
-        e.parts = {a, b};
         return e;
     }
 
