@@ -35,4 +35,13 @@ std::vector<std::pair<std::string, std::string>> brdf_glsl_sources(const BrdfFil
                                                                    const std::string& hook,
                                                                    const std::vector<std::string>& fields);
 
+// The same for GLSL ES 3.00 (WebGL2; ModelSpec::glsl_sources_es): the block
+// with desktop GLSL's implicit conversions made explicit, line for line
+// (brdf_glsl_es.h), and the functions it defines under a built-in's name
+// renamed like its other top-level names.
+std::vector<std::pair<std::string, std::string>> brdf_glsl_es_sources(const BrdfFile& file, int id,
+                                                                      const std::string& wrapper_path,
+                                                                      const std::string& hook,
+                                                                      const std::vector<std::string>& fields);
+
 }  // namespace m3055

@@ -61,6 +61,7 @@ ModelSpec spec_of(const BrdfFile& file, int id) {
     spec.glsl_file = "generated/brdf_" + std::to_string(id) + ".glsl";
     spec.glsl_hook = "m3055_b" + std::to_string(id) + "_hook";
     spec.glsl_sources = brdf_glsl_sources(file, id, spec.glsl_file, spec.glsl_hook, fields);
+    spec.glsl_sources_es = brdf_glsl_es_sources(file, id, spec.glsl_file, spec.glsl_hook, fields);
     return spec;
 }
 

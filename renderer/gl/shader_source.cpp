@@ -97,7 +97,7 @@ std::string glsl_header(GlslTarget target) {
 }
 
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines, GlslTarget target) {
-    return compose_shader(path, defines, generated_glsl(), target);
+    return compose_shader(path, defines, generated_glsl(target == GlslTarget::es), target);
 }
 
 ComposedShader compose_shader(const std::string& path, const std::vector<std::string>& defines,

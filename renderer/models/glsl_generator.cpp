@@ -208,24 +208,27 @@ std::vector<std::string> every_model_define(const ModelTable& table) {
     return {out.begin(), out.end()};
 }
 
-std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table) {
+std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table, bool glsl_es) {
     std::vector<std::pair<std::string, std::string>> out = {{"generated/material.glsl", material_file(table)},
                                                              {"generated/models.glsl", models_file(table)}};
-    for (const ModelSpec& spec : table.models())
-        out.insert(out.end(), spec.glsl_sources.begin(), spec.glsl_sources.end());
+    for (const ModelSpec& spec : table.models()) {
+        const auto& sources = glsl_es && !spec.glsl_sources_es.empty() ? spec.glsl_sources_es : spec.glsl_sources;
+        out.insert(out.end(), sources.begin(), sources.end());
+    }
     return out;
 }
 
-std::vector<std::pair<std::string, std::string>> generated_glsl() {
+std::vector<std::pair<std::string, std::string>> generated_glsl(bool glsl_es) {
     static std::mutex mutex;
-    static std::uint64_t revision = 0;
-    static std::vector<std::pair<std::string, std::string>> cached;
+    static std::uint64_t revision[2] = {0, 0};
+    static std::vector<std::pair<std::string, std::string>> cached[2];
     const std::lock_guard<std::mutex> lock(mutex);
-    if (cached.empty() || revision != model_table().revision()) {
-        cached = generate_glsl(model_table());
-        revision = model_table().revision();
+    const int which = glsl_es ? 1 : 0;
+    if (cached[which].empty() || revision[which] != model_table().revision()) {
+        cached[which] = generate_glsl(model_table(), glsl_es);
+        revision[which] = model_table().revision();
     }
-    return cached;
+    return cached[which];
 }
 
 }  // namespace m3055

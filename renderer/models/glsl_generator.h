@@ -23,12 +23,13 @@ class ModelTable;
 // 2048 rows of 2048 texels hold 100000 objects' records many times over.
 inline constexpr int kMaterialTextureWidth = 2048;
 
-// The generated files for `table` (their paths as above).
-std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table);
+// The generated files for `table` (their paths as above). `glsl_es`: the
+// entries' GLSL ES sources where they have them (ModelSpec::glsl_sources_es).
+std::vector<std::pair<std::string, std::string>> generate_glsl(const ModelTable& table, bool glsl_es = false);
 
 // The same for the process's table, regenerated when its revision changes.
 // Returned by value: a run-time model added later does not invalidate it.
-std::vector<std::pair<std::string, std::string>> generated_glsl();
+std::vector<std::pair<std::string, std::string>> generated_glsl(bool glsl_es = false);
 
 // The HAS_* define of a model, and of a family of models.
 std::string has_define(const ModelSpec& model);

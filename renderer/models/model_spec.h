@@ -106,6 +106,10 @@ struct ModelSpec {
     // (run-time models: a .brdf file's code and its wrapper); built-in models
     // have theirs in glsl/.
     std::vector<std::pair<std::string, std::string>> glsl_sources;
+    // The same files for GLSL ES 3.00 (WebGL2), where they differ: a .brdf
+    // file's code with desktop GLSL's implicit conversions made explicit
+    // (brdf_file/brdf_glsl_es.h). Empty: glsl_sources serve both.
+    std::vector<std::pair<std::string, std::string>> glsl_sources_es;
 
     // Set by ModelTable::add.
     int id = -1;           // MODEL_<NAME> in GLSL; index in the table
