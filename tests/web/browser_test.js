@@ -142,7 +142,7 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 async function openPage(browser, url) {
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 750 });  // the canvas: 1280 x 720 under the page's bar
-  page.on('pageerror', (e) => console.log('  page error: ' + e.message));
+  page.on('pageerror', (e) => console.log('  page error: ' + ((e && e.message) || String(e))));
   const start = Date.now();
   await page.goto(url, { waitUntil: 'load' });
   await page.evaluate(() => window.m3055.ready);
@@ -228,7 +228,10 @@ async function realInput(browser, base) {
   check(undone.equals(before), `${backend}: Ctrl+Z after the drag gives the display byte for byte as before`);
 
   // Ctrl+click the slider and type a value: m3055 render with that value.
+  // (A frame between Ctrl and the click: key events reach Dear ImGui through
+  // the explorer's input queue, a transition a frame, the click directly.)
   await page.keyboard.down('Control');
+  await sleep(150);
   await page.mouse.click(M_SLIDER.grab, M_SLIDER.y);
   await page.keyboard.up('Control');
   await sleep(200);
@@ -241,6 +244,9 @@ async function realInput(browser, base) {
   const typed = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   fs.writeFileSync(path.join(work, 'spec_example.json'), spec);
   execFileSync(m3055, ['render', '--scene', 'spec_example.json', '--set', 'objects[0].material.m=20', '--out', 'typed.png'], { cwd: work });
+  const typedScene = JSON.parse(zlib.inflateSync(Buffer.from(new URLSearchParams(
+    (await page.evaluate(() => window.m3055.shareLink())).split('#')[1]).get('scene'), 'base64url')).toString());
+  console.log(`        the page's m after typing: ${typedScene.objects[0].material.m}`);
   check(typed.equals(fs.readFileSync(path.join(work, 'typed.png'))),
     `${backend}: typing 20 into "m (size)" gives m3055 render --set objects[0].material.m=20, byte for byte`);
 
