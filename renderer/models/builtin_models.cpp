@@ -7,6 +7,7 @@
 // through adding one.
 #include "models/model_table.h"
 #include "numeric/normalization.h"
+#include "spectral/conductor.h"
 
 namespace m3055 {
 
@@ -98,6 +99,38 @@ ModelSpec translucent() {
     return s;
 }
 
+// A measured metal in place of C0 (docs/spec.md#72-measured-metals): "none", or
+// one of data/conductors/*.nk by name.
+ParamSpec conductor_choice() {
+    ParamSpec p;
+    p.name = "conductor", p.label = "conductor", p.kind = ParamKind::choice;
+    p.choices = {"none"};
+    for (const std::string& name : spectral::conductor_names()) p.choices.push_back(name);
+    p.fallback = {0.0};
+    p.help = "a measured metal: C0 from its complex index n + i k under each light, in place of the colour";
+    p.cite = "eq. 2, assumption 3";
+    p.replaces = "color";
+    p.written_at_default = false;
+    return p;
+}
+
+// How a conductor's F depends on the angle: "normal" F(lambda, 0) (assumption 3),
+// "full" eq. 19 with the complex index, at V.H.
+ParamSpec conductor_fresnel() {
+    ParamSpec p;
+    p.name = "fresnel", p.label = "F", p.kind = ParamKind::choice, p.choices = {"normal", "full"};
+    p.fallback = {0.0};
+    p.help = "a conductor's F: normal incidence (the paper's assumption 3), or eq. 19 at every angle";
+    p.cite = "eq. 19";
+    p.written_at_default = false;
+    return p;
+}
+
+// Where the material's spectral table starts in the material texture (texels),
+// -1 for none: written by the frame, which knows the lights
+// (passes/spectral_tables.h); the record itself carries -1.
+void no_spectral_table(const Material&, float* out) { out[0] = -1.0f; }
+
 ModelSpec paper_metal(std::string name, std::string label, std::string citation, LobeForm form) {
     ModelSpec s;
     s.name = std::move(name), s.label = std::move(label), s.citation = std::move(citation);
@@ -107,7 +140,9 @@ ModelSpec paper_metal(std::string name, std::string label, std::string citation,
     const bool beckmann = form.key == "m";
     s.params = {paper_colour(), d,
                 lobe_list(beckmann ? "Beckmann lobes (w_j, m_j)" : "lobes (w_j, n_j)", {std::move(form)},
-                          "1 to 4 weighted lobes; a light may carry its own (Fig. 11)", "eq. 12-16")};
+                          "1 to 4 weighted lobes; a light may carry its own (Fig. 11)", "eq. 12-16"),
+                conductor_choice(), conductor_fresnel()};
+    s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.light_lobes = beckmann ? LobeKind::beckmann : LobeKind::exponent;
     s.glsl_file = "models/metal.glsl";
     return s;

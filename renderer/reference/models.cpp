@@ -6,6 +6,7 @@
 #include "reference/reference.h"
 #include "reference/hooks.h"
 #include "reference/classic.h"
+#include "reference/conductor.h"
 
 #include "models/model_spec.h"
 
@@ -119,8 +120,26 @@ double metal_lobe_sum(const Material& material, const Light& light, const Surfac
     return reference_hooks(material.model()).metal(material, light, point, L, NoL, NoV);
 }
 
+// A measured metal (docs/spec.md#72-measured-metals): d C0_D65 + sum_l a_l c_l lobes_l
+// C0_l(V.H), each C0 summed per wavelength here (reference/conductor.h).
+dvec3 shade_conductor(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
+    dvec3 sum(0.0);
+    for (const Light& light : lights) {
+        const LightSample sample = sample_light(light, point.P);
+        const double NoL = glm::dot(point.N, sample.L);
+        if (!(NoL > 0.0)) continue;
+        const double lobes = metal_lobe_sum(material, light, point, sample.L, NoL, NoV);
+        if (lobes == 0.0 || sample.scale == dvec3(0.0)) continue;  // nothing to colour
+        const double VoH = 0.5 * glm::length(sample.L + point.V);  // as beckmann_lobe_sum
+        sum += sample.scale * lobes * conductor_c0(material, &light, VoH);
+    }
+    return material.number("d") * conductor_c0(material, nullptr, 1.0) + sum;
+}
+
 // The metal family: C = { d + sum_l a_l c_l lobes_l } C0 over the lights with N.L > 0.
 dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    if (is_conductor(material)) return shade_conductor(material, lights, point);
     const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
     dvec3 sum(0.0);
     for (const Light& light : lights) {

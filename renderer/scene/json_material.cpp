@@ -27,7 +27,22 @@ void read_absent(const Node& node, const ParamSpec& param, Material& material) {
     if (param.kind == ParamKind::lobes) material.set_lobes(param.name, param.form_for(material).fallback);
 }
 
-void read_param(const Node& node, const ParamSpec& param, Material& material) {
+// The parameter that stands in for `param` when the file gives it ("conductor"
+// for "color": docs/spec.md#72-measured-metals), or nullptr.
+const ParamSpec* replacement_given(const Node& node, const ModelSpec& spec, const ParamSpec& param) {
+    for (const ParamSpec& other : spec.params)
+        if (other.replaces == param.name && node.has(other.name)) return &other;
+    return nullptr;
+}
+
+void read_param(const Node& node, const ModelSpec& spec, const ParamSpec& param, Material& material) {
+    if (const ParamSpec* replacement = replacement_given(node, spec, param)) {
+        if (node.has(param.name))
+            node.child(replacement->name)
+                .fail("the material gives both \"" + param.name + "\" and \"" + replacement->name + "\"; give one");
+        // "none" names no replacement: the parameter is then required as ever.
+        if (node.child(replacement->name).value() != json(replacement->choices.front())) return;
+    }
     if (!node.has(param.name)) return read_absent(node, param, material);
     const Node value = node.child(param.name);
     switch (param.kind) {
@@ -68,7 +83,7 @@ Material read_material(const Node& node) {
     allowed.push_back("model");
     node.check_keys(allowed, [&](const std::string& key) { return misplaced(spec, key); });
     Material material(spec);
-    for (const ParamSpec& param : spec.params) read_param(node, param, material);
+    for (const ParamSpec& param : spec.params) read_param(node, spec, param, material);
     return material;
 }
 
@@ -76,7 +91,18 @@ json material_json(const Material& material) {
     const ModelSpec& spec = material.model();
     if (spec.family == Family::brdf) return brdf_material_json(material);
     json out = {{"model", spec.name}};
+    // Left out: a parameter at its default that scenes need not give, and one
+    // that a given replacement stands in for ("color" of a conductor).
+    auto written = [&](const ParamSpec& param) {
+        if (param.kind == ParamKind::choice && !param.written_at_default &&
+            material.choice(param.name) == int(param.fallback[0]))
+            return false;
+        for (const ParamSpec& other : spec.params)
+            if (other.replaces == param.name && material.choice(other.name) != 0) return false;
+        return true;
+    };
     for (const ParamSpec& param : spec.params) {
+        if (!written(param)) continue;
         switch (param.kind) {
             case ParamKind::number: out[param.name] = material.number(param.name); break;
             case ParamKind::colour:
