@@ -28,10 +28,12 @@ void read_absent(const Node& node, const ParamSpec& param, Material& material) {
 }
 
 // The parameter that stands in for `param` when the file gives it ("conductor"
-// for "color": docs/spec.md#72-measured-metals), or nullptr.
+// for "color": docs/spec.md#72-measured-metals), or nullptr. Its first choice
+// ("none") names no replacement: `param` is then read as ever.
 const ParamSpec* replacement_given(const Node& node, const ModelSpec& spec, const ParamSpec& param) {
     for (const ParamSpec& other : spec.params)
-        if (other.replaces == param.name && node.has(other.name)) return &other;
+        if (other.replaces == param.name && node.has(other.name) && node.child(other.name).one_of(other.choices) != 0)
+            return &other;
     return nullptr;
 }
 
@@ -40,8 +42,7 @@ void read_param(const Node& node, const ModelSpec& spec, const ParamSpec& param,
         if (node.has(param.name))
             node.child(replacement->name)
                 .fail("the material gives both \"" + param.name + "\" and \"" + replacement->name + "\"; give one");
-        // "none" names no replacement: the parameter is then required as ever.
-        if (node.child(replacement->name).value() != json(replacement->choices.front())) return;
+        return;
     }
     if (!node.has(param.name)) return read_absent(node, param, material);
     const Node value = node.child(param.name);
