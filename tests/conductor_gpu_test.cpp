@@ -1,14 +1,16 @@
-// Measured metals (docs/spec.md#72-measured-metals) on the GPU against the CPU
+// Measured metals (docs/spec.md#72-measured-metals) — the paper's metals and
+// microfacet with each of its Fresnel choices — on the GPU against the CPU
 // reference, which sums every (conductor, light) pair per wavelength at the
 // pixel's exact V.H (reference/conductor.h) where the GPU reads its precomputed
 // tables (passes/spectral_tables.h: F(lambda, 0), or 65 samples over cos theta
-// linearly interpolated for "fresnel": "full"). Tolerances, on pixels at least
+// linearly interpolated when F depends on the angle). Tolerances, on pixels at least
 // one pixel away from a silhouette, as tests/gpu_vs_reference_test.cpp's:
 //   |gpu - ref| <= 1e-3 * max(1, |ref|) on the unquantized colour,
 //   >= 99.5 % of pixels on the same display level, none more than one level off,
 //   and no NaN or Inf anywhere.
 #include "gpu_compare.h"
 
+#include "models/model_table.h"
 #include "scene/light_colour.h"
 
 #include <gtest/gtest.h>
@@ -85,9 +87,37 @@ std::vector<Case> all_cases() {
         {"aluminium_normal_phong", conductor("metal_phong", "aluminium", "normal", {{0.2, 20}, {0.75, 3}})},
         {"iron_full_phong", conductor("metal_phong", "iron", "full", {{0.95, 5}})},
     };
+    std::vector<Material> microfacets;
+    for (const char* fresnel : {"none", "schlick", "dielectric"}) {
+        Material m = Material::of("microfacet");
+        m.set_choice("conductor", "gold");
+        m.set_choice("fresnel", fresnel);
+        m.set_vec3("kd", {0.05, 0.04, 0.03});
+        m.set_lobes({{0.7, 0.25}, {0.3, 0.6}});
+        microfacets.push_back(m);
+    }
+    Material ggx = microfacets[2];
+    ggx.set_choice("distribution", "ggx");
+    ggx.set_choice("conductor", "titanium");
+    // Colour spectra (docs/spec.md#73-spectral-colours): one C0 per light, on a highlight and a metal.
+    ReflectanceSpectrum rising;
+    rising.nm = {380, 480, 560, 620, 780}, rising.values = {0.05, 0.1, 0.5, 0.85, 0.9};
+    Material spectral_highlight = Material::of("highlight");
+    spectral_highlight.set_colour_spectrum(&rising);
+    Material spectral_translucent = with_model(spectral_highlight, model_table().get("translucent"));
+    Material spectral_metal = conductor("metal", "none", "normal", {{0.013, 0.2}, {0.1, 0.4}});
+    spectral_metal.set_colour_spectrum(&rising);
+    std::vector<std::pair<std::string, Material>> all = materials;
+    all.push_back({"spectrum_highlight", spectral_highlight});
+    all.push_back({"spectrum_translucent", spectral_translucent});
+    all.push_back({"spectrum_metal", spectral_metal});
+    all.push_back({"microfacet_gold_none", microfacets[0]});
+    all.push_back({"microfacet_gold_schlick", microfacets[1]});
+    all.push_back({"microfacet_gold_dielectric", microfacets[2]});
+    all.push_back({"microfacet_titanium_ggx", ggx});
     std::vector<Case> cases;
     for (const auto& [light_name, lights] : light_setups())
-        for (const auto& [material_name, material] : materials)
+        for (const auto& [material_name, material] : all)
             for (bool ortho : {false, true}) {
                 Material m = material;
                 auto l = lights;

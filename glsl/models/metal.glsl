@@ -8,6 +8,7 @@
 // (generated from the model table) picks the hook. C++ twins: reference/models.cpp.
 #include "terms/beckmann.glsl"
 #include "terms/ct_geometry.glsl"
+#include "terms/conductor_table.glsl"
 
 // L + V, or N where L = -V exactly (light opposite the view; lit only where
 // N.V < 0, i.e. by rounding at a silhouette): there H is undefined and
@@ -63,22 +64,13 @@ float phong_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
     return exponent_lobe_sum(mat, i, cos_between(R, V), one_minus_cos(R, V));
 }
 
-// A conductor's C0 for light i (docs/spec.md#72-measured-metals): its row of the
-// material's spectral table (passes/spectral_tables.h), `samples` texels over
-// cos(theta) = V.H in [0, 1], linearly interpolated (1 sample: F(lambda, 0)).
-vec3 conductor_c0(int row, int samples, float VoH) {
-    if (samples == 1) return m3055_material_texel(row).rgb;
-    float x = clamp(VoH, 0.0, 1.0) * float(samples - 1);
-    int s = min(int(x), samples - 2);
-    return mix(m3055_material_texel(row + s).rgb, m3055_material_texel(row + s + 1).rgb, x - float(s));
-}
-
 // A measured metal: d C0_D65 + sum_l a_l c_l lobes_l C0_l(V.H), C0_l from the
 // light's spectrum and the metal's n(lambda), k(lambda) (eq. 2 per pair; with
 // "fresnel": "full", eq. 19 at the angle V.H).
 vec3 shade_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
     int table = int(mat.spectral_table);
-    int samples = mat.fresnel == FRESNEL_FULL ? CONDUCTOR_COS_SAMPLES : 1;
+    vec4 head = m3055_material_texel(table);  // rgb: the background's C0; a: samples per light
+    int samples = int(head.a);
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) {
@@ -89,7 +81,7 @@ vec3 shade_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
         vec3 c0 = conductor_c0(table + 1 + i * samples, samples, VoH);
         sum += light.scale * metal_lobe_sum(mat, i, N, V, light.L, NoL, NoV) * c0;
     }
-    return mat.d * m3055_material_texel(table).rgb + sum;
+    return mat.d * head.rgb + sum;
 }
 
 // The metal family: (d + sum_l a_l c_l lobes_l) C0, lights with N.L > 0 only.

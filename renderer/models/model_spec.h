@@ -65,6 +65,9 @@ struct ParamSpec {
     // both is an error; the other is then not required. Only for a choice whose
     // first choice ("none") means "not given".
     std::string replaces;
+    // A colour that a scene may give as a reflectance spectrum under this key
+    // instead ("color_spectrum": docs/spec.md#73-spectral-colours); "" for none.
+    std::string spectrum_key;
     // False: a scene is written without it while it holds its default, so
     // scenes saved before it existed are written as before.
     bool written_at_default = true;
