@@ -226,6 +226,23 @@ void copy_a_to_b(ExplorerState& state) {
     note_edit(state, "B = copy of A");
 }
 
+bool compare_fresnel(ExplorerState& state) {
+    const Material* selected = selected_material(state);
+    if (!selected || selected->model().family != Family::metal || !selected->has("conductor")) return false;
+    Material a = *selected;
+    a.set_colour_spectrum(nullptr);  // a conductor is the colour now
+    if (a.choice("conductor") == 0) a.set_choice("conductor", "gold");
+    a.set_choice("fresnel", "normal");
+    Material b = a;
+    b.set_choice("fresnel", "full");
+    // B and A in one pending edit: one undo step, named by the preset.
+    state.material_b = b;
+    state.b_edited = true;
+    edit_material(state, a, kFresnelPresetAction);
+    set_compare(state, true);
+    return true;
+}
+
 // ---- Any scene value --------------------------------------------------------------------
 
 void set_scene_value(ExplorerState& state, const std::string& path, const std::string& value) {

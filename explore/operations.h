@@ -85,6 +85,13 @@ void move_object_in_view(ExplorerState& state, double dx, double dy, double show
 // "B = copy of A (split on)" when that changes B).
 void set_compare(ExplorerState& state, bool on);
 void copy_a_to_b(ExplorerState& state);
+// The A/B preset "paper's F(lambda, 0) vs full eq. 19" (docs/spec.md#72-measured-metals):
+// the selected paper metal as a measured metal (its conductor, gold when it
+// names none) with "fresnel": "normal" as A and "full" as B, and the split on;
+// one undo step (kFresnelPresetAction). False, and nothing changed, when the
+// selected object is not one of the paper's metals.
+inline constexpr const char* kFresnelPresetAction = "A/B preset: F(lambda, 0) vs full eq. 19";
+bool compare_fresnel(ExplorerState& state);
 
 // ---- Any scene value (--script's `set PATH VALUE`, as m3055's --set) --------------------
 // Validated like a load; std::runtime_error (SceneError) with the loader's message.

@@ -97,5 +97,26 @@ TEST(ExploreCompare, BsValueEditsAreNamedAfterB) {
     EXPECT_EQ(state.history.undo_label(), "B m " + text::format_number(m) + " -> 50");
 }
 
+TEST(ExploreCompare, FresnelPresetSplitsAPapersMetalIntoNormalAndFullEq19InOneUndoStep) {
+    ExplorerState state = started();
+    EXPECT_FALSE(compare_fresnel(state)) << "the start scene's highlight is no metal";
+    set_model(state, "metal_blinn");
+    commit_edits(state);
+    const Material before = *selected_material(state);
+    const Material b_before = state.material_b;
+    ASSERT_TRUE(compare_fresnel(state));
+    const Material& a = *selected_material(state);
+    EXPECT_EQ(a.choice_name("conductor"), "gold");
+    EXPECT_EQ(a.choice_name("fresnel"), "normal");
+    EXPECT_EQ(state.material_b.choice_name("conductor"), "gold");
+    EXPECT_EQ(state.material_b.choice_name("fresnel"), "full");
+    EXPECT_TRUE(state.compare);
+    commit_edits(state);
+    EXPECT_EQ(state.history.undo_label(), kFresnelPresetAction);
+    ASSERT_TRUE(undo(state));
+    EXPECT_EQ(*selected_material(state), before);
+    EXPECT_EQ(state.material_b, b_before) << "A and B in the one step";
+}
+
 }  // namespace
 }  // namespace m3055::explore

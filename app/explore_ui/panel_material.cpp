@@ -168,6 +168,13 @@ void material_section(ExplorerState& state) {
     Material edited = *material;
     std::string action;
     if (material_editor(edited, action)) edit_material(state, edited, action);
+    else if (material->model().family == Family::metal) {
+        // docs/spec.md#72-measured-metals: what assumption 3 costs, side by side.
+        if (ImGui::Button("A/B: F(lambda, 0) vs full eq. 19")) compare_fresnel(state);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The split on: A with the paper's F(lambda, 0) (assumption 3), B with the\n"
+                              "full eq. 19 for the metal's complex index (gold if it names no conductor).");
+    }
 }
 
 }  // namespace m3055::explore

@@ -11,7 +11,30 @@ struct HighlightParts {
     vec3 keep;
 };
 
+// C1 with a colour spectrum (docs/spec.md#73-spectral-colours): each light's
+// diffuse share in its own C0 from the material's spectral table
+// (passes/spectral_tables.h), d in D65's: d C0_D65 + (1 - d) sum_l a_l c_l (N.L) C0_l.
+HighlightParts highlight_parts_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
+    int table = int(mat.spectral_table);
+    vec3 diffuse = vec3(0.0);
+    vec3 keep = vec3(1.0);
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
+        LightSample light = light_sample(i, P);
+        float NoL = dot(N, light.L);
+        if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
+        diffuse += light.scale * NoL * m3055_material_texel(table + 1 + i).rgb;
+        vec3 R = 2.0 * NoL * N - light.L;
+        float one_minus_RoV = one_minus_cos(R, V);
+        keep *= 1.0 - highlight_strength(mat.w, light.scale, cos_between(R, V), one_minus_RoV, mat.m);
+    }
+    HighlightParts parts;
+    parts.C1 = min(mat.d * m3055_material_texel(table).rgb + (1.0 - mat.d) * diffuse, vec3(1.0));
+    parts.keep = keep;
+    return parts;
+}
+
 HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
+    if (mat.spectral_table >= 0.0) return highlight_parts_spectral(mat, P, N, V);
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) {

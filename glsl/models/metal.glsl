@@ -8,6 +8,7 @@
 // (generated from the model table) picks the hook. C++ twins: reference/models.cpp.
 #include "terms/beckmann.glsl"
 #include "terms/ct_geometry.glsl"
+#include "terms/conductor_table.glsl"
 
 // L + V, or N where L = -V exactly (light opposite the view; lit only where
 // N.V < 0, i.e. by rounding at a silhouette): there H is undefined and
@@ -63,8 +64,29 @@ float phong_lobe_sum(Material mat, int i, vec3 N, vec3 V, vec3 L, float NoL, flo
     return exponent_lobe_sum(mat, i, cos_between(R, V), one_minus_cos(R, V));
 }
 
+// A measured metal: d C0_D65 + sum_l a_l c_l lobes_l C0_l(V.H), C0_l from the
+// light's spectrum and the metal's n(lambda), k(lambda) (eq. 2 per pair; with
+// "fresnel": "full", eq. 19 at the angle V.H).
+vec3 shade_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
+    int table = int(mat.spectral_table);
+    vec4 head = m3055_material_texel(table);  // rgb: the background's C0; a: samples per light
+    int samples = int(head.a);
+    float NoV = max(dot(N, V), 0.0);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
+        LightSample light = light_sample(i, P);
+        float NoL = dot(N, light.L);
+        if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
+        float VoH = 0.5 * length(light.L + V);  // as beckmann_lobe_sum: |L + V| / 2
+        vec3 c0 = conductor_c0(table + 1 + i * samples, samples, VoH);
+        sum += light.scale * metal_lobe_sum(mat, i, N, V, light.L, NoL, NoV) * c0;
+    }
+    return mat.d * head.rgb + sum;
+}
+
 // The metal family: (d + sum_l a_l c_l lobes_l) C0, lights with N.L > 0 only.
 vec3 shade_metal(Material mat, vec3 P, vec3 N, vec3 V) {
+    if (mat.spectral_table >= 0.0) return shade_conductor(mat, P, N, V);
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) {

@@ -7,6 +7,7 @@
 // through adding one.
 #include "models/model_table.h"
 #include "numeric/normalization.h"
+#include "spectral/conductor.h"
 
 namespace m3055 {
 
@@ -54,9 +55,16 @@ const Range kUnitWeight = closed(0.0, 1.0);      // microfacet lobe weights
 
 // ---- The paper's models (docs/spec.md section 4) ------------------------------------
 
+// Where the material's spectral table starts in the material texture (texels),
+// -1 for none: written by the frame, which knows the lights
+// (passes/spectral_tables.h); the record itself carries -1.
+void no_spectral_table(const Material&, float* out) { out[0] = -1.0f; }
+
+
 ParamSpec paper_colour() {
     ParamSpec p = required(colour("color", "colour C0", {0.8, 0.2, 0.2}, "the object's colour C0", "eq. 3"));
     p.carry_from = {"kd"};
+    p.spectrum_key = "color_spectrum";
     return p;
 }
 
@@ -80,6 +88,7 @@ ModelSpec highlight() {
     s.summary = "coloured object whose highlight is driven to display white";
     s.family = Family::opaque;
     s.params = highlight_params();
+    s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/highlight.glsl", s.glsl_hook = "shade_highlight";
     return s;
 }
@@ -94,8 +103,36 @@ ModelSpec translucent() {
                               "opacity: 1 opaque, 0 clear (Newell's constant when t_p = 0)", "eq. 6"));
     s.params.push_back(number("t_p", "t_p (falloff)", closed(0.0, 10.0), 1.0,
                               "Kay's falloff power: larger makes faces towards the viewer clearer", "eq. 6"));
+    s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/translucent.glsl", s.glsl_hook = "shade_translucent";
     return s;
+}
+
+// A measured metal in place of C0 (docs/spec.md#72-measured-metals): "none", or
+// one of data/conductors/*.nk by name.
+ParamSpec conductor_choice(std::string replaces) {
+    ParamSpec p;
+    p.name = "conductor", p.label = "conductor", p.kind = ParamKind::choice;
+    p.choices = {"none"};
+    for (const std::string& name : spectral::conductor_names()) p.choices.push_back(name);
+    p.fallback = {0.0};
+    p.help = "a measured metal: C0 from its complex index n + i k under each light, in place of the colour";
+    p.cite = "eq. 2, assumption 3";
+    p.replaces = std::move(replaces);
+    p.written_at_default = false;
+    return p;
+}
+
+// How a conductor's F depends on the angle: "normal" F(lambda, 0) (assumption 3),
+// "full" eq. 19 with the complex index, at V.H.
+ParamSpec conductor_fresnel() {
+    ParamSpec p;
+    p.name = "fresnel", p.label = "F", p.kind = ParamKind::choice, p.choices = {"normal", "full"};
+    p.fallback = {0.0};
+    p.help = "a conductor's F: normal incidence (the paper's assumption 3), or eq. 19 at every angle";
+    p.cite = "eq. 19";
+    p.written_at_default = false;
+    return p;
 }
 
 ModelSpec paper_metal(std::string name, std::string label, std::string citation, LobeForm form) {
@@ -107,7 +144,9 @@ ModelSpec paper_metal(std::string name, std::string label, std::string citation,
     const bool beckmann = form.key == "m";
     s.params = {paper_colour(), d,
                 lobe_list(beckmann ? "Beckmann lobes (w_j, m_j)" : "lobes (w_j, n_j)", {std::move(form)},
-                          "1 to 4 weighted lobes; a light may carry its own (Fig. 11)", "eq. 12-16")};
+                          "1 to 4 weighted lobes; a light may carry its own (Fig. 11)", "eq. 12-16"),
+                conductor_choice("color"), conductor_fresnel()};
+    s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.light_lobes = beckmann ? LobeKind::beckmann : LobeKind::exponent;
     s.glsl_file = "models/metal.glsl";
     return s;
@@ -251,7 +290,12 @@ ModelSpec microfacet() {
     s.params.push_back(number("ior", "IOR", closed(1.0, 5.0), 1.5,
                               "index of refraction; Schlick's F0 = ((n - 1)/(n + 1))^2", "seed 003"));
     s.params.push_back(microfacet_lobes(distributions));
-    s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}};
+    // A measured metal in place of K_spec: F (its "fresnel": none, schlick or the
+    // full eq. 19) from the complex index per wavelength; "ior" is then unused.
+    ParamSpec metal = conductor_choice("ks");
+    metal.help = "a measured metal: K_spec F from its complex index n + i k under each light (ior unused)";
+    s.params.push_back(metal);
+    s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}, {"spectral_table", 1, no_spectral_table}};
     return s;
 }
 

@@ -1,6 +1,7 @@
 #include "models/glsl_generator.h"
 
 #include "models/model_table.h"
+#include "spectral/conductor.h"
 
 #include <algorithm>
 #include <cctype>
@@ -75,12 +76,19 @@ std::string defines(const ModelTable& table) {
         out += "#define FAMILY_" + upper(to_string(family)) + " " + std::to_string(static_cast<int>(family)) + "\n";
     for (const ModelSpec& spec : table.models())
         out += "#define MODEL_" + spec.macro_name() + " " + std::to_string(spec.id) + "\n";
-    std::set<std::string> seen;  // a choice parameter's constants once (the table keeps them equal)
+    // Each constant once: same-named choices of two models either share a list
+    // (distribution) or have different names (the metals' fresnel normal/full,
+    // microfacet's none/schlick/dielectric); each model compares its own.
+    std::set<std::string> seen;
     for (const ModelSpec& spec : table.models())
         for (const ParamSpec& param : spec.params)
-            if (param.kind == ParamKind::choice && seen.insert(param.name).second)
-                for (std::size_t i = 0; i < param.choices.size(); ++i)
-                    out += "#define " + upper(param.name + "_" + param.choices[i]) + " " + std::to_string(i) + "\n";
+            if (param.kind == ParamKind::choice)
+                for (std::size_t i = 0; i < param.choices.size(); ++i) {
+                    const std::string constant = upper(param.name + "_" + param.choices[i]);
+                    if (seen.insert(constant).second)
+                        out += "#define " + constant + " " + std::to_string(i) + "\n";
+                }
+    out += "#define CONDUCTOR_COS_SAMPLES " + std::to_string(spectral::kConductorCosSamples) + "\n";
     return out + "#define MAX_LOBES " + std::to_string(kMaxLobes) + "\n";
 }
 

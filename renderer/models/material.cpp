@@ -135,8 +135,23 @@ const ParamSpec* carry_source(const Material& from, const ParamSpec& param, bool
 
 }  // namespace
 
+double ReflectanceSpectrum::at(double wavelength_nm) const {
+    if (wavelength_nm <= nm.front()) return values.front();
+    if (wavelength_nm >= nm.back()) return values.back();
+    const std::size_t i = std::size_t(std::upper_bound(nm.begin(), nm.end(), wavelength_nm) - nm.begin()) - 1;
+    const double f = (wavelength_nm - nm[i]) / (nm[i + 1] - nm[i]);
+    return values[i] + f * (values[i + 1] - values[i]);
+}
+
+void Material::set_colour_spectrum(const ReflectanceSpectrum* spectrum) {
+    colour_spectrum_ = spectrum ? std::make_shared<const ReflectanceSpectrum>(*spectrum) : nullptr;
+}
+
 Material with_model(const Material& from, const ModelSpec& model) {
     Material to(model);
+    // The spectrum goes along where the new model takes one (the paper's models' "color").
+    for (const ParamSpec& param : model.params)
+        if (!param.spectrum_key.empty() && from.colour_spectrum()) to.set_colour_spectrum(from.colour_spectrum());
     const bool same_family = from.model().family == model.family;
     for (const ParamSpec& param : model.params) {
         const ParamSpec* source = carry_source(from, param, same_family);

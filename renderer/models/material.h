@@ -15,6 +15,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,15 @@ struct LobeList {
     std::vector<Lobe> to_vector() const { return {begin(), end()}; }
 };
 
+// A reflectance spectrum given in a scene ("color_spectrum", docs/spec.md#73-spectral-colours):
+// values in [0, 1] at increasing wavelengths in [380, 780] nm, any sampling;
+// linearly interpolated, held at the end values outside.
+struct ReflectanceSpectrum {
+    std::vector<double> nm, values;
+    double at(double wavelength_nm) const;
+    bool operator==(const ReflectanceSpectrum& other) const { return nm == other.nm && values == other.values; }
+};
+
 class Material {
 public:
     Material();                               // the default model ("highlight") with its defaults
@@ -85,11 +95,21 @@ public:
     void set_lobes(std::string_view name, const std::vector<Lobe>& lobes);
     void set_lobes(const std::vector<Lobe>& lobes) { set_lobes("lobes", lobes); }
 
+    // The colour as a spectrum, in place of the colour parameter whose
+    // ParamSpec::spectrum_key names it (nullptr: none). That parameter then
+    // holds the spectrum's colour under D65, for display and model switches.
+    const ReflectanceSpectrum* colour_spectrum() const { return colour_spectrum_.get(); }
+    void set_colour_spectrum(const ReflectanceSpectrum* spectrum);
+
     // The raw values, in the model's layout (ParamSpec::offset / size).
     const std::vector<double>& values() const { return values_; }
     std::vector<double>& values() { return values_; }
 
-    bool operator==(const Material& other) const { return model_ == other.model_ && values_ == other.values_; }
+    bool operator==(const Material& other) const {
+        return model_ == other.model_ && values_ == other.values_ &&
+               (colour_spectrum_ == other.colour_spectrum_ ||
+                (colour_spectrum_ && other.colour_spectrum_ && *colour_spectrum_ == *other.colour_spectrum_));
+    }
     bool operator!=(const Material& other) const { return !(*this == other); }
 
 private:
@@ -98,6 +118,7 @@ private:
 
     const ModelSpec* model_;
     std::vector<double> values_;
+    std::shared_ptr<const ReflectanceSpectrum> colour_spectrum_;  // shared: copied per pixel by the reference
 };
 
 // `from` switched to `model` (the explorer's model selector): the new model's

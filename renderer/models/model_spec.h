@@ -60,6 +60,17 @@ struct ParamSpec {
     std::string default_from;          // absent: copy this (earlier) parameter ("ka" <- "kd")
     std::vector<std::string> carry_from;  // model switch in the explorer: also take these names
     bool carry = true;                 // model switch keeps a same-named value
+    // Given in a scene, this parameter stands in for the (earlier) parameter of
+    // this name: "conductor" for "color" (docs/spec.md#72-measured-metals). Giving
+    // both is an error; the other is then not required. Only for a choice whose
+    // first choice ("none") means "not given".
+    std::string replaces;
+    // A colour that a scene may give as a reflectance spectrum under this key
+    // instead ("color_spectrum": docs/spec.md#73-spectral-colours); "" for none.
+    std::string spectrum_key;
+    // False: a scene is written without it while it holds its default, so
+    // scenes saved before it existed are written as before.
+    bool written_at_default = true;
 
     // Layout, set by ModelTable::add: doubles [offset, offset + size) of Material::values.
     int offset = 0;

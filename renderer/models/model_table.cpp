@@ -87,6 +87,12 @@ public:
                 break;
             case ParamKind::lobes: lobes(param, index); break;
         }
+        if (!param.replaces.empty()) {
+            const ParamSpec* other = earlier(param.replaces, index);
+            require(other && param.kind == ParamKind::choice && param.fallback[0] == 0.0,
+                    param.name + ": replaces \"" + param.replaces +
+                        "\" must name an earlier parameter, from a choice whose default (first) is none");
+        }
         if (!param.default_from.empty()) {
             const ParamSpec* from = earlier(param.default_from, index);
             require(from && from->kind == param.kind,

@@ -1,6 +1,7 @@
 #include "passes/frame_targets.h"
 
 #include "passes/material_buffer.h"
+#include "passes/spectral_tables.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -28,6 +29,7 @@ void FrameTargets::begin(const Scene& scene) {
     std::vector<float> records;
     records.reserve(scene.objects.size() * std::size_t(material_record_texels()) * 4);
     for (const Object& object : scene.objects) pack_material(object.material, records);
+    append_spectral_tables(scene.objects, scene.lights, records);
     materials_.upload(records);
     const int w = width(), h = height();
     gl_.BindFramebuffer(GL_FRAMEBUFFER, scene_.framebuffer());

@@ -6,7 +6,7 @@ LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_
     LightUniforms u;
     for (int c = 0; c < 3; ++c) u.global_ambient[c] = float(global_ambient[c]);
     for (const auto& light : lights) {
-        if (!light.enabled || light.intensity <= 0.0) continue;
+        if (!reaches_shader(light)) continue;
         const dvec3 scale = light.intensity * light.color;
         const dvec3 where = light.type == LightType::directional ? light.direction : light.position;
         const float type = light.type == LightType::directional ? 0.f : light.type == LightType::point ? 1.f : 2.f;

@@ -17,6 +17,10 @@ struct LightUniforms {
     float global_ambient[3] = {0.0f, 0.0f, 0.0f};  // the scene's L_glob (classic models)
 };
 
+// Whether a light reaches the shader: enabled with a positive intensity. The
+// shader's light i is the i-th such light of the scene.
+inline bool reaches_shader(const Light& light) { return light.enabled && light.intensity > 0.0; }
+
 // `global_ambient` is Scene::ambient (the lecture's L_glob).
 LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient = dvec3(0.0));
 

@@ -6,6 +6,7 @@
 #include "reference/reference.h"
 #include "reference/hooks.h"
 #include "reference/classic.h"
+#include "reference/conductor.h"
 
 #include "models/model_spec.h"
 
@@ -52,8 +53,25 @@ struct HighlightParts {
     dvec3 keep;
 };
 
+// A colour spectrum (docs/spec.md#73-spectral-colours): each light's diffuse
+// share in its own C0, d in D65's: d C0_D65 + (1 - d) sum_l a_l c_l (N.L) C0_l.
+HighlightParts highlight_parts_spectral(const Material& material, const std::vector<Light>& lights,
+                                        const SurfacePoint& point) {
+    const double d = material.number("d"), w = material.number("w"), m = material.number("m");
+    dvec3 diffuse(0.0), keep(1.0);
+    for (const Light& light : lights) {
+        const LightSample sample = sample_light(light, point.P);
+        const double NoL = glm::dot(point.N, sample.L);
+        if (!(NoL > 0.0) || sample.scale == dvec3(0.0)) continue;
+        diffuse += sample.scale * NoL * spectral_c0(material, &light, 1.0);
+        keep *= dvec3(1.0) - highlight_strength(w, sample.scale, mirror_RoV(sample.L, NoL, point), m);
+    }
+    return {glm::min(d * spectral_c0(material, nullptr, 1.0) + (1.0 - d) * diffuse, dvec3(1.0)), keep};
+}
+
 HighlightParts highlight_parts(const Material& material, const std::vector<Light>& lights,
                                const SurfacePoint& point) {
+    if (is_spectral(material)) return highlight_parts_spectral(material, lights, point);
     const double d = material.number("d"), w = material.number("w"), m = material.number("m");
     dvec3 diffuse(0.0), keep(1.0);
     for (const Light& light : lights) {
@@ -119,8 +137,27 @@ double metal_lobe_sum(const Material& material, const Light& light, const Surfac
     return reference_hooks(material.model()).metal(material, light, point, L, NoL, NoV);
 }
 
+// A measured metal (docs/spec.md#72-measured-metals) or a colour spectrum (#73):
+// d C0_D65 + sum_l a_l c_l lobes_l C0_l(V.H), each C0 summed per wavelength here
+// (reference/conductor.h).
+dvec3 shade_conductor(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
+    dvec3 sum(0.0);
+    for (const Light& light : lights) {
+        const LightSample sample = sample_light(light, point.P);
+        const double NoL = glm::dot(point.N, sample.L);
+        if (!(NoL > 0.0)) continue;
+        const double lobes = metal_lobe_sum(material, light, point, sample.L, NoL, NoV);
+        if (lobes == 0.0 || sample.scale == dvec3(0.0)) continue;  // nothing to colour
+        const double VoH = 0.5 * glm::length(sample.L + point.V);  // as beckmann_lobe_sum
+        sum += sample.scale * lobes * spectral_c0(material, &light, VoH);
+    }
+    return material.number("d") * spectral_c0(material, nullptr, 1.0) + sum;
+}
+
 // The metal family: C = { d + sum_l a_l c_l lobes_l } C0 over the lights with N.L > 0.
 dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+    if (is_spectral(material)) return shade_conductor(material, lights, point);
     const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
     dvec3 sum(0.0);
     for (const Light& light : lights) {

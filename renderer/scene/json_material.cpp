@@ -2,6 +2,11 @@
 
 #include "models/model_table.h"
 #include "scene/json_brdf.h"
+#include "scene/json_spectrum.h"
+#include "scene/spectral_colour.h"
+#include "spectral/spectrum.h"
+
+#include <glm/common.hpp>
 
 namespace m3055::scene_json {
 
@@ -27,7 +32,40 @@ void read_absent(const Node& node, const ParamSpec& param, Material& material) {
     if (param.kind == ParamKind::lobes) material.set_lobes(param.name, param.form_for(material).fallback);
 }
 
-void read_param(const Node& node, const ParamSpec& param, Material& material) {
+// The parameter that stands in for `param` when the file gives it ("conductor"
+// for "color": docs/spec.md#72-measured-metals), or nullptr. Its first choice
+// ("none") names no replacement: `param` is then read as ever.
+const ParamSpec* replacement_given(const Node& node, const ModelSpec& spec, const ParamSpec& param) {
+    for (const ParamSpec& other : spec.params)
+        if (other.replaces == param.name && node.has(other.name) && node.child(other.name).one_of(other.choices) != 0)
+            return &other;
+    return nullptr;
+}
+
+void read_param(const Node& node, const ModelSpec& spec, const ParamSpec& param, Material& material) {
+    const bool spectrum = !param.spectrum_key.empty() && node.has(param.spectrum_key);
+    if (const ParamSpec* replacement = replacement_given(node, spec, param)) {
+        for (const std::string& given : {param.name, spectrum ? param.spectrum_key : std::string()})
+            if (!given.empty() && node.has(given))
+                node.child(replacement->name)
+                    .fail("the material gives both \"" + given + "\" and \"" + replacement->name + "\"; give one");
+        return;
+    }
+    if (spectrum) {
+        // docs/spec.md#73-spectral-colours: the spectrum, and as the colour its D65 RGB.
+        if (node.has(param.name))
+            node.child(param.spectrum_key)
+                .fail("the material gives both \"" + param.name + "\" and \"" + param.spectrum_key + "\"; give one");
+        const Node given = node.child(param.spectrum_key);
+        const ReflectanceSpectrum read = read_spectrum(given);
+        material.set_colour_spectrum(&read);
+        try {
+            material.set_vec3(param.name, glm::clamp(spectrum_d65_rgb(read), dvec3(0.0), dvec3(1.0)));
+        } catch (const spectral::SpectralError& error) {
+            given.fail(std::string("cannot make its colour: ") + error.what());
+        }
+        return;
+    }
     if (!node.has(param.name)) return read_absent(node, param, material);
     const Node value = node.child(param.name);
     switch (param.kind) {
@@ -66,9 +104,11 @@ Material read_material(const Node& node) {
     const ModelSpec& spec = table.get(names.at(node.required("model").one_of(names)));
     std::vector<std::string> allowed = spec.param_names();
     allowed.push_back("model");
+    for (const ParamSpec& param : spec.params)
+        if (!param.spectrum_key.empty()) allowed.push_back(param.spectrum_key);
     node.check_keys(allowed, [&](const std::string& key) { return misplaced(spec, key); });
     Material material(spec);
-    for (const ParamSpec& param : spec.params) read_param(node, param, material);
+    for (const ParamSpec& param : spec.params) read_param(node, spec, param, material);
     return material;
 }
 
@@ -76,7 +116,22 @@ json material_json(const Material& material) {
     const ModelSpec& spec = material.model();
     if (spec.family == Family::brdf) return brdf_material_json(material);
     json out = {{"model", spec.name}};
+    // Left out: a parameter at its default that scenes need not give, and one
+    // that a given replacement stands in for ("color" of a conductor).
+    auto written = [&](const ParamSpec& param) {
+        if (param.kind == ParamKind::choice && !param.written_at_default &&
+            material.choice(param.name) == int(param.fallback[0]))
+            return false;
+        for (const ParamSpec& other : spec.params)
+            if (other.replaces == param.name && material.choice(other.name) != 0) return false;
+        return true;
+    };
     for (const ParamSpec& param : spec.params) {
+        if (!written(param)) continue;
+        if (!param.spectrum_key.empty() && material.colour_spectrum()) {
+            out[param.spectrum_key] = spectrum_json(*material.colour_spectrum());
+            continue;
+        }
         switch (param.kind) {
             case ParamKind::number: out[param.name] = material.number(param.name); break;
             case ParamKind::colour:

@@ -1,0 +1,26 @@
+// The colours per (material, light) of measured metals (docs/spec.md#72-measured-metals)
+// and colour spectra (#73-spectral-colours) for the GPU,
+// appended to the material records in the same texture (passes/material_texture.h).
+// A conductor material's table is, in texels (rgb used):
+//   0                    C0 of the background term d: D65 at normal incidence; alpha: K
+//   1 + i K + s          light i's C0 at cos(theta) = s / (K - 1), s = 0 .. K - 1
+// with K = 1 for F(lambda, 0) alone (the metals' "normal", microfacet's "none") and
+// K = spectral::kConductorCosSamples when F depends on the angle; light i is the shader's i-th light
+// (passes/light_uniforms.h: reaches_shader). Its start (a texel index) goes into
+// the record's spectral_table float (-1 elsewhere); glsl/models/metal.glsl reads it.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <vector>
+
+namespace m3055 {
+
+// Appends the tables of the spectral materials among `objects` (records:
+// one per object, pack_material's) and points their records at them. Tables
+// of metals are computed once per (metal, fresnel, light spectrum) and kept for
+// the process; a colour spectrum's (one texel per light) each time. Throws spectral::SpectralError when the CIE data cannot be read.
+void append_spectral_tables(const std::vector<Object>& objects, const std::vector<Light>& lights,
+                            std::vector<float>& records);
+
+}  // namespace m3055

@@ -1,0 +1,16 @@
+// The measured metals' data files, data/conductors/NAME.nk, embedded into the
+// binary at build time (cmake/embed_conductors.cmake), sorted by name.
+#pragma once
+
+#include <vector>
+
+namespace m3055::spectral {
+
+struct ConductorFile {
+    const char* name;  // the file's stem: "gold"
+    const char* text;  // its whole text
+};
+
+const std::vector<ConductorFile>& conductor_files();
+
+}  // namespace m3055::spectral
