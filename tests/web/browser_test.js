@@ -99,6 +99,15 @@ function sceneSet() {
   for (let bits = 1; bits <= 8; ++bits) {
     add('bits 1-8', `bits-${bits}.json`, JSON.stringify({ ...fig10, display: { ...fig10.display, bits } }, null, 2));
   }
+  // Spectral: measured metals under kelvin lights, eq. 19 in full, a colour spectrum (docs/spec.md §7.2-7.3).
+  const kelvin = [{ type: 'directional', direction: [1, 1, 1], intensity: 1.0, temperature_k: 3200 },
+                  { type: 'directional', direction: [-1, 0.3, 1], intensity: 0.5, temperature_k: 5600 }];
+  for (const [conductor, fresnel] of [['gold', 'full'], ['copper', 'normal'], ['silver', 'full']]) {
+    add('spectral', `conductor-${conductor}-${fresnel}.json`, scene(kelvin, [{ shape: 'sphere', center: [0, 0, 0], radius: 1,
+      material: { model: 'metal', conductor, fresnel } }]));
+  }
+  add('spectral', 'colour-spectrum.json', scene(kelvin, [{ shape: 'sphere', center: [0, 0, 0], radius: 1,
+    material: { model: 'highlight', color_spectrum: { nm: [380, 500, 600, 780], values: [0.1, 0.2, 0.8, 0.9] } } }]));
   const brdfDir = path.join(repo, 'tests', 'data', 'brdf');
   for (const f of fs.readdirSync(brdfDir).filter((f) => f.endsWith('.brdf')).sort()) {
     add('.brdf', `brdf-${f}.json`, scene(oneLight, [{ shape: 'sphere', center: [0, 0, 0], radius: 1, material: { model: 'brdf', file: f } }]),
