@@ -11,6 +11,7 @@
   const message = document.getElementById('message');
   const fileInput = document.getElementById('file');
   let started, failed;
+  let startNote = '';  // why a share or practice link did not open (shown once started)
   const ready = new Promise((resolve, reject) => { started = resolve; failed = reject; });
 
   function deviceSize() {
@@ -81,7 +82,7 @@
   // scene, not the page; Ctrl+O, Ctrl+Z/Y, F1 and F12 are the explorer's.
   window.addEventListener('keydown', (e) => {
     const ctrl = e.ctrlKey || e.metaKey;
-    if ((ctrl && ['s', 'o', 'z', 'y'].includes(e.key.toLowerCase())) || e.key === 'F1' || e.key === 'F12') {
+    if ((ctrl && ['a', 's', 'o', 'z', 'y'].includes(e.key.toLowerCase())) || e.key === 'F1' || e.key === 'F12') {
       e.preventDefault();
     }
   }, true);
@@ -116,10 +117,11 @@
         writeWorkFile('.keep', '');
         const error = Module.ccall('m3055_unpack_share_token', 'string', ['string', 'string'],
                                    [hash.get('scene'), WORK + '/shared-scene.json']);
-        if (error) say(error); else args.push(WORK + '/shared-scene.json');
+        if (error) startNote = 'the share link did not open: ' + error;
+        else args.push(WORK + '/shared-scene.json');
       }
     } catch (e) {
-      say(String(e.message || e));
+      startNote = String(e.message || e);
     }
     const [w, h] = deviceSize();
     canvas.width = w;
@@ -140,10 +142,16 @@
       if (pendingInput !== null) latencies.push(performance.now() - pendingInput);
       pendingInput = null;
     },
-    chooseFile: () => fileInput.click(),
+    // File > Open BRDF... and Ctrl+O: a browser opens its file chooser only
+    // from a click on the page itself, which this is not (the explorer acts on
+    // the click a frame later); the bar's Open... is.
+    chooseFile: () => {
+      say('use Open… in this bar: the browser opens its file chooser only from there');
+      document.getElementById('open').focus();
+    },
     started: () => {
       message.remove();
-      say('ready: drop a scene or .brdf file on the explorer, or use Open…');
+      say(startNote || 'ready: drop a scene or .brdf file on the explorer, or use Open…');
       canvas.focus();
       started();
     },

@@ -237,10 +237,13 @@ async function realInput(browser, base) {
   check(undone.equals(before), `${backend}: Ctrl+Z after the drag gives the display byte for byte as before`);
 
   // Ctrl+click the slider and type a value: m3055 render with that value.
-  // (A frame between Ctrl and the click: key events reach Dear ImGui through
-  // the explorer's input queue, a transition a frame, the click directly.)
+  // First the explorer idle (after the undo it compiles the specialized
+  // program between frames), then a few frames between Ctrl and the click: key
+  // events reach Dear ImGui through the explorer's input queue, a transition a
+  // frame, a mouse button directly (docs/web.md).
+  await sleep(2000);
   await page.keyboard.down('Control');
-  await sleep(150);
+  await sleep(400);
   await page.mouse.click(M_SLIDER.grab, M_SLIDER.y);
   await page.keyboard.up('Control');
   await sleep(200);
