@@ -43,14 +43,12 @@ Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode) {
     return compare_gpu_with_reference_of(scene, scene, mode);
 }
 
-Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene, ShaderMode mode) {
-    Gpu& g = gpu();
-    g.renderer.set_shader_mode(mode);
-    g.renderer.render(scene);
-    const RgbFloatImage raw = g.renderer.read_raw();
-    const ref::ReferenceImage reference = ref::render_reference(reference_scene);
-    const int w = scene.display.width, h = scene.display.height, bits = scene.display.bits;
+namespace {
 
+// How far the GPU's raw (unquantized, bottom-up) output is from the reference
+// on the reference's interior pixels.
+Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& reference, const Display& display) {
+    const int w = display.width, h = display.height, bits = display.bits;
     Comparison result;
     long same = 0;
     double sum = 0;
@@ -82,6 +80,27 @@ Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& refere
         result.same_level_share = 1.0;
     }
     return result;
+}
+
+RgbFloatImage render_raw(const Scene& scene, ShaderMode mode) {
+    Gpu& g = gpu();
+    g.renderer.set_shader_mode(mode);
+    g.renderer.render(scene);
+    return g.renderer.read_raw();
+}
+
+}  // namespace
+
+Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene, ShaderMode mode) {
+    const RgbFloatImage raw = render_raw(scene, mode);
+    return compare_raw(raw, ref::render_reference(reference_scene), scene.display);
+}
+
+std::vector<Comparison> compare_gpu_modes_with_reference(const Scene& scene, const std::vector<ShaderMode>& modes) {
+    const ref::ReferenceImage reference = ref::render_reference(scene);
+    std::vector<Comparison> results;
+    for (ShaderMode mode : modes) results.push_back(compare_raw(render_raw(scene, mode), reference, scene.display));
+    return results;
 }
 
 Scene single_sphere_scene(const Material& material, const std::vector<Light>& lights, bool orthographic) {

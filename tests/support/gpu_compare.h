@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace m3055 {
 class Renderer;   // frame/renderer.h
@@ -31,6 +32,9 @@ Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode = Shad
 // (same geometry and lights; e.g. a .brdf model against the built-in it copies).
 Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene,
                                          ShaderMode mode = ShaderMode::specialized);
+// `scene` rendered in each of `modes` against one reference (the reference is
+// most of a comparison's time: a spectral one sums every wavelength per pixel).
+std::vector<Comparison> compare_gpu_modes_with_reference(const Scene& scene, const std::vector<ShaderMode>& modes);
 
 // A scene with one sphere of `material` at the origin, the docs/spec.md#7-scene-files camera
 // (perspective, or orthographic with height 2.5), and `lights`.
