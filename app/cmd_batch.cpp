@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "progress.h"
+#include "gl/program.h"
 #include "scene/json_brdf.h"
 
 #include "grading/submissions.h"

@@ -12,6 +12,7 @@
 #include "analysis/brdf_check.h"
 #include "analysis/brdf_target.h"
 #include "gl/context.h"
+#include "gl/program.h"
 #include "models/model_spec.h"
 #include "passes/brdf_grid.h"
 

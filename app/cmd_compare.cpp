@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "progress.h"
 
+#include "gl/program.h"
 #include "grading/comparison_json.h"
 #include "grading/diff_image.h"
 #include "grading/image_input.h"

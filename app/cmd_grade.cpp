@@ -7,6 +7,7 @@
 // assignment, unusable reference or output folder); 2: usage.
 #include "capture.h"
 #include "commands.h"
+#include "gl/program.h"
 #include "scene/json_brdf.h"
 #include "interrupt.h"
 #include "progress.h"

@@ -9,6 +9,7 @@
 #include "progress.h"
 
 #include "gl/context.h"
+#include "gl/program.h"
 #include "image/image.h"
 
 #include <unistd.h>

@@ -4,6 +4,7 @@
 #include "interrupt.h"
 #include "progress.h"
 
+#include "gl/program.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
 #include "scene/load.h"

@@ -9,11 +9,6 @@ namespace m3055 {
 
 std::string error_line(const std::string& error) { return text::one_line("m3055: " + error); }
 
-std::string error_text(const std::exception& error) {
-    if (dynamic_cast<const ShaderError*>(&error)) return std::string("m3055: ") + error.what();
-    return error_line(error.what());
-}
-
 std::string progress_line(std::size_t done, std::size_t total, double per_second, int width) {
     const double fraction = total ? double(done) / double(total) : 1.0;
     const int filled = int(fraction * width);

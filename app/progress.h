@@ -31,9 +31,6 @@ private:
 // "m3055: " + error as one line of valid UTF-8 of at most 300 bytes
 // (io/message_text.h): how every command prints an error.
 std::string error_line(const std::string& error);
-// How render and batch print an exception: error_line(), except a shader
-// build failure's GL log (gl/program.h: ShaderError), printed whole.
-std::string error_text(const std::exception& error);
 
 // "[=======>      ]  37/200  18%  42.1 /s" for `width` bar characters.
 std::string progress_line(std::size_t done, std::size_t total, double per_second, int width = 30);

@@ -19,8 +19,4 @@ void set_session(std::unique_ptr<ExplorerSession> session);
 // dropped and test files here.
 inline constexpr const char* kWorkFolder = "/work";
 
-// How `m3055 render` prints an exception (app/progress.cpp error_text): the
-// API's rejections carry the same line.
-std::string render_error_line(const std::exception& error);
-
 }  // namespace m3055::web

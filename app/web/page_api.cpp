@@ -25,11 +25,6 @@ std::unique_ptr<ExplorerSession> g_session;
 ExplorerSession* session() { return g_session.get(); }
 void set_session(std::unique_ptr<ExplorerSession> session) { g_session = std::move(session); }
 
-std::string render_error_line(const std::exception& error) {
-    if (dynamic_cast<const ShaderError*>(&error)) return std::string("m3055: ") + error.what();
-    return text::one_line(std::string("m3055: ") + error.what());
-}
-
 }  // namespace m3055::web
 
 using namespace m3055;
@@ -49,7 +44,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_load_scene(const char* path) {
     try {
         s->render_display_now();
     } catch (const std::exception& e) {
-        result = web::render_error_line(e);
+        result = error_text(e);
     }
     return result.c_str();
 }
@@ -82,7 +77,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_display_png(void) {
         const std::vector<std::uint8_t> png = encode_png(s->render_display_now());
         result = "data:image/png;base64," + explore::base64_encode(std::string(png.begin(), png.end()));
     } catch (const std::exception& e) {
-        s->state().error = web::render_error_line(e);
+        s->state().error = error_text(e);
     }
     return result.c_str();
 }

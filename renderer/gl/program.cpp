@@ -1,6 +1,7 @@
 #include "gl/program.h"
 
 #include "gl/shader_source.h"
+#include "io/message_text.h"
 #include "models/model_table.h"
 
 #include <regex>
@@ -9,6 +10,11 @@
 #include <tuple>
 
 namespace m3055 {
+
+std::string error_text(const std::exception& error) {
+    if (dynamic_cast<const ShaderError*>(&error)) return std::string("m3055: ") + error.what();
+    return text::one_line(std::string("m3055: ") + error.what());
+}
 
 bool ProgramKey::operator<(const ProgramKey& other) const {
     return std::tie(vertex, fragment, defines, table_revision) <

@@ -29,6 +29,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// How every command (and the page) prints an error: "m3055: " and what() on
+// one line (io/message_text's one_line), a ShaderError's log whole.
+std::string error_text(const std::exception& error);
+
 // Builds a program; throws ShaderError carrying the GL log with glsl/
 // file names and lines when compiling or linking fails.
 unsigned build_program(const GlApi& gl, const ProgramKey& key);
