@@ -5,11 +5,13 @@
 namespace m3055::explore {
 
 std::size_t events_for_this_frame(const std::deque<InputEvent>& queue) {
-    std::set<int> keys_fed;
+    std::set<int> keys_fed, buttons_fed;
     bool key_pressed = false;
     std::size_t n = 0;
     for (const InputEvent& event : queue) {
-        if (event.kind == InputEvent::Kind::key) {
+        if (event.kind == InputEvent::Kind::mouse_button) {
+            if (!buttons_fed.insert(event.key).second) break;  // a click's release: next frame
+        } else if (event.kind == InputEvent::Kind::key) {
             if (!keys_fed.insert(event.key).second) break;  // its second transition: next frame
             if (event.press && event.edit_key) key_pressed = true;
         } else if (key_pressed) {

@@ -1,6 +1,6 @@
-// The keyboard queue (explore/input_queue.h): a burst of presses and releases
-// reaches Dear ImGui one transition per key per frame, characters stay in
-// order with the keys around them, and nothing is dropped.
+// The input queue (explore/input_queue.h): a burst of presses and releases
+// reaches Dear ImGui one transition per key or button per frame, characters
+// and clicks stay in order with the keys around them, and nothing is dropped.
 #include "explore/input_queue.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +11,8 @@
 namespace m3055::explore {
 namespace {
 
-constexpr int kBackspace = 259, kShift = 340, kA = 65;
+constexpr int kBackspace = 259, kShift = 340, kA = 65, kCtrl = 341;
+constexpr int kLeftButton = 0;
 
 InputEvent key(int code, bool down) {
     InputEvent e;
@@ -19,6 +20,15 @@ InputEvent key(int code, bool down) {
     e.action = down ? 1 : 0;
     e.press = down;
     e.edit_key = code == kBackspace;
+    return e;
+}
+
+InputEvent button(int code, bool down) {
+    InputEvent e;
+    e.kind = InputEvent::Kind::mouse_button;
+    e.key = code;
+    e.action = down ? 1 : 0;
+    e.press = down;
     return e;
 }
 
@@ -40,7 +50,9 @@ std::string frames(std::deque<InputEvent> queue) {
         for (std::size_t i = 0; i < n; ++i) {
             const InputEvent& e = queue.front();
             if (e.kind == InputEvent::Kind::character) out += "'" + std::string(1, char(e.codepoint)) + "'";
-            else out += (e.key == kBackspace ? "B" : e.key == kShift ? "S" : "K") + std::string(e.press ? "+" : "-");
+            else if (e.kind == InputEvent::Kind::mouse_button) out += "M" + std::string(e.press ? "+" : "-");
+            else out += (e.key == kBackspace ? "B" : e.key == kShift ? "S" : e.key == kCtrl ? "C" : "K") +
+                        std::string(e.press ? "+" : "-");
             queue.pop_front();
         }
     }
@@ -66,6 +78,21 @@ TEST(ExploreInputQueue, ALetterAndItsCharacterShareAFrameItsReleaseWaits) {
     std::deque<InputEvent> queue = {key(kShift, true), key(kA, true), character('A'), key(kA, false),
                                     key(kShift, false), key(kA, true), character('a'), key(kA, false)};
     EXPECT_EQ(frames(queue), "S+K+'A'|K-S-|K+'a'|K-");
+}
+
+// xdotool's "key BackSpace BackSpace keydown ctrl click 1 keyup ctrl" in one
+// busy frame: the click reaches ImGui with the Ctrl press, never before it.
+TEST(ExploreInputQueue, ACtrlClickBehindQueuedKeysKeepsItsCtrl) {
+    std::deque<InputEvent> queue = {key(kBackspace, true), key(kBackspace, false), key(kBackspace, true),
+                                    key(kBackspace, false), key(kCtrl, true), button(kLeftButton, true),
+                                    button(kLeftButton, false), key(kCtrl, false)};
+    EXPECT_EQ(frames(queue), "B+|B-|B+|B-C+M+|M-C-");
+}
+
+TEST(ExploreInputQueue, AClickBetweenTwoFramesIsAPressAndAReleaseAFrameEach) {
+    std::deque<InputEvent> queue = {button(kLeftButton, true), button(kLeftButton, false), button(kLeftButton, true),
+                                    button(kLeftButton, false)};
+    EXPECT_EQ(frames(queue), "M+|M-|M+|M-") << "a double click: two clicks, none lost";
 }
 
 TEST(ExploreInputQueue, AnEmptyQueueFeedsNothing) { EXPECT_EQ(events_for_this_frame({}), 0u); }

@@ -10,6 +10,8 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <deque>
+#include <iterator>
 
 namespace m3055::explore {
 
@@ -48,6 +50,27 @@ void queue_char(GLFWwindow* window, unsigned codepoint) {
     events.frames_owed = kFramesAfterInput;
 }
 
+// A click waits in the same queue, behind the keys before it (a Ctrl press
+// still queued must reach ImGui first).
+void queue_mouse_button(GLFWwindow* window, int button, int action, int mods) {
+    InputEvent event;
+    event.kind = InputEvent::Kind::mouse_button;
+    event.key = button;
+    event.action = action;
+    event.mods = mods;
+    event.press = action == GLFW_PRESS;
+    glfwGetCursorPos(window, &event.x, &event.y);
+    WindowEvents& events = events_of(window);
+    events.input.push_back(event);
+    events.frames_owed = kFramesAfterInput;
+}
+
+bool button_queued(const std::deque<InputEvent>& queue, int button) {
+    for (const InputEvent& event : queue)
+        if (event.kind == InputEvent::Kind::mouse_button && event.key == button) return true;
+    return false;
+}
+
 }  // namespace
 
 ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
@@ -65,6 +88,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     ImGui_ImplGlfw_InitForOpenGL(window, true);  // its key and char callbacks chain to the window's
     glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)
     glfwSetCharCallback(window, queue_char);
+    glfwSetMouseButtonCallback(window, queue_mouse_button);
 #ifdef __EMSCRIPTEN__
     ImGui_ImplOpenGL3_Init("#version 300 es");  // WebGL2
 #else
@@ -80,18 +104,37 @@ ImGuiLayer::~ImGuiLayer() {
 
 void ImGuiLayer::new_frame() {
     std::deque<InputEvent>& queue = events_of(window_).input;
+    bool click_fed = false;
+    double click_x = 0, click_y = 0;
     for (std::size_t n = events_for_this_frame(queue); n > 0; --n) {
         const InputEvent event = queue.front();
         queue.pop_front();
-        if (event.kind == InputEvent::Kind::character) ImGui_ImplGlfw_CharCallback(window_, event.codepoint);
-        else ImGui_ImplGlfw_KeyCallback(window_, event.key, event.scancode, event.action, event.mods);
+        if (event.kind == InputEvent::Kind::character) {
+            ImGui_ImplGlfw_CharCallback(window_, event.codepoint);
+        } else if (event.kind == InputEvent::Kind::mouse_button) {
+            ImGui_ImplGlfw_MouseButtonCallback(window_, event.key, event.action, event.mods);
+            if (event.key >= 0 && event.key < int(std::size(buttons_down_))) buttons_down_[event.key] = event.press;
+            click_fed = true, click_x = event.x, click_y = event.y;
+        } else {
+            ImGui_ImplGlfw_KeyCallback(window_, event.key, event.scancode, event.action, event.mods);
+        }
     }
     if (!queue.empty()) events_of(window_).frames_owed = kFramesAfterInput;  // the rest: the next frames
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    // The buttons as fed, not as they are now (the backend polled those). A
+    // button up now with nothing of it queued lost its release (released
+    // outside a browser's canvas): up.
+    ImGuiIO& io = ImGui::GetIO();
+    for (int button = 0; button < int(std::size(buttons_down_)); ++button) {
+        if (buttons_down_[button] && !button_queued(queue, button) &&
+            glfwGetMouseButton(window_, button) != GLFW_PRESS)
+            buttons_down_[button] = false;
+        io.MouseDown[button] = buttons_down_[button];
+    }
+    if (click_fed) io.MousePos = ImVec2(float(click_x), float(click_y));  // where the click was, not where the mouse is now
     // Dear ImGui 1.86 asserts on a zero time step; two frames in one tick of
     // the clock happen in a browser (its timers are coarse on purpose).
-    ImGuiIO& io = ImGui::GetIO();
     if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1e-4f;
     ImGui::NewFrame();
 }

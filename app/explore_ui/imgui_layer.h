@@ -1,9 +1,9 @@
 // Dear ImGui on the explorer's window (GLFW platform, OpenGL 3 renderer),
 // set up and torn down as one object; its callbacks chain to the window's.
-// Key and character events wait in the window's queue (WindowEvents::input)
-// and reach ImGui at most one transition per key per frame
-// (explore/input_queue.h): a key pressed and released between two frames is
-// not lost.
+// Key, character and mouse-button events wait in the window's queue
+// (WindowEvents::input) and reach ImGui at most one transition per key or
+// button per frame (explore/input_queue.h): a key pressed and released between
+// two frames is not lost, and a click keeps its place among the keys.
 #pragma once
 
 struct GLFWwindow;
@@ -22,6 +22,9 @@ public:
 
 private:
     GLFWwindow* window_;
+    // Each button as the queue has fed it (ImGui 1.86's GLFW backend reads the
+    // buttons' live state at NewFrame, which may be ahead of the queue).
+    bool buttons_down_[5] = {};
 };
 
 }  // namespace m3055::explore
