@@ -46,6 +46,17 @@ TEST(MaterialFields, AColourGivenAsASpectrumIsDisabledWithItsD65ColourShown) {
     EXPECT_EQ(reason(m, "color"), "");
 }
 
+TEST(MaterialFields, AClassicModelsKdGivenAsASpectrumIsDisabled) {
+    Material m = Material::of("phong");
+    ReflectanceSpectrum spectrum;
+    spectrum.nm = {400.0, 700.0};
+    spectrum.values = {0.2, 0.8};
+    m.set_colour_spectrum(&spectrum);
+    EXPECT_EQ(reason(m, "kd"), "no effect: the kd_spectrum gives the colour per light");
+    EXPECT_EQ(reason(m, "ka"), "") << "K_amb stays an RGB colour (its default: kd's D65 colour)";
+    EXPECT_EQ(reason(m, "ks"), "");
+}
+
 TEST(MaterialFields, NoParameterOfAnyModelIsDisabledAtItsDefaults) {
     for (const ModelSpec& spec : model_table().models()) {
         const ModelSpec* model = &spec;

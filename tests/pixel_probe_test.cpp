@@ -166,6 +166,20 @@ TEST(PixelProbe, AColourSpectrumGivesItsColourPerLightAndAnRgbColourNone) {
     expect_rgb(pairs[1].c0, spectrum_c0(spectrum, &scene.lights[1]), 1e-12, "fill");
     EXPECT_FALSE(pairs[0].by_angle);
 
+    EXPECT_EQ(pairs[0].symbol, "C0");
+    // A classic model's kd_spectrum: K_diff per light, read out as kd_l.
+    Material phong = Material::of("phong");
+    phong.set_colour_spectrum(&spectrum);
+    scene.objects[0].material = phong;
+    const std::vector<PairColour> kd = pair_colours(scene, hit);
+    ASSERT_EQ(kd.size(), 2u);
+    EXPECT_EQ(kd[0].symbol, "kd");
+    expect_rgb(kd[0].c0, spectrum_c0(spectrum, &scene.lights[0]), 1e-12, "phong key");
+    PixelProbe probe;
+    probe.pairs = kd;
+    EXPECT_NE(probe.text().find("\nlight 0 \"key\": kd_l "), std::string::npos) << probe.text();
+    EXPECT_NE(probe.text().find("  a_l c_l kd_l "), std::string::npos) << probe.text();
+
     scene.objects[0].material = Material::of("highlight");  // RGB: every light sees the same C0
     EXPECT_TRUE(pair_colours(scene, hit).empty());
     EXPECT_TRUE(pair_colours(scene, picker.pick(0, 0)).empty()) << "the background";

@@ -114,6 +114,17 @@ TEST(SpectrumCurves, AColourSpectrumIsItsOwnValuesHeldAtTheEnds) {
     EXPECT_DOUBLE_EQ(c.reflectance.back(), 0.3);  // 780 nm: held
 }
 
+TEST(SpectrumCurves, AClassicModelsKdSpectrumIsNamedAsItsKey) {
+    Material m = Material::of("phong");
+    ReflectanceSpectrum s;
+    s.nm = {400.0, 700.0};
+    s.values = {0.2, 0.6};
+    m.set_colour_spectrum(&s);
+    const SpectrumView view = spectrum_view(nullptr, &m);
+    EXPECT_EQ(view.reflectance_label, "kd_spectrum");
+    EXPECT_DOUBLE_EQ(view.curves.reflectance[24], 0.2 + 0.4 * 100.0 / 300.0);  // 500 nm
+}
+
 TEST(SpectrumCurves, AnRgbColourHasNoReflectanceAndSaysWhy) {
     const Material m = Material::of("highlight");
     const SpectrumView view = spectrum_view(nullptr, &m);

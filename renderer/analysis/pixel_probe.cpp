@@ -1,6 +1,7 @@
 #include "analysis/pixel_probe.h"
 
 #include "geometry/mesh.h"
+#include "models/model_spec.h"
 #include "reference/conductor.h"
 #include "reference/reference.h"
 #include "scene/conductor_use.h"
@@ -75,6 +76,7 @@ std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit) {
         pair.light = int(i);
         pair.name = light.name;
         pair.by_angle = by_angle;
+        if (material.colour_spectrum() && material.model().family == Family::classic) pair.symbol = "kd";
         const dvec3 L = ref::sample_light(light, hit.P).L;
         const dvec3 H = L + hit.V;
         // V.H: the angle of the metals' Fresnel term (docs/spec.md#72-measured-metals), as the reference takes it.
@@ -122,9 +124,10 @@ std::string PixelProbe::text() const {
     std::string out = buffer;
     for (const PairColour& pair : pairs) {
         char line[256];
-        std::snprintf(line, sizeof line, "\nlight %d%s%s%s: C0_l %.3f %.3f %.3f  a_l c_l C0_l %.3f %.3f %.3f", pair.light,
-                      pair.name.empty() ? "" : " \"", pair.name.c_str(), pair.name.empty() ? "" : "\"", pair.c0.r,
-                      pair.c0.g, pair.c0.b, pair.lit.r, pair.lit.g, pair.lit.b);
+        const char* symbol = pair.symbol.c_str();
+        std::snprintf(line, sizeof line, "\nlight %d%s%s%s: %s_l %.3f %.3f %.3f  a_l c_l %s_l %.3f %.3f %.3f", pair.light,
+                      pair.name.empty() ? "" : " \"", pair.name.c_str(), pair.name.empty() ? "" : "\"", symbol,
+                      pair.c0.r, pair.c0.g, pair.c0.b, symbol, pair.lit.r, pair.lit.g, pair.lit.b);
         out += line;
         if (pair.by_angle) {
             std::snprintf(line, sizeof line, " at V.H %.3f", pair.cos_theta);

@@ -52,6 +52,10 @@ struct PairColour {
     dvec3 lit{0.0};         // a_l c_l C0_l
     double cos_theta = 1.0;  // V.H at the pixel (the metals' Fresnel angle)
     bool by_angle = false;  // C0_l depends on the angle ("fresnel" full or schlick): cos_theta matters
+    // The colour's name in the read-out: "C0" (the paper's models, a conductor),
+    // "kd" (a classic model's kd_spectrum: K_diff per light; on a microfacet
+    // conductor with a kd_spectrum the read-out shows kd's, not the metal's).
+    std::string symbol = "C0";
 };
 // One per light that reaches the shader (enabled, intensity > 0), for the
 // material at `hit`; none for a material whose colour is RGB (every light

@@ -1,5 +1,6 @@
 #include "scene/spectrum_view.h"
 
+#include "models/model_spec.h"
 #include "scene/conductor_use.h"
 #include "spectral/conductor.h"
 
@@ -37,7 +38,9 @@ SpectrumView spectrum_view(const Light* light, const Material* material) {
         view.no_reflectance = "no material";
     } else if (const ReflectanceSpectrum* spectrum = material->colour_spectrum()) {
         reflectance = [spectrum](double nm) { return spectrum->at(nm); };
-        view.reflectance_label = "color_spectrum";
+        view.reflectance_label = "color_spectrum";  // the paper's models; the classic ones name it kd_spectrum
+        for (const ParamSpec& param : material->model().params)
+            if (!param.spectrum_key.empty()) view.reflectance_label = param.spectrum_key;
     } else if (const std::optional<ConductorUse> use = conductor_use(*material)) {
         const spectral::ComplexIndex* metal = &spectral::conductor(use->metal);
         // The paper's R(lambda) = F(lambda, 0) (assumption 3); "full" and Schlick depart from it off normal.
