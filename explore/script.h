@@ -31,6 +31,7 @@
 //   plot_scale fixed|model_max|log|lobe   its radial scale (lobe: the default)
 //   probe X Y               print the pixel probe of display pixel (X, Y), y = 0 the top row:
 //                           "probe pixel (X, Y)<TAB>linear R G B<TAB>level ...<TAB>png ...<TAB>object I (MODEL)..."
+//                           (a conductor or color_spectrum material adds a field per light: "light I "NAME": C0_l ...")
 //   compare_diff on|off     the A/B panel's third pane, |A - B| per channel, scaled
 //   diff_scale auto|N       its scale (N a whole number in 1 ... 255)
 //   print_compare           print "compare differing=N pixels=M scale=S" (pixels on another level)

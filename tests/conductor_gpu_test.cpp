@@ -1,5 +1,6 @@
 // Measured metals (docs/spec.md#72-measured-metals) — the paper's metals and
-// microfacet with each of its Fresnel choices — on the GPU against the CPU
+// microfacet with each of its Fresnel choices — and colour spectra (the paper's
+// color_spectrum, the classic models' kd_spectrum) on the GPU against the CPU
 // reference, which sums every (conductor, light) pair per wavelength at the
 // pixel's exact V.H (reference/conductor.h) where the GPU reads its precomputed
 // tables (passes/spectral_tables.h: F(lambda, 0), or 65 samples over cos theta
@@ -115,6 +116,18 @@ std::vector<Case> all_cases() {
     all.push_back({"microfacet_gold_schlick", microfacets[1]});
     all.push_back({"microfacet_gold_dielectric", microfacets[2]});
     all.push_back({"microfacet_titanium_ggx", ggx});
+    // kd as a spectrum on the classic models (one colour per light), alone and under a microfacet conductor.
+    Material kd_lambert = Material::of("lambert");
+    kd_lambert.set_colour_spectrum(&rising);
+    Material kd_phong = with_model(kd_lambert, model_table().get("phong"));
+    kd_phong.set_number("shininess", 40);
+    Material kd_oren_nayar = with_model(kd_lambert, model_table().get("oren_nayar"));
+    Material kd_gold = microfacets[2];
+    kd_gold.set_colour_spectrum(&rising);
+    all.push_back({"kd_spectrum_lambert", kd_lambert});
+    all.push_back({"kd_spectrum_phong", kd_phong});
+    all.push_back({"kd_spectrum_oren_nayar", kd_oren_nayar});
+    all.push_back({"kd_spectrum_microfacet_gold_dielectric", kd_gold});
     // The combined case first, then material-major with six (light set-up,
     // camera) cases per material: the sanitizer tree's every fifth case
     // (tests/CMakeLists.txt) then has the combined case, every material and,

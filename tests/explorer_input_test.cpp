@@ -656,7 +656,7 @@ public:
 TEST_F(ExplorerInput, NoTextIsClippedAt1280x720Or1920x1080) {
     const ClipCheck check;
     const std::string open_all = "section Objects and figure presets open\nsection Camera open\n"
-                                 "section A/B compare open\n";
+                                 "section A/B compare open\nsection Spectra open\n";
     auto clipped_lines = [&](int w, int h, const std::string& script, std::vector<std::string> args = {}) {
         test::write_text(dir_.file("clip.txt"), open_all + script + "idle 1\nquit\n");
         args.insert(args.end(), {"--scene", test::source_path("scenes/fig10.json"), "--script", dir_.file("clip.txt")});

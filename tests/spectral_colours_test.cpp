@@ -1,7 +1,9 @@
 // Colours given as reflectance spectra (docs/spec.md#73-spectral-colours): eq. 2 per
 // (material, light), metamerism, the scene format's "color_spectrum".
 #include "models/model_table.h"
+#include "reference/classic.h"
 #include "reference/conductor.h"
+#include "reference/reference.h"
 #include "scene/load.h"
 #include "scene/spectral_colour.h"
 #include "spectral/cie_data.h"
@@ -14,6 +16,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace m3055 {
@@ -126,7 +129,53 @@ TEST(SpectralColours, ModelSwitchesKeepTheSpectrumWhereAColourTakesOne) {
     const ReflectanceSpectrum s = sampled([](double nm) { return nm > 550 ? 0.8 : 0.1; });
     m.set_colour_spectrum(&s);
     EXPECT_NE(with_model(m, model_table().get("metal")).colour_spectrum(), nullptr);
-    EXPECT_EQ(with_model(m, model_table().get("lambert")).colour_spectrum(), nullptr);
+    // The classic models take it as kd_spectrum (their "kd" carries "color").
+    const Material lambert = with_model(m, model_table().get("lambert"));
+    ASSERT_NE(lambert.colour_spectrum(), nullptr);
+    EXPECT_EQ(*lambert.colour_spectrum(), s);
+    EXPECT_EQ(lambert.vec3("kd"), m.vec3("color"));
+}
+
+TEST(SpectralColours, ClassicModelsTakeKdAsASpectrumLoadWriteAndDefaultKaToItsD65Colour) {
+    const json spectrum = {{"nm", {380, 500, 600, 780}}, {"values", {0.1, 0.2, 0.7, 0.9}}};
+    for (const char* model : {"lambert", "oren_nayar", "phong", "microfacet", "ward", "heidrich_seidel"}) {
+        const Scene scene = scene_from_json(scene_with({{"model", model}, {"kd_spectrum", spectrum}}), "t.json");
+        const Material& m = scene.objects[0].material;
+        ASSERT_NE(m.colour_spectrum(), nullptr) << model;
+        const dvec3 d65 = spectrum_d65_rgb(*m.colour_spectrum());
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.vec3("kd")[c], std::clamp(d65[c], 0.0, 1.0), 1e-12) << model;
+        EXPECT_EQ(m.vec3("ka"), m.vec3("kd")) << model << ": ka defaults to kd";
+        const json written = scene_to_json(scene)["objects"][0]["material"];
+        EXPECT_EQ(written["kd_spectrum"], spectrum) << model;
+        EXPECT_FALSE(written.contains("kd")) << model;
+        EXPECT_EQ(scene_from_json(scene_to_json(scene), "t.json").objects[0].material, m) << model;
+    }
+    // Without it a classic material is written as before.
+    const Scene plain = scene_from_json(scene_with({{"model", "phong"}, {"kd", {0.5, 0.5, 0.5}}}), "t.json");
+    EXPECT_FALSE(scene_to_json(plain)["objects"][0]["material"].contains("kd_spectrum"));
+}
+
+TEST(SpectralColours, AClassicKdSpectrumIsItsColourPerLightInTheReference) {
+    const ReflectanceSpectrum s = sampled([](double nm) { return 0.1 + 0.8 * bump(nm, 600.0); });
+    Material spectral = Material::of("phong");
+    spectral.set_colour_spectrum(&s);
+    spectral.set_number("shininess", 20);
+    ref::SurfacePoint point;
+    point.P = {0, 0, 1}, point.N = {0, 0, 1}, point.V = glm::normalize(dvec3(0.3, 0, 1));
+    Light a = illuminant("A");
+    a.color = {1.3, 0.9, 0.4};  // as the loader sets it (any colour: the same in both sums below)
+    a.direction = glm::normalize(dvec3(1, 1, 1));
+    const std::vector<Light> lights = {a};
+    // The same as an RGB kd equal to the spectrum's colour under A (eq. 2 for the pair).
+    Material rgb = spectral;
+    rgb.set_colour_spectrum(nullptr);
+    rgb.set_vec3("kd", spectrum_c0(s, &a));
+    const dvec3 got = ref::shade_classic(spectral, lights, point, dvec3(0.0));
+    const dvec3 want = ref::shade_classic(rgb, lights, point, dvec3(0.0));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-12) << c;
+    // Not the product of RGBs: the material's D65 colour under A's RGB gives another colour.
+    rgb.set_vec3("kd", spectrum_d65_rgb(s));
+    EXPECT_GT(glm::length(ref::shade_classic(rgb, lights, point, dvec3(0.0)) - got), 1e-3);
 }
 
 TEST(SpectralColours, InvalidSpectraAreOneLineNamingTheField) {
@@ -150,6 +199,12 @@ TEST(SpectralColours, InvalidSpectraAreOneLineNamingTheField) {
               std::string::npos);
     EXPECT_NE(problem({{"model", "lambert"}, {"kd", {1, 1, 1}}, {"color_spectrum", good}}).find("color_spectrum"),
               std::string::npos);
+    EXPECT_EQ(problem({{"model", "phong"}, {"kd", {1, 1, 1}}, {"kd_spectrum", good}}),
+              "t.json: objects[0].material.kd_spectrum: the material gives both \"kd\" and \"kd_spectrum\"; give one");
+    EXPECT_NE(problem({{"model", "lambert"}, {"kd_spectrum", {{"nm", {380, 450}}, {"values", {0, 1.5}}}}})
+                  .find("objects[0].material.kd_spectrum.values[1]: must be in [0, 1]"),
+              std::string::npos);
+    EXPECT_NE(problem({{"model", "highlight"}, {"kd_spectrum", good}}).find("kd_spectrum"), std::string::npos);
 }
 
 }  // namespace

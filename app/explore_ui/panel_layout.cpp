@@ -51,6 +51,7 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
     if (header(state, "Display", true)) display_section(state, info);
     if (header(state, "Material", true)) material_section(state);
     if (header(state, "Lights", true)) lights_section(state);
+    if (header(state, "Spectra", false)) spectra_section(state);
     if (header(state, "Objects and figure presets", false)) objects_section(state);
     if (header(state, "Camera", false)) camera_section(state);
     if (header(state, "A/B compare", false)) compare_section(state);

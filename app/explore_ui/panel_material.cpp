@@ -4,6 +4,7 @@
 // The metal family adds the eq. 14 read-out and rescale.
 #include "explore_ui/panels.h"
 
+#include "explore/material_fields.h"
 #include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 #include "models/model_table.h"
@@ -149,7 +150,22 @@ bool material_editor(Material& material, std::string& action) {
         ImGui::SetTooltip("%s\n%s", material.model().summary.c_str(), material.model().citation.c_str());
     for (const ParamSpec& param : material.model().params) {
         ImGui::PushID(param.name.c_str());
+        // A colour a conductor or a color_spectrum stands in for: shown, disabled, and why (explore/material_fields.h).
+        const std::string inert = inert_reason(material, param);
+        ImGui::BeginDisabled(!inert.empty());
         changed |= param_widget(material, param);
+        ImGui::EndDisabled();
+        if (!inert.empty()) {
+            hint(inert.c_str());
+            tooltip(inert_detail(material, param));
+            if (material.colour_spectrum() && !param.spectrum_key.empty()) {
+                if (ImGui::SmallButton("use an RGB colour instead")) {
+                    material.set_colour_spectrum(nullptr);  // the field keeps the spectrum's D65 colour
+                    changed = true;
+                }
+                tooltip("Drops the color_spectrum; the colour stays its colour under D65 (undoable).");
+            }
+        }
         ImGui::PopID();
     }
     if (material.model().family == Family::metal && eq14_readout(material)) {

@@ -72,6 +72,8 @@ void draw_brdf_views(ExplorerState& state, BrdfViews* views, float x, float y, f
 void display_section(ExplorerState& state, const FrameInfo& info);
 void material_section(ExplorerState& state);
 void lights_section(ExplorerState& state);
+// The selected light's spectrum and the selected material's R(lambda) (panel_spectra.cpp).
+void spectra_section(ExplorerState& state);
 void objects_section(ExplorerState& state);
 void camera_section(ExplorerState& state);
 void compare_section(ExplorerState& state);

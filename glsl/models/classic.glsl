@@ -119,13 +119,19 @@ vec3 specular_heidrich_seidel(Material mat, vec3 N, vec3 L, vec3 V, float NoL, f
 // classic_diffuse and classic_specular (generated from the model table) pick
 // the material's hooks.
 
-// A microfacet conductor (docs/spec.md#72-measured-metals): K_spec F is the
-// metal's C0 for each light at V.H, from its spectral table.
-vec3 shade_classic_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
+// A classic material with a spectral table (passes/spectral_tables.h): a
+// microfacet conductor (docs/spec.md#72-measured-metals), whose K_spec F is the
+// metal's C0 for each light at V.H, and/or a kd_spectrum (#73-spectral-colours),
+// whose K_diff is its colour under each light; both read from the table.
+vec3 shade_classic_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
     int table = int(mat.spectral_table);
-    int samples = int(m3055_material_texel(table).a);
-    mat.ks = vec3(1.0);
-    mat.fresnel = FRESNEL_NONE;  // F is in the table
+    vec4 head = m3055_material_texel(table);
+    int samples = int(head.a);  // the conductor's texels a light; 0: ks as given
+    int kd_at = int(head.r);    // kd's colours a light from here; < 0: kd as given
+    if (samples > 0) {
+        mat.ks = vec3(1.0);
+        mat.fresnel = FRESNEL_NONE;  // F is in the table
+    }
     vec3 I = u_global_ambient * mat.ka + mat.emission;
     float NoV = max(dot(N, V), 0.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) {
@@ -133,15 +139,15 @@ vec3 shade_classic_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
         I += light.spot * u_light_ambient[i] * mat.ka;  // spot-shaped, not attenuated
         float NoL = dot(N, light.L);
         float diffuse = classic_diffuse(mat, NoL, NoV, dot(light.L, V));
-        vec3 c0 = conductor_c0(table + 1 + i * samples, samples, 0.5 * length(light.L + V));
-        I += light.scale * (diffuse * mat.kd + classic_specular(mat, N, light.L, V, NoL, NoV) * c0);
+        vec3 kd = kd_at >= 0 ? m3055_material_texel(table + kd_at + i).rgb : mat.kd;
+        vec3 c0 = samples > 0 ? conductor_c0(table + 1 + i * samples, samples, 0.5 * length(light.L + V)) : vec3(1.0);
+        I += light.scale * (diffuse * kd + classic_specular(mat, N, light.L, V, NoL, NoV) * c0);
     }
     return I;
 }
 
 vec3 shade_classic(Material mat, vec3 P, vec3 N, vec3 V) {
-    // Only microfacet records carry spectral_table (the && keeps others' unread).
-    if (mat.model == MODEL_MICROFACET && mat.spectral_table >= 0.0) return shade_classic_conductor(mat, P, N, V);
+    if (mat.spectral_table >= 0.0) return shade_classic_spectral(mat, P, N, V);
     vec3 I = u_global_ambient * mat.ka + mat.emission;
     float NoV = max(dot(N, V), 0.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) {

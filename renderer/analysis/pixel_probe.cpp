@@ -1,10 +1,14 @@
 #include "analysis/pixel_probe.h"
 
 #include "geometry/mesh.h"
+#include "models/model_spec.h"
+#include "reference/conductor.h"
 #include "reference/reference.h"
+#include "scene/conductor_use.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -58,6 +62,32 @@ int level_of_png(int png, int bits) {
     return static_cast<int>(std::lround(png * double(top) / 255.0));
 }
 
+std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit) {
+    std::vector<PairColour> pairs;
+    if (hit.object < 0) return pairs;
+    const Material& material = scene.objects[std::size_t(hit.object)].material;
+    if (!ref::is_spectral(material)) return pairs;
+    const std::optional<ConductorUse> use = conductor_use(material);
+    const bool by_angle = !material.colour_spectrum() && use && use->fresnel != ConductorFresnel::normal;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& light = scene.lights[i];
+        if (!light.enabled || !(light.intensity > 0.0)) continue;  // passes/light_uniforms.h: reaches_shader
+        PairColour pair;
+        pair.light = int(i);
+        pair.name = light.name;
+        pair.by_angle = by_angle;
+        if (material.colour_spectrum() && material.model().family == Family::classic) pair.symbol = "kd";
+        const dvec3 L = ref::sample_light(light, hit.P).L;
+        const dvec3 H = L + hit.V;
+        // V.H: the angle of the metals' Fresnel term (docs/spec.md#72-measured-metals), as the reference takes it.
+        pair.cos_theta = glm::length(H) > 0.0 ? std::clamp(glm::dot(hit.V, glm::normalize(H)), 0.0, 1.0) : 0.0;
+        pair.c0 = ref::spectral_c0(material, &light, pair.cos_theta);
+        pair.lit = light.intensity * light.color * pair.c0;
+        pairs.push_back(pair);
+    }
+    return pairs;
+}
+
 PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbFloatImage& raw,
                        const Rgb8Image& display, int x, int y, int light) {
     PixelProbe p;
@@ -74,6 +104,7 @@ PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbF
     p.object = hit.object;
     if (hit.object < 0) return p;
     p.model = scene.objects[std::size_t(hit.object)].material.shown_name();
+    p.pairs = pair_colours(scene, hit);
     if (light < 0 || light >= static_cast<int>(scene.lights.size())) return p;
     const dvec3 L = ref::sample_light(scene.lights[std::size_t(light)], hit.P).L;
     p.lit = true;
@@ -91,6 +122,18 @@ std::string PixelProbe::text() const {
     else n += std::snprintf(buffer + n, sizeof buffer - n, "object %d (%s)", object, model.c_str());
     if (lit) std::snprintf(buffer + n, sizeof buffer - n, "\nN.L %.4f  R.V %.4f", NoL, RoV);
     std::string out = buffer;
+    for (const PairColour& pair : pairs) {
+        char line[256];
+        const char* symbol = pair.symbol.c_str();
+        std::snprintf(line, sizeof line, "\nlight %d%s%s%s: %s_l %.3f %.3f %.3f  a_l c_l %s_l %.3f %.3f %.3f", pair.light,
+                      pair.name.empty() ? "" : " \"", pair.name.c_str(), pair.name.empty() ? "" : "\"", symbol,
+                      pair.c0.r, pair.c0.g, pair.c0.b, symbol, pair.lit.r, pair.lit.g, pair.lit.b);
+        out += line;
+        if (pair.by_angle) {
+            std::snprintf(line, sizeof line, " at V.H %.3f", pair.cos_theta);
+            out += line;
+        }
+    }
     // A NaN or infinite value (a .brdf material can make one) is quantized
     // to some level: the level and PNG lines above would pass for a colour.
     if (!finite()) out += "\nNOT FINITE: " + std::string(std::isnan(linear.r) || std::isnan(linear.g) || std::isnan(linear.b) ? "NaN" : "infinite") +

@@ -4,7 +4,8 @@
 //     docs/spec.md#3-geometry, the nearest front face, translucent or not),
 //     and the object id of every pixel (the selection's outline);
 //   - probe_pixel: one pixel's linear value, display level and PNG value, its
-//     object and model, and N.L and R.V for one light;
+//     object and model, and N.L and R.V for one light; for a spectral material
+//     (a conductor or a color_spectrum) each light's colour for the pair (pair_colours);
 //   - level_histogram: how many pixels show each level, per channel;
 //   - row_profile: the display levels along one row (the scanline plot).
 #pragma once
@@ -39,6 +40,28 @@ private:
     std::vector<std::unique_ptr<ref::MeshIntersector>> meshes_;
 };
 
+// The colour one light gives a spectral material (docs/spec.md#72-measured-metals,
+// #73-spectral-colours): C0_l, eq. 2 summed per wavelength for the (material,
+// light) pair, the value the shader's table holds for that light (passes/spectral_tables.h;
+// the table's interpolation over cos(theta) aside), and a_l c_l C0_l, what the
+// light adds as colour before the geometry and the lobes.
+struct PairColour {
+    int light = 0;          // index into the scene's lights
+    std::string name;       // the light's name ("" : none)
+    dvec3 c0{0.0};          // C0_l at cos_theta
+    dvec3 lit{0.0};         // a_l c_l C0_l
+    double cos_theta = 1.0;  // V.H at the pixel (the metals' Fresnel angle)
+    bool by_angle = false;  // C0_l depends on the angle ("fresnel" full or schlick): cos_theta matters
+    // The colour's name in the read-out: "C0" (the paper's models, a conductor),
+    // "kd" (a classic model's kd_spectrum: K_diff per light; on a microfacet
+    // conductor with a kd_spectrum the read-out shows kd's, not the metal's).
+    std::string symbol = "C0";
+};
+// One per light that reaches the shader (enabled, intensity > 0), for the
+// material at `hit`; none for a material whose colour is RGB (every light
+// then sees the same C0) or for the background.
+std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit);
+
 struct PixelProbe {
     int x = 0, y = 0;          // y = 0 the top row
     dvec3 linear{0.0};         // unquantized (the --raw PFM's value)
@@ -48,9 +71,13 @@ struct PixelProbe {
     std::string model;
     bool lit = false;          // a light was given and the pixel shows an object
     double NoL = 0.0, RoV = 0.0;  // for that light; R the mirror of L about N
+    std::vector<PairColour> pairs;  // pair_colours at this pixel (spectral materials only)
     // Every channel of `linear` a finite number (a .brdf material can make NaN or Inf).
     bool finite() const { return std::isfinite(linear.r) && std::isfinite(linear.g) && std::isfinite(linear.b); }
-    std::string text() const;  // several lines, for the tooltip and --script's `probe`; "NOT FINITE: ..." last when not finite()
+    // Several lines, for the tooltip and --script's `probe`: then a line per pair,
+    // "light 0 "key": C0_l 0.951 0.602 0.199  a_l c_l C0_l 1.598 0.521 0.065" (" at V.H 0.83" when
+    // by angle); "NOT FINITE: ..." last when not finite().
+    std::string text() const;
 };
 
 // `raw` rows bottom to top (Renderer::read_raw), `display` top to bottom

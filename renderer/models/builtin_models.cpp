@@ -197,6 +197,8 @@ ModelSpec classic(std::string name, std::string label, std::string citation, std
     s.family = Family::classic;
     ParamSpec kd = required(colour("kd", "K_diff", {0.8, 0.2, 0.2}, "diffuse colour", "seed 003"));
     kd.carry_from = {"color"};
+    // K_diff as a reflectance spectrum, one colour per light (docs/spec.md#73-spectral-colours).
+    kd.spectrum_key = "kd_spectrum";
     ParamSpec ka = colour("ka", "K_amb", {0.8, 0.2, 0.2}, "ambient colour (the diffuse colour unless given)",
                           "seed 001, 003");
     ka.default_from = "kd";
@@ -207,6 +209,7 @@ ModelSpec classic(std::string name, std::string label, std::string citation, std
     s.glsl_file = "models/classic.glsl";
     s.glsl_hook = specular ? "diffuse_lambert" : "diffuse_" + s.name;
     if (specular) s.glsl_specular = "specular_" + s.name;
+    s.derived = {{"spectral_table", 1, no_spectral_table}};  // kd_spectrum's colours per light
     return s;
 }
 

@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <mutex>
 #include <string>
 
@@ -68,6 +69,31 @@ int table_float(const Material& material) {
     return -1;
 }
 
+// A classic model's table (glsl/models/classic.glsl): texel 0 = (where kd's
+// colours start, or -1; 0; 0; K, the conductor's texels a light, or 0), then
+// the conductor's K texels a light (microfacet's ks), then kd_spectrum's one a light.
+void append_classic_table(const Material& material, const std::vector<const Light*>& shaded,
+                          std::vector<float>& records, std::size_t record_at) {
+    const ReflectanceSpectrum* spectrum = material.colour_spectrum();
+    const std::optional<ConductorUse> use = conductor_use(material);
+    const int slot = table_float(material);
+    if ((!spectrum && !use) || slot < 0) return;
+    const int samples = !use ? 0 : use->fresnel == ConductorFresnel::normal ? 1 : spectral::kConductorCosSamples;
+    const int kd_at = spectrum ? 1 + int(shaded.size()) * samples : -1;
+    records[record_at + std::size_t(slot)] = float(records.size() / 4);
+    records.insert(records.end(), {float(kd_at), 0.0f, 0.0f, float(samples)});
+    if (use)
+        for (const Light* light : shaded) {
+            const std::vector<float>& table = cached_c0(*use, samples, light);
+            records.insert(records.end(), table.begin(), table.end());
+        }
+    if (spectrum)
+        for (const Light* light : shaded) {
+            const dvec3 kd = spectrum_c0(*spectrum, light);
+            records.insert(records.end(), {float(kd.r), float(kd.g), float(kd.b), 0.0f});
+        }
+}
+
 }  // namespace
 
 void append_spectral_tables(const std::vector<Object>& objects, const std::vector<Light>& lights,
@@ -78,6 +104,10 @@ void append_spectral_tables(const std::vector<Object>& objects, const std::vecto
         if (reaches_shader(light)) shaded.push_back(&light);
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const ReflectanceSpectrum* spectrum = objects[i].material.colour_spectrum();
+        if (objects[i].material.model().family == Family::classic) {
+            append_classic_table(objects[i].material, shaded, records, i * record_floats);
+            continue;
+        }
         if (spectrum) {
             // A colour spectrum (docs/spec.md#73-spectral-colours): one C0 per light, the same at every angle.
             const int slot = table_float(objects[i].material);

@@ -6,7 +6,12 @@
 //   1 + i K + s          light i's C0 at cos(theta) = s / (K - 1), s = 0 .. K - 1
 // with K = 1 for F(lambda, 0) alone (the metals' "normal", microfacet's "none") and
 // K = spectral::kConductorCosSamples when F depends on the angle; light i is the shader's i-th light
-// (passes/light_uniforms.h: reaches_shader). Its start (a texel index) goes into
+// (passes/light_uniforms.h: reaches_shader). A classic model's table (microfacet's
+// conductor in place of ks, any classic model's kd_spectrum) is laid out as
+//   0                    (kd's start or -1, 0, 0, K: the conductor's texels a light, 0 for none)
+//   1 + i K + s          the conductor's C0 for light i, as above
+//   kd's start + i       kd_spectrum's colour under light i (docs/spec.md#73-spectral-colours).
+// Its start (a texel index) goes into
 // the record's spectral_table float (-1 elsewhere); glsl/models/metal.glsl reads it.
 #pragma once
 

@@ -142,13 +142,19 @@ dvec3 classic_brdf(const Material& material, const dvec3& N, const dvec3& L, con
     return classic_reflect(material, N, L, V, NoL, glm::dot(N, V)) / (kPi * NoL);
 }
 
-// A microfacet conductor (docs/spec.md#72-measured-metals): K_spec F is the
-// metal's C0 for each light at V.H, summed per wavelength.
-dvec3 shade_classic_conductor(const Material& material, const std::vector<Light>& lights,
-                              const SurfacePoint& point, const dvec3& global_ambient) {
-    Material white = material;  // K_spec = 1 and F = 1: the C0 carries both
-    white.set_vec3("ks", dvec3(1.0));
-    white.set_choice("fresnel", "none");
+// A classic material whose colours are spectral (glsl/models/classic.glsl
+// shade_classic_spectral): a microfacet conductor (docs/spec.md#72-measured-metals),
+// K_spec F the metal's C0 for each light at V.H, and/or a kd_spectrum
+// (#73-spectral-colours), K_diff its colour under each light; summed per wavelength.
+dvec3 shade_classic_spectral(const Material& material, const std::vector<Light>& lights,
+                             const SurfacePoint& point, const dvec3& global_ambient) {
+    const bool metal = is_conductor(material);
+    const ReflectanceSpectrum* kd_spectrum = material.colour_spectrum();
+    Material white = material;  // a conductor: K_spec = 1 and F = 1, the C0 carries both
+    if (metal) {
+        white.set_vec3("ks", dvec3(1.0));
+        white.set_choice("fresnel", "none");
+    }
     const ReferenceHooks& hooks = reference_hooks(material.model());
     const dvec3 ka = material.vec3("ka");
     dvec3 I = global_ambient * ka + material.vec3("emission");
@@ -160,9 +166,11 @@ dvec3 shade_classic_conductor(const Material& material, const std::vector<Light>
         if (sample.scale == dvec3(0.0)) continue;
         const double NoL = glm::dot(point.N, sample.L);
         const double diffuse = hooks.classic_diffuse(material, NoL, NoV, glm::dot(sample.L, point.V));
-        const dvec3 c0 = conductor_c0(material, &light, 0.5 * glm::length(sample.L + point.V));
-        I += sample.scale * (diffuse * material.vec3("kd") +
-                             hooks.classic_specular(white, point.N, sample.L, point.V, NoL, NoV) * c0);
+        const dvec3 c0 = metal ? conductor_c0(material, &light, 0.5 * glm::length(sample.L + point.V)) : dvec3(1.0);
+        const dvec3 kd = kd_spectrum ? spectral_c0(material, &light, 1.0) : material.vec3("kd");  // the spectrum is kd's
+        const dvec3 specular =
+            hooks.classic_specular ? hooks.classic_specular(white, point.N, sample.L, point.V, NoL, NoV) : dvec3(0.0);
+        I += sample.scale * (diffuse * kd + specular * c0);
     }
     return I;
 }
@@ -170,7 +178,7 @@ dvec3 shade_classic_conductor(const Material& material, const std::vector<Light>
 // The lecture's equation over the lights (glsl/models/classic.glsl shade_classic).
 dvec3 shade_classic(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
                     const dvec3& global_ambient) {
-    if (is_conductor(material)) return shade_classic_conductor(material, lights, point, global_ambient);
+    if (is_spectral(material)) return shade_classic_spectral(material, lights, point, global_ambient);
     const dvec3 ka = material.vec3("ka");
     dvec3 I = global_ambient * ka + material.vec3("emission");
     const double NoV = glm::dot(point.N, point.V);
