@@ -310,8 +310,10 @@ const explore::Layout kBig = explore::layout_for_panes(1920, 1080, true, 1, 512,
 // Material: m (size) in the spec example: its slider spans the narrow panel, 550 px down.
 const int kSizeSliderX = int(kBig.side.w / 2.0f), kSizeSliderY = 550;
 // split: A | B, with the sections above it closed and A/B compare open (the
-// script's `section`, as clicks on the headers would).
-constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 210;
+// script's `section`, as clicks on the headers would): the first row under the
+// seventh header (Display, Material, Lights, Spectra, Objects, Camera, A/B
+// compare; 25 px each from y = 60).
+constexpr int kSplitCheckboxX = 16, kSplitCheckboxY = 60 + 7 * 25;
 // The display's centre.
 const int kDisplayX = int(kBig.display.x + kBig.display.w / 2.0f), kDisplayY = int(kBig.display.y + kBig.display.h / 2.0f);
 // The window's bottom-right corner, in the statistics' empty corner (under
