@@ -30,6 +30,8 @@ const site = path.resolve(option('site', path.join(repo, 'build-web', 'site')));
 const work = path.resolve(option('work', fs.mkdtempSync('/tmp/m3055-web-')));
 const backend = option('backend', 'swiftshader');
 const out = path.resolve(option('out', work));
+// --only PART[,PART]: scenes, input, latency (all when not given), for a quick rerun of one part.
+const only = option('only', 'scenes,input,latency').split(',');
 fs.mkdirSync(work, { recursive: true });
 fs.mkdirSync(out, { recursive: true });
 
@@ -302,6 +304,51 @@ async function realInput(browser, base) {
     `${backend}: practice mode's grade (${line.split('\t')[0]}) is m3055 grade's (grades.csv: ${csv.split('\n')[1]})`);
 }
 
+// The mouse wheel over the side panel scrolls it, as on the desktop: one notch
+// down moves the panel's rows up (found by matching the rows of two
+// screenshots), one notch up puts them back pixel for pixel.
+const PANEL = { x0: 0, x1: 490, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar
+function panelRows(png) {
+  const image = decodePng(png);
+  const rows = [];
+  for (let y = 0; y < image.height; ++y) {
+    const start = (y * image.width + PANEL.x0) * image.channels;
+    rows.push(image.pixels.subarray(start, start + (PANEL.x1 - PANEL.x0) * image.channels).toString('base64'));
+  }
+  return rows;
+}
+// How far the panel's rows moved up from `before` to `after` (0: not at all, or not a scroll).
+function rowsMovedUp(before, after) {
+  let best = { dy: 0, matches: 0 };
+  for (let dy = -200; dy <= 200; ++dy) {
+    let matches = 0;
+    for (let y = PANEL.y0; y < PANEL.y1; ++y) if (before[y + dy] !== undefined && after[y] === before[y + dy]) ++matches;
+    if (matches > best.matches) best = { dy, matches };
+  }
+  return best.matches >= 0.9 * (PANEL.y1 - PANEL.y0) ? best.dy : 0;
+}
+async function wheelScrollsPanel(browser, base) {
+  const page = await openPage(browser, base);
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
+    fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
+  await page.mouse.move(PANEL.wheelX, PANEL.wheelY);
+  await sleep(800);
+  const shot = async () => panelRows(await page.screenshot());
+  const before = await shot();
+  await page.mouse.wheel({ deltaY: 100 });  // one notch down, as Chromium reports a wheel's notch (100 px)
+  await sleep(600);
+  const down = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-wheel-down.png`), down);
+  const moved = rowsMovedUp(before, panelRows(down));
+  await page.mouse.wheel({ deltaY: -100 });
+  await sleep(600);
+  const back = await shot();
+  const same = back.slice(PANEL.y0, PANEL.y1).every((row, i) => row === before[PANEL.y0 + i]);
+  check(moved > 0 && moved < 200, `${backend}: a wheel notch down over the side panel moves its rows up (by ${moved} px)`);
+  check(same, `${backend}: ... and a notch up puts them back, pixel for pixel`);
+  await page.close();
+}
+
 // Slider to pixels: a drag of the "m (size)" slider, 40 moves 25 ms apart;
 // the page notes each input's time to the frame that rendered it. Reported
 // (medians and p95 of this run), never asserted: the machine is shared.
@@ -327,7 +374,7 @@ async function measureLatency(browser, base) {
 }
 
 (async () => {
-  const scenes = sceneSet();
+  const scenes = only.includes('scenes') ? sceneSet() : [];
   renderNatively(scenes);
   const server = await serve(site);
   const base = `http://127.0.0.1:${server.address().port}/`;
@@ -343,10 +390,13 @@ async function measureLatency(browser, base) {
       return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
     });
     console.log(`${backend}: WebGL2 renderer: ${renderer}; page ready in ${page.readyMs} ms`);
-    await compareScenes(page, scenes);
+    if (only.includes('scenes')) await compareScenes(page, scenes);
     await page.close();
-    await realInput(browser, base);
-    await measureLatency(browser, base);
+    if (only.includes('input')) {
+      await wheelScrollsPanel(browser, base);
+      await realInput(browser, base);
+    }
+    if (only.includes('latency')) await measureLatency(browser, base);
   } finally {
     await browser.close();
     server.close();
