@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
         state.platform.can_quit = false;
         state.platform.file_written = [](const std::string& path) { offer_download(path.c_str()); };
         state.platform.pick_file = [] { open_file_chooser(); };
+        state.platform.brdf_paths_relative_to = web::kWorkFolder;  // the names the user's files had
         state.screenshot_dir = "screenshots";  // downloaded as they are taken
         std::filesystem::create_directories(state.screenshot_dir);
     });

@@ -208,6 +208,16 @@ async function compareScenes(page, scenes) {
   }
 }
 
+// The first file with this ending that a download finished in `folder`, or null after 10 s.
+async function waitForDownload(folder, ending) {
+  for (let i = 0; i < 100; ++i) {
+    const done = fs.readdirSync(folder).filter((f) => f.endsWith(ending));
+    if (done.length) return path.join(folder, done[0]);
+    await sleep(100);
+  }
+  return null;
+}
+
 // Real mouse and keyboard input (the DevTools protocol's Input domain), at the
 // places the side panel puts the spec example's controls at 1280 x 720.
 const M_SLIDER = { y: 384 + 0, grab: 178 };  // "m (size)", page coordinates (the bar is 30 px)
@@ -275,15 +285,36 @@ async function realInput(browser, base) {
   await chooser.accept([brdf]);
   await sleep(800);
   const opened = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
-  const token = new URLSearchParams((await page.evaluate(() => window.m3055.shareLink())).split('#')[1]).get('scene');
-  const sceneText = zlib.inflateSync(Buffer.from(token, 'base64url')).toString();
-  const openedScene = JSON.parse(sceneText);
-  check(openedScene.objects[0].material.model === 'brdf', `${backend}: the file chooser opened lambert.brdf on object 0`);
-  openedScene.objects[0].material.file = 'lambert.brdf';  // the page's work folder is /work
-  fs.copyFileSync(brdf, path.join(work, 'lambert.brdf'));
-  fs.writeFileSync(path.join(work, 'opened.json'), JSON.stringify(openedScene));
-  execFileSync(m3055, ['render', '--scene', 'opened.json', '--out', 'opened.png'], { cwd: work });
-  check(opened.equals(fs.readFileSync(path.join(work, 'opened.png'))), `${backend}: ... and the display is m3055 render's of that scene, byte for byte`);
+  // Saved as a user does (Ctrl+S over the display: a download): the scene names
+  // the file as the user did, so it renders natively next to lambert.brdf.
+  const downloads = path.join(work, 'downloads');
+  fs.rmSync(downloads, { recursive: true, force: true });
+  fs.mkdirSync(downloads);
+  const cdp = await browser.target().createCDPSession();
+  await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  await page.mouse.move(900, 300);
+  await page.keyboard.down('Control');
+  await sleep(100);
+  await page.keyboard.press('s');
+  await page.keyboard.up('Control');
+  await sleep(500);  // "Save scene as", its file name selected: a name typed replaces it
+  await page.keyboard.type('with-lambert.json');
+  await page.keyboard.press('Enter');
+  const savedJson = await waitForDownload(downloads, '.json');
+  await page.screenshot({ path: path.join(out, `${backend}-saved.png`) });
+  await cdp.detach();
+  const openedScene = savedJson ? JSON.parse(fs.readFileSync(savedJson, 'utf8')) : { objects: [{ material: {} }] };
+  check(openedScene.objects[0].material.model === 'brdf', `${backend}: the file chooser opened lambert.brdf on object 0 ` +
+    `(Ctrl+S downloaded ${savedJson ? path.basename(savedJson) : 'nothing'})`);
+  check(openedScene.objects[0].material.file === 'lambert.brdf',
+    `${backend}: ... and the saved scene names it as the user did: "${openedScene.objects[0].material.file}"`);
+  fs.copyFileSync(brdf, path.join(downloads, 'lambert.brdf'));
+  let rendered = Buffer.alloc(0);
+  if (savedJson) {
+    execFileSync(m3055, ['render', '--scene', path.basename(savedJson), '--out', 'opened.png'], { cwd: downloads });
+    rendered = fs.readFileSync(path.join(downloads, 'opened.png'));
+  }
+  check(opened.equals(rendered), `${backend}: ... m3055 render of the downloaded scene next to lambert.brdf is the page's display, byte for byte`);
   await page.screenshot({ path: path.join(out, `${backend}-brdf-opened.png`) });
   await page.close();
 
