@@ -66,10 +66,17 @@
   async function shareLink() {
     await ready;
     const fragment = Module.ccall('m3055_share_fragment', 'string', [], []);
+    if (!fragment) throw new Error(Module.ccall('m3055_last_error', 'string', [], []));
     return location.origin + location.pathname + location.search + '#' + fragment;
   }
   document.getElementById('share').addEventListener('click', async () => {
-    const link = await shareLink();
+    let link;
+    try {
+      link = await shareLink();
+    } catch (e) {
+      say(e.message);
+      return;
+    }
     try {
       await navigator.clipboard.writeText(link);
       say('share link copied (' + link.length + ' characters)');

@@ -13,6 +13,7 @@
 #include <emscripten.h>
 
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -99,7 +100,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
     result.clear();
     if (ExplorerSession* s = web::session()) {
         try {
-            result = "scene=" + explore::share_token(s->state().scene);
+            result = "scene=" + explore::share_token(s->state().scene, web::kWorkFolder);
         } catch (const std::exception& e) {
             s->state().error = e.what();
         }
@@ -107,14 +108,21 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
     return result.c_str();
 }
 
-// A share link's token unpacked into the work folder as `path` (a scene
-// file main() then starts with). "" or the one-line reason.
+// A share link's token unpacked into the work folder: the scene as `path` (a
+// scene file main() then starts with), the .brdf files it carries beside it
+// under their names. "" or the one-line reason (nothing written then).
 EMSCRIPTEN_KEEPALIVE const char* m3055_unpack_share_token(const char* token, const char* path) {
     static std::string result;
     result.clear();
     try {
-        const std::string text = explore::scene_text_from_share_token(token);
-        write_file_atomic(path, text.data(), text.size());
+        const explore::SharedScene shared = explore::unpack_share_token(token);
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        for (const explore::SharedFile& file : shared.files) {
+            const std::filesystem::path target = folder / file.name;
+            std::filesystem::create_directories(target.parent_path());
+            write_file_atomic(target.string(), file.text.data(), file.text.size());
+        }
+        write_file_atomic(path, shared.scene_text.data(), shared.scene_text.size());
     } catch (const std::exception& e) {
         result = e.what();
     }

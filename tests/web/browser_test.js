@@ -316,6 +316,15 @@ async function realInput(browser, base) {
   }
   check(opened.equals(rendered), `${backend}: ... m3055 render of the downloaded scene next to lambert.brdf is the page's display, byte for byte`);
   await page.screenshot({ path: path.join(out, `${backend}-brdf-opened.png`) });
+  // The share link carries lambert.brdf: a fresh page (its own empty work
+  // folder) shows the same display.
+  const brdfLink = await page.evaluate(() => window.m3055.shareLink());
+  const brdfShared = await openPage(browser, brdfLink);
+  const brdfSharedPng = pngOf(await brdfShared.evaluate(() => window.m3055.displayPNG()));
+  await brdfShared.screenshot({ path: path.join(out, `${backend}-brdf-shared.png`) });
+  await brdfShared.close();
+  check(brdfSharedPng.equals(opened),
+    `${backend}: the share link of a scene with lambert.brdf (${brdfLink.length} characters) opens the same display in a fresh page`);
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
