@@ -389,6 +389,87 @@ async function wheelScrollsPanel(browser, base) {
   await page.close();
 }
 
+// Where `image` (decoded) appears in `shot` (decoded) pixel for pixel: the
+// top-left corners, row by row (a pane drawn at 1x on a 1x page).
+function findImage(shot, image) {
+  const found = [];
+  const row = (img, x, y) => {
+    const out = Buffer.alloc(image.width * 3);
+    for (let i = 0; i < image.width; ++i)
+      for (let c = 0; c < 3; ++c) out[i * 3 + c] = img.pixels[((y * img.width) + x + i) * img.channels + c];
+    return out;
+  };
+  const first = row(image, 0, 0);
+  for (let y = 0; y + image.height <= shot.height; ++y) {
+    for (let x = 0; x + image.width <= shot.width; ++x) {
+      if (!row(shot, x, y).equals(first)) continue;
+      let all = true;
+      for (let r = 1; r < image.height && all; ++r) all = row(shot, x, y + r).equals(row(image, 0, r));
+      if (all) found.push({ x, y });
+    }
+  }
+  return found;
+}
+// Pixels in a rectangle of `shot` that are not black.
+function litPixels(shot, x0, y0, w, h) {
+  let lit = 0;
+  for (let y = y0; y < y0 + h; ++y)
+    for (let x = x0; x < x0 + w; ++x) {
+      const i = (y * shot.width + x) * shot.channels;
+      if (shot.pixels[i] || shot.pixels[i + 1] || shot.pixels[i + 2]) ++lit;
+    }
+  return lit;
+}
+
+// The A/B split as a student turns it on: the Display, Material and Lights
+// headers closed with the mouse, "A/B compare" opened, "split" and
+// "difference pane" ticked; then B's "m (size)" slider dragged. The page's
+// screenshots must show m3055's display twice (A and B, B a copy of A at
+// first), a black difference pane, and after the drag A unchanged, B changed,
+// the difference pane lit.
+async function abSplitByMouse(browser, base) {
+  const page = await openPage(browser, base);
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
+    fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
+  await sleep(500);
+  const a = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
+  for (const [x, y] of [[60, 90], [60, 115], [60, 140], [60, 215], [18, 240], [18, 299]]) {  // headers, split, difference
+    await page.mouse.click(x, y);
+    await sleep(400);
+  }
+  const away = async () => { await page.mouse.move(1000, 745); await sleep(1200); };  // no tooltip over the panes
+  await away();
+  const splitShot = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-ab-split.png`), splitShot);
+  const split = decodePng(splitShot);
+  const panes = findImage(split, a);
+  check(panes.length === 2, `${backend}: A/B split by mouse: m3055's display appears twice in the page, A and B ` +
+    `(at ${panes.map((p) => `${p.x},${p.y}`).join(' and ')})`);
+  if (panes.length !== 2) { await page.close(); return; }
+  const [paneA, paneB] = panes.sort((p, q) => p.y - q.y || p.x - q.x);
+  // The difference pane: the free cell under A (the layout of three panes).
+  const diff = { x: paneA.x, y: paneA.y + a.height + 8, w: a.width, h: a.height - 16 };
+  check(litPixels(split, diff.x, diff.y, diff.w, diff.h) === 0, `${backend}: ... the difference pane |A - B| is black while B = A`);
+
+  // B's "m (size)" slider (the narrow panel of three panes), dragged right.
+  const grab = { x: 128, y: 614 };
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  for (let x = grab.x; x <= grab.x + 60; x += 10) { await page.mouse.move(x, grab.y); await sleep(30); }
+  await page.mouse.up();
+  await away();
+  const changedShot = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-ab-changed.png`), changedShot);
+  const changed = decodePng(changedShot);
+  const aNow = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
+  const stillA = findImage(changed, a);
+  check(stillA.length === 1 && stillA[0].x === paneA.x && stillA[0].y === paneA.y && aNow.pixels.equals(a.pixels),
+    `${backend}: ... dragging B's "m (size)" leaves A as it was (the scene's display, once in the page)`);
+  const lit = litPixels(changed, diff.x, diff.y, diff.w, diff.h);
+  check(lit > 0, `${backend}: ... and lights the difference pane (${lit} px)`);
+  await page.close();
+}
+
 // Slider to pixels: a drag of the "m (size)" slider, 40 moves 25 ms apart;
 // the page notes each input's time to the frame that rendered it. Reported
 // (medians and p95 of this run), never asserted: the machine is shared.
@@ -434,6 +515,7 @@ async function measureLatency(browser, base) {
     await page.close();
     if (only.includes('input')) {
       await wheelScrollsPanel(browser, base);
+      await abSplitByMouse(browser, base);
       await realInput(browser, base);
     }
     if (only.includes('latency')) await measureLatency(browser, base);
