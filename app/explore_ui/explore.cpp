@@ -136,6 +136,7 @@ public:
             reference_ = std::make_unique<PaneTexture>(gl_, practice_->reference_image());
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
+            state_.error = e.what();  // the page shows it (an assignment picked while running)
             return false;
         }
         state_.practice = practice_->start_status();

@@ -53,6 +53,7 @@
   // one .brdf) opened, so a scene finds the .brdf files picked with it.
   async function openFiles(files) {
     const list = Array.from(files);
+    if (list.some((f) => f.name === 'assignment.json')) return practiseFiles(list);
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
     const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
@@ -61,6 +62,31 @@
     canvas.focus();
   }
   fileInput.addEventListener('change', () => { openFiles(fileInput.files); fileInput.value = ''; });
+
+  // Practice mode from the student's own copy of an assignment: its folder
+  // (Practise…, a folder chooser) or its files (Open… with assignment.json
+  // among them). The .json and .brdf files go into a fresh folder under the
+  // work folder, in their places under the picked folder; the shallowest
+  // assignment.json is graded with the same code as ?assignment=.
+  let practiceUploads = 0;
+  async function practiseFiles(files) {
+    const list = Array.from(files).filter((f) => /\.(json|brdf)$/.test(f.name));
+    const place = (f) => f.webkitRelativePath || f.name;
+    const folder = 'practice-' + (++practiceUploads);
+    for (const file of list) writeWorkFile(folder + '/' + place(file), new Uint8Array(await file.arrayBuffer()));
+    const assignment = list.filter((f) => f.name === 'assignment.json')
+      .sort((a, b) => place(a).split('/').length - place(b).split('/').length)[0];
+    if (!assignment) {
+      say('practice: no assignment.json among the picked files: pick the assignment\'s folder');
+      return;
+    }
+    const error = Module.ccall('m3055_practise', 'string', ['string'], [WORK + '/' + folder + '/' + place(assignment)]);
+    say(error ? error : 'practising ' + place(assignment) + ': graded as you edit; Ctrl+S downloads submission.json');
+    canvas.focus();
+  }
+  const folderInput = document.getElementById('assignment-folder');
+  folderInput.addEventListener('change', () => { practiseFiles(folderInput.files); folderInput.value = ''; });
+  document.getElementById('practise').addEventListener('click', () => folderInput.click());
   document.getElementById('open').addEventListener('click', () => fileInput.click());
 
   async function shareLink() {

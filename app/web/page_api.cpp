@@ -4,6 +4,9 @@
 #include "app/web/page.h"
 #include "explore/brdf_files.h"
 #include "explore/files.h"
+#include "explore/practice.h"
+#include "explore/undo.h"
+#include "grading/assignment.h"
 #include "explore/share_link.h"
 #include "explore/state.h"
 #include "gl/program.h"
@@ -126,6 +129,28 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_unpack_share_token(const char* token, con
     } catch (const std::exception& e) {
         result = e.what();
     }
+    return result.c_str();
+}
+
+// Practice mode against the assignment file `path` (picked files, already in
+// the work folder: its reference and start scenes beside it), as
+// ?assignment= starts it: the start scene becomes the scene, a fresh history,
+// the live grade. "" or the one-line reason (the scene stays then).
+EMSCRIPTEN_KEEPALIVE const char* m3055_practise(const char* path) {
+    static std::string result;
+    result.clear();
+    ExplorerSession* s = web::session();
+    if (!s) return result.assign("m3055: the explorer did not start").c_str();
+    explore::ExplorerState& state = s->state();
+    try {
+        grading::load_assignment(path);  // a bad file changes nothing
+        grading::Assignment assignment = explore::open_assignment(state, path, false);
+        explore::start_history(state);
+        if (!s->practise(std::move(assignment))) result = text::one_line(state.error);
+    } catch (const std::exception& e) {
+        result = text::one_line(e.what());
+    }
+    state.changed();
     return result.c_str();
 }
 

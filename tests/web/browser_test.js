@@ -342,6 +342,24 @@ async function realInput(browser, base) {
   const score = (line.match(/score=([0-9.]+)/) || [])[1];
   check(score !== undefined && csv.split('\n').some((row) => row.startsWith('student,' + score + ',') || row.split(',').includes(score)),
     `${backend}: practice mode's grade (${line.split('\t')[0]}) is m3055 grade's (grades.csv: ${csv.split('\n')[1]})`);
+
+  // The student's own copy of the assignment, picked as a folder (Practise…)
+  // and as files (Open… with assignment.json among them): the same grade.
+  const assignmentDir = path.join(repo, 'assignments', 'three-point');
+  for (const [how, button, files] of [
+    ['its folder through Practise…', '#practise', [assignmentDir]],
+    ['its three files through Open…', '#open', ['assignment.json', 'reference.json', 'start.json'].map((f) => path.join(assignmentDir, f))]]) {
+    const picked = await openPage(browser, base);
+    const [chooser] = await Promise.all([picked.waitForFileChooser(), picked.click(button)]);
+    await chooser.accept(files);
+    await sleep(1500);
+    const pickedLine = await picked.evaluate(() => window.m3055.gradeLine());
+    const bar = await picked.evaluate(() => document.getElementById('note').textContent);
+    await picked.screenshot({ path: path.join(out, `${backend}-practice-picked${button.slice(1)}.png`) });
+    await picked.close();
+    check(pickedLine !== '' && pickedLine === line, `${backend}: practice from ${how}: ${pickedLine.split('\t')[0] || '(none)'} ` +
+      `as by ?assignment= (the bar: ${bar})`);
+  }
 }
 
 // The mouse wheel over the side panel scrolls it, as on the desktop: one notch
