@@ -145,6 +145,11 @@
     const params = new URLSearchParams(location.search);
     try {
       if (params.get('assignment')) args.push('--assignment', await fetchAssignment(params.get('assignment')));
+      if (params.get('script')) {  // UI actions, one a frame (explore/script.h): course pages, scripts/bench-web
+        const response = await fetch(new URL(params.get('script'), location.href));
+        if (!response.ok) throw new Error('script ' + params.get('script') + ': HTTP ' + response.status);
+        args.push('--script', writeWorkFile('script.txt', await response.text()));
+      }
       const hash = new URLSearchParams(location.hash.slice(1));
       if (hash.get('scene')) {
         writeWorkFile('.keep', '');
@@ -232,6 +237,11 @@
       return Module.ccall('m3055_grade_line', 'string', [], []);
     },
     shareLink,
+    // The CPU time (ms) of each frame that rendered a changed scene so far.
+    async frameTimes() {
+      await ready;
+      return JSON.parse(Module.ccall('m3055_render_frame_ms', 'string', [], []));
+    },
     // Milliseconds from each input event (the first since the last render) to
     // the frame that rendered its change; clear: start a new measurement.
     latency(clear = false) {

@@ -154,6 +154,17 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_practise(const char* path) {
     return result.c_str();
 }
 
+// The CPU time of each frame that rendered a changed scene so far, as a JSON
+// array of milliseconds (m3055.frameTimes(); scripts/bench-web).
+EMSCRIPTEN_KEEPALIVE const char* m3055_render_frame_ms(void) {
+    static std::string result;
+    result = "[";
+    if (ExplorerSession* s = web::session())
+        for (double ms : s->render_frame_ms()) result += (result.size() > 1 ? "," : "") + std::to_string(ms);
+    result += "]";
+    return result.c_str();
+}
+
 // The practice grade line as `m3055 grade` scores it ("" outside practice mode).
 EMSCRIPTEN_KEEPALIVE const char* m3055_grade_line(void) {
     static std::string result;
