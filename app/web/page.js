@@ -156,7 +156,7 @@
         const error = Module.ccall('m3055_unpack_share_token', 'string', ['string', 'string'],
                                    [hash.get('scene'), WORK + '/shared-scene.json']);
         if (error) startNote = 'the share link did not open: ' + error;
-        else args.push(WORK + '/shared-scene.json');
+        else args.push('shared-scene.json');  // relative to the work folder (main's): its .brdf files show by their names
       }
     } catch (e) {
       startNote = String(e.message || e);
