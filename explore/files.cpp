@@ -4,12 +4,14 @@
 #include "explore/operations.h"
 #include "explore/undo.h"
 #include "image/image.h"
+#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 namespace m3055::explore {
@@ -64,9 +66,21 @@ bool load_figure(ExplorerState& state, const std::string& name) {
     return false;
 }
 
+namespace {
+
+// The text of a saved scene file (Save, a screenshot's JSON): .brdf files
+// named as the platform asks (ExplorerState::Platform::brdf_paths_relative_to).
+std::string scene_file_text(const ExplorerState& state) {
+    std::optional<scene_json::BrdfPathsRelativeTo> relative;
+    if (!state.platform.brdf_paths_relative_to.empty()) relative.emplace(state.platform.brdf_paths_relative_to);
+    return scene_to_json(state.scene).dump(2) + "\n";
+}
+
+}  // namespace
+
 bool save_scene(ExplorerState& state, const std::string& path) {
     try {
-        const std::string text = scene_to_json(state.scene).dump(2) + "\n";
+        const std::string text = scene_file_text(state);
         write_file_atomic(path, text.data(), text.size());
         if (state.platform.file_written) state.platform.file_written(path);
         state.scene_file = path;
@@ -155,7 +169,7 @@ void take_screenshot(ExplorerState& state, Renderer& renderer) {
         renderer.render(state.scene);
         renderer.set_defer_compiles(deferring);
         write_png(png, renderer.read_display());
-        const std::string json = json_beside(png), text = scene_to_json(state.scene).dump(2) + "\n";
+        const std::string json = json_beside(png), text = scene_file_text(state);
         write_file_atomic(json, text.data(), text.size());
         if (state.platform.file_written) {
             state.platform.file_written(png);

@@ -1,11 +1,17 @@
 #include "explore/share_link.h"
 
+#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -68,8 +74,35 @@ std::string base64url_decode(const std::string& text) {
     return out;
 }
 
-std::string share_token(const Scene& scene) {
-    const std::string text = scene_to_json(scene).dump();
+namespace {
+
+using nlohmann::json;
+
+// A bundle's file name: relative, "/"-separated, each part a plain name, and a .brdf.
+bool plain_relative_brdf_name(const std::string& name) {
+    if (name.empty() || name.size() > 255 || name.front() == '/' || name.find('\\') != std::string::npos) return false;
+    if (name.size() < 6 || name.compare(name.size() - 5, 5, ".brdf") != 0) return false;
+    std::size_t start = 0;
+    while (start <= name.size()) {
+        const std::size_t end = std::min(name.find('/', start), name.size());
+        const std::string part = name.substr(start, end - start);
+        if (part.empty() || part == "." || part == "..") return false;
+        for (char c : part)
+            if (static_cast<unsigned char>(c) < 0x20) return false;
+        start = end + 1;
+    }
+    return true;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("share link: cannot read " + path.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string deflate_to_token(const std::string& text) {
     uLongf size = compressBound(uLong(text.size()));
     std::vector<Bytef> packed(size);
     if (compress2(packed.data(), &size, reinterpret_cast<const Bytef*>(text.data()), uLong(text.size()),
@@ -78,7 +111,7 @@ std::string share_token(const Scene& scene) {
     return base64url_encode(std::string(reinterpret_cast<const char*>(packed.data()), size));
 }
 
-std::string scene_text_from_share_token(const std::string& token) {
+std::string inflate_token(const std::string& token) {
     const std::string packed = base64url_decode(token);
     z_stream stream{};
     if (inflateInit(&stream) != Z_OK) throw std::runtime_error("share link: cannot unpack");
@@ -101,6 +134,57 @@ std::string scene_text_from_share_token(const std::string& token) {
     inflateEnd(&stream);
     if (status != Z_STREAM_END) throw std::runtime_error("share link: not a whole compressed scene (cut short?)");
     return text;
+}
+
+}  // namespace
+
+std::string share_token(const Scene& scene, const std::string& folder) {
+    json doc;
+    {
+        std::optional<scene_json::BrdfPathsRelativeTo> relative;
+        if (!folder.empty()) relative.emplace(folder);
+        doc = scene_to_json(scene);
+    }
+    json files = json::object();
+    for (const json& object : doc.value("objects", json::array())) {
+        const json& material = object.value("material", json::object());
+        if (material.value("model", "") != "brdf") continue;
+        const std::string name = material.value("file", "");
+        if (files.contains(name)) continue;
+        if (!plain_relative_brdf_name(name))
+            throw std::runtime_error("share link: the .brdf file " + name +
+                                     " is not in the page's folder, so the link cannot carry it");
+        files[name] = read_text(std::filesystem::path(folder) / name);
+    }
+    const std::string text = files.empty() ? doc.dump()
+                                           : json{{"m3055_share", 1}, {"scene", doc}, {"brdf_files", files}}.dump();
+    std::string token = deflate_to_token(text);
+    if (token.size() > kMaxShareTokenChars)
+        throw std::runtime_error("share link: the scene and its .brdf files make a link of " +
+                                 std::to_string(token.size()) + " characters, more than a browser opens (2 MB)");
+    return token;
+}
+
+SharedScene unpack_share_token(const std::string& token) {
+    SharedScene shared;
+    std::string text = inflate_token(token);
+    // A plain scene (and anything not a bundle) is loaded as it is: the loader names its errors.
+    const json doc = json::parse(text, nullptr, false);
+    if (!doc.is_object() || !doc.contains("m3055_share")) {
+        shared.scene_text = std::move(text);
+        return shared;
+    }
+    if (doc["m3055_share"] != 1 || !doc.contains("scene") || !doc["scene"].is_object() ||
+        !doc.contains("brdf_files") || !doc["brdf_files"].is_object())
+        throw std::runtime_error("share link: not a scene with its .brdf files (\"m3055_share\": 1, \"scene\", \"brdf_files\")");
+    for (const auto& [name, file] : doc["brdf_files"].items()) {
+        if (!plain_relative_brdf_name(name))
+            throw std::runtime_error("share link: brdf_files: \"" + name + "\" is not a plain relative NAME.brdf");
+        if (!file.is_string()) throw std::runtime_error("share link: brdf_files: \"" + name + "\" is not text");
+        shared.files.push_back({name, file.get<std::string>()});
+    }
+    shared.scene_text = doc["scene"].dump();
+    return shared;
 }
 
 }  // namespace m3055::explore

@@ -2,8 +2,10 @@
 // loads back equal, a bad file keeps the current scene and says why, a load
 // is one undo step, and screenshots never overwrite.
 #include "explore_started.h"
+#include "explore/brdf_files.h"
 #include "explore/files.h"
 #include "test_paths.h"
+#include "test_support.h"
 #include "explore/operations.h"
 #include "explore/start.h"
 #include "explore/undo.h"
@@ -14,6 +16,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 namespace m3055::explore {
@@ -151,6 +155,34 @@ TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
     ASSERT_TRUE(load_figure(state, "fig10"));
     request_save_as(state);
     EXPECT_EQ(state.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
+}
+
+// Issue 21: the page saves a scene naming its .brdf file as the user named it
+// (relative to the page's work folder, where the picked files are), so the
+// downloaded JSON renders next to the downloaded .brdf; the desktop keeps the
+// absolute path; a .brdf outside the folder stays absolute in the page too.
+TEST(ExploreFiles, ThePageSavesABrdfFileByTheNameTheUserGave) {
+    const fs::path dir = fresh_folder("explore_files_brdf_relative");
+    fs::create_directories(dir / "work" / "mine");
+    fs::copy_file(m3055::test::source_path("tests/data/brdf/lambert.brdf"), dir / "work" / "mine" / "lambert.brdf");
+    fs::copy_file(m3055::test::source_path("tests/data/brdf/lambert.brdf"), dir / "elsewhere.brdf");
+    auto saved_file_field = [&](ExplorerState& state, const std::string& name, std::size_t object) {
+        const fs::path path = dir / "work" / name;
+        EXPECT_TRUE(save_scene(state, path.string())) << state.error;
+        std::ifstream in(path);
+        return nlohmann::json::parse(in)["objects"][object]["material"]["file"].get<std::string>();
+    };
+    ExplorerState state = started();
+    ASSERT_TRUE(open_brdf(state, (dir / "work" / "mine" / "lambert.brdf").string())) << state.brdf_error;
+    EXPECT_EQ(saved_file_field(state, "desktop.json", 0), (dir / "work" / "mine" / "lambert.brdf").string());
+    state.platform.brdf_paths_relative_to = (dir / "work").string();
+    EXPECT_EQ(saved_file_field(state, "page.json", 0), "mine/lambert.brdf");
+    ExplorerState loaded = started();
+    loaded.platform.brdf_paths_relative_to = state.platform.brdf_paths_relative_to;
+    ASSERT_TRUE(load_scene(loaded, (dir / "work" / "page.json").string())) << loaded.load_error;
+    EXPECT_EQ(saved_file_field(loaded, "again.json", 0), "mine/lambert.brdf") << "loads back from the saved name";
+    ASSERT_TRUE(open_brdf(state, (dir / "elsewhere.brdf").string())) << state.brdf_error;
+    EXPECT_EQ(saved_file_field(state, "outside.json", 0), (dir / "elsewhere.brdf").string());
 }
 
 }  // namespace

@@ -138,6 +138,12 @@ TEST_F(Explorer, ScriptedSessionSavesWhatRenderWritesAndShowsPanelsAndDisplay) {
     EXPECT_LE(stats["idle"][0]["frames"].get<int>(), 2) << run.out;
     EXPECT_GE(stats["frames"].get<int>(), 10) << "one frame per script line at least";
     EXPECT_EQ(stats["script_errors"], 0);
+    // Each frame that rendered the changed scene, its time (scripts/bench-web reads them).
+    const auto& frame_ms = stats["render_frame_ms"];
+    ASSERT_TRUE(frame_ms.is_array());
+    EXPECT_GE(frame_ms.size(), 5u) << "the script's edits render";
+    EXPECT_LE(frame_ms.size(), stats["renders"].get<std::size_t>()) << "one a rendering frame at most";
+    for (const auto& ms : frame_ms) EXPECT_GT(ms.get<double>(), 0.0);
 
     // The window capture: panels on the left, the emulated display (A and B) on the right.
     const Rgb8Image window = read_png(dir.file("window.png"));

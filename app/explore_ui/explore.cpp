@@ -65,8 +65,10 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 // to the first frame is measured from here (--stats' first_frame_ms).
 const std::chrono::steady_clock::time_point kProcessStart = std::chrono::steady_clock::now();
 
-void write_stats(const std::string& path, long frames, long renders, double first_frame_ms, const Script* script) {
-    nlohmann::json stats = {{"frames", frames}, {"renders", renders}, {"first_frame_ms", first_frame_ms}};
+void write_stats(const std::string& path, long frames, long renders, double first_frame_ms,
+                 const std::vector<double>& render_frame_ms, const Script* script) {
+    nlohmann::json stats = {{"frames", frames}, {"renders", renders}, {"first_frame_ms", first_frame_ms},
+                            {"render_frame_ms", render_frame_ms}};
     stats["idle"] = nlohmann::json::array();
     if (script) {
         for (const IdleRecord& r : script->idle_records()) {
@@ -136,6 +138,7 @@ public:
             reference_ = std::make_unique<PaneTexture>(gl_, practice_->reference_image());
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
+            state_.error = e.what();  // the page shows it (an assignment picked while running)
             return false;
         }
         state_.practice = practice_->start_status();
@@ -180,6 +183,7 @@ public:
 
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
+        const long renders_before = info_.renders;
         for (const std::string& path : window_.events().dropped) {
             const bool ok = is_brdf_path(path) ? open_brdf(state_, path) : load_scene(state_, path);
             if (!ok) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
@@ -254,6 +258,8 @@ public:
         window_.set_title("M3055 material explorer - " + title_name(state_));
         present();
         info_.frame_ms = milliseconds_since(frame_start);
+        if (info_.renders != renders_before && info_.render_frame_ms.size() < FrameInfo::kMaxFrameSamples)
+            info_.render_frame_ms.push_back(info_.frame_ms);
         schedule_window_capture();
     }
 
@@ -262,7 +268,8 @@ public:
         int status = script_ && script_->errors() > 0 ? 1 : 0;
         if (options_.stats_path.empty()) return status;
         try {
-            write_stats(options_.stats_path, info_.frames, info_.renders, first_frame_ms_, script_ ? &*script_ : nullptr);
+            write_stats(options_.stats_path, info_.frames, info_.renders, first_frame_ms_, info_.render_frame_ms,
+                        script_ ? &*script_ : nullptr);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s\n", e.what());
             status = 1;
@@ -720,6 +727,8 @@ int ExplorerSession::finish() { return parts_->explorer->finish(); }
 ExplorerState& ExplorerSession::state() { return parts_->state; }
 
 long ExplorerSession::renders() const { return parts_->info.renders; }
+
+const std::vector<double>& ExplorerSession::render_frame_ms() const { return parts_->info.render_frame_ms; }
 
 Rgb8Image ExplorerSession::render_display_now() { return parts_->explorer->render_display_now(); }
 

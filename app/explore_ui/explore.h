@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace m3055 {
 
@@ -50,6 +51,8 @@ public:
     int finish();  // --stats; the exit status
     explore::ExplorerState& state();
     long renders() const;  // scene renders so far (a changed scene drawn once each)
+    // The CPU time of each frame that rendered a changed scene (ms; --stats' render_frame_ms).
+    const std::vector<double>& render_frame_ms() const;
     // The display as `m3055 render` writes it for the scene as it is now.
     Rgb8Image render_display_now();
     // Practice mode against an assignment (--assignment; the page's ?assignment=).

@@ -13,6 +13,10 @@
 #include <deque>
 #include <iterator>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
+
 namespace m3055::explore {
 
 namespace {
@@ -71,6 +75,24 @@ bool button_queued(const std::deque<InputEvent>& queue, int button) {
     return false;
 }
 
+#ifdef __EMSCRIPTEN__
+// The page's mouse wheel. Emscripten 3.1.6's GLFW (library_glfw.js,
+// onMouseWheel) hands the DOM wheel event's deltaX/deltaY to the scroll
+// callback as they are: in pixels (100 a notch in Chromium) and with a page's
+// sign (down positive), where GLFW's offsets are notches, up positive. Dear
+// ImGui then scrolls 100 steps the wrong way: down at the top of the panel did
+// nothing. Here the deltas become notches as Emscripten's own
+// Browser.getMouseWheelDelta counts them (100 pixels, 3 lines, or 1/80 of a
+// page a notch; a touchpad's fractions kept), sign flipped, and go to ImGui's
+// scroll callback (which chains to the window's, waking the loop).
+EM_BOOL on_wheel(int, const EmscriptenWheelEvent* wheel, void* window) {
+    const double per_notch = wheel->deltaMode == DOM_DELTA_PIXEL ? 100.0 : wheel->deltaMode == DOM_DELTA_LINE ? 3.0 : 1.0 / 80.0;
+    ImGui_ImplGlfw_ScrollCallback(static_cast<GLFWwindow*>(window), -wheel->deltaX / per_notch,
+                                  -wheel->deltaY / per_notch);
+    return EM_TRUE;  // handled: the page itself does not scroll
+}
+#endif
+
 }  // namespace
 
 ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
@@ -90,6 +112,8 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     glfwSetCharCallback(window, queue_char);
     glfwSetMouseButtonCallback(window, queue_mouse_button);
 #ifdef __EMSCRIPTEN__
+    glfwSetScrollCallback(window, nullptr);  // GLFW's wheel off (its units are wrong: on_wheel) ...
+    emscripten_set_wheel_callback("#canvas", window, EM_TRUE, on_wheel);  // ... the page's on
     ImGui_ImplOpenGL3_Init("#version 300 es");  // WebGL2
 #else
     ImGui_ImplOpenGL3_Init("#version 330");
@@ -97,6 +121,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
 }
 
 ImGuiLayer::~ImGuiLayer() {
+#ifdef __EMSCRIPTEN__
+    emscripten_set_wheel_callback("#canvas", nullptr, EM_TRUE, nullptr);
+#endif
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();

@@ -10,6 +10,7 @@
 #include "explore/undo.h"
 
 #include <string>
+#include <vector>
 
 namespace m3055 {
 class BrdfViews;
@@ -24,6 +25,10 @@ struct FrameInfo {
     double render_ms = 0.0;   // the last scene render (GPU finished), both halves in compare
     long frames = 0;          // UI frames drawn so far
     long renders = 0;         // scene renders so far
+    // frame_ms of the frames that rendered a changed scene, the last kMaxFrameSamples
+    // (--stats' render_frame_ms; the page's m3055.frameTimes(): scripts/bench-web).
+    std::vector<double> render_frame_ms;
+    static constexpr std::size_t kMaxFrameSamples = 4096;
     std::string gl_renderer;  // GL_RENDERER of the window's context
     std::string gl_version;   // GL_VERSION
     std::string window_system;  // glfwGetVersionString()

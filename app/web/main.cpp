@@ -2,7 +2,8 @@
 // (app/explore_ui/explore.h) on a WebGL2 canvas, driven by the browser's
 // animation frames instead of a blocking loop. page.js starts it with
 // arguments: --assignment PATH (practice mode, the assignment's files already
-// fetched into the work folder) and/or a scene path (a share link's scene).
+// fetched into the work folder), --script PATH (?script=: UI actions one a
+// frame, explore/script.h) and/or a scene path (a share link's scene).
 #include "app/web/page.h"
 #include "explore/files.h"
 #include "explore/brdf_files.h"
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     ExploreOptions options;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--assignment") == 0 && i + 1 < argc) options.assignment_path = argv[++i];
+        else if (std::strcmp(argv[i], "--script") == 0 && i + 1 < argc) options.script_path = argv[++i];
         else options.scene_path = argv[i];
     }
     // The canvas as page.js sized it: the page's area in device pixels, so
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
         state.platform.can_quit = false;
         state.platform.file_written = [](const std::string& path) { offer_download(path.c_str()); };
         state.platform.pick_file = [] { open_file_chooser(); };
+        state.platform.brdf_paths_relative_to = web::kWorkFolder;  // the names the user's files had
         state.screenshot_dir = "screenshots";  // downloaded as they are taken
         std::filesystem::create_directories(state.screenshot_dir);
     });

@@ -53,6 +53,7 @@
   // one .brdf) opened, so a scene finds the .brdf files picked with it.
   async function openFiles(files) {
     const list = Array.from(files);
+    if (list.some((f) => f.name === 'assignment.json')) return practiseFiles(list);
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
     const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
@@ -61,15 +62,47 @@
     canvas.focus();
   }
   fileInput.addEventListener('change', () => { openFiles(fileInput.files); fileInput.value = ''; });
+
+  // Practice mode from the student's own copy of an assignment: its folder
+  // (Practise…, a folder chooser) or its files (Open… with assignment.json
+  // among them). The .json and .brdf files go into a fresh folder under the
+  // work folder, in their places under the picked folder; the shallowest
+  // assignment.json is graded with the same code as ?assignment=.
+  let practiceUploads = 0;
+  async function practiseFiles(files) {
+    const list = Array.from(files).filter((f) => /\.(json|brdf)$/.test(f.name));
+    const place = (f) => f.webkitRelativePath || f.name;
+    const folder = 'practice-' + (++practiceUploads);
+    for (const file of list) writeWorkFile(folder + '/' + place(file), new Uint8Array(await file.arrayBuffer()));
+    const assignment = list.filter((f) => f.name === 'assignment.json')
+      .sort((a, b) => place(a).split('/').length - place(b).split('/').length)[0];
+    if (!assignment) {
+      say('practice: no assignment.json among the picked files: pick the assignment\'s folder');
+      return;
+    }
+    const error = Module.ccall('m3055_practise', 'string', ['string'], [WORK + '/' + folder + '/' + place(assignment)]);
+    say(error ? error : 'practising ' + place(assignment) + ': graded as you edit; Ctrl+S downloads submission.json');
+    canvas.focus();
+  }
+  const folderInput = document.getElementById('assignment-folder');
+  folderInput.addEventListener('change', () => { practiseFiles(folderInput.files); folderInput.value = ''; });
+  document.getElementById('practise').addEventListener('click', () => folderInput.click());
   document.getElementById('open').addEventListener('click', () => fileInput.click());
 
   async function shareLink() {
     await ready;
     const fragment = Module.ccall('m3055_share_fragment', 'string', [], []);
+    if (!fragment) throw new Error(Module.ccall('m3055_last_error', 'string', [], []));
     return location.origin + location.pathname + location.search + '#' + fragment;
   }
   document.getElementById('share').addEventListener('click', async () => {
-    const link = await shareLink();
+    let link;
+    try {
+      link = await shareLink();
+    } catch (e) {
+      say(e.message);
+      return;
+    }
     try {
       await navigator.clipboard.writeText(link);
       say('share link copied (' + link.length + ' characters)');
@@ -112,13 +145,18 @@
     const params = new URLSearchParams(location.search);
     try {
       if (params.get('assignment')) args.push('--assignment', await fetchAssignment(params.get('assignment')));
+      if (params.get('script')) {  // UI actions, one a frame (explore/script.h): course pages, scripts/bench-web
+        const response = await fetch(new URL(params.get('script'), location.href));
+        if (!response.ok) throw new Error('script ' + params.get('script') + ': HTTP ' + response.status);
+        args.push('--script', writeWorkFile('script.txt', await response.text()));
+      }
       const hash = new URLSearchParams(location.hash.slice(1));
       if (hash.get('scene')) {
         writeWorkFile('.keep', '');
         const error = Module.ccall('m3055_unpack_share_token', 'string', ['string', 'string'],
                                    [hash.get('scene'), WORK + '/shared-scene.json']);
         if (error) startNote = 'the share link did not open: ' + error;
-        else args.push(WORK + '/shared-scene.json');
+        else args.push('shared-scene.json');  // relative to the work folder (main's): its .brdf files show by their names
       }
     } catch (e) {
       startNote = String(e.message || e);
@@ -199,6 +237,11 @@
       return Module.ccall('m3055_grade_line', 'string', [], []);
     },
     shareLink,
+    // The CPU time (ms) of each frame that rendered a changed scene so far.
+    async frameTimes() {
+      await ready;
+      return JSON.parse(Module.ccall('m3055_render_frame_ms', 'string', [], []));
+    },
     // Milliseconds from each input event (the first since the last render) to
     // the frame that rendered its change; clear: start a new measurement.
     latency(clear = false) {

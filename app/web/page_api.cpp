@@ -4,6 +4,9 @@
 #include "app/web/page.h"
 #include "explore/brdf_files.h"
 #include "explore/files.h"
+#include "explore/practice.h"
+#include "explore/undo.h"
+#include "grading/assignment.h"
 #include "explore/share_link.h"
 #include "explore/state.h"
 #include "gl/program.h"
@@ -13,6 +16,7 @@
 #include <emscripten.h>
 
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -94,7 +98,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
     result.clear();
     if (ExplorerSession* s = web::session()) {
         try {
-            result = "scene=" + explore::share_token(s->state().scene);
+            result = "scene=" + explore::share_token(s->state().scene, web::kWorkFolder);
         } catch (const std::exception& e) {
             s->state().error = e.what();
         }
@@ -102,17 +106,57 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
     return result.c_str();
 }
 
-// A share link's token unpacked into the work folder as `path` (a scene
-// file main() then starts with). "" or the one-line reason.
+// A share link's token unpacked into the work folder: the scene as `path` (a
+// scene file main() then starts with), the .brdf files it carries beside it
+// under their names. "" or the one-line reason (nothing written then).
 EMSCRIPTEN_KEEPALIVE const char* m3055_unpack_share_token(const char* token, const char* path) {
     static std::string result;
     result.clear();
     try {
-        const std::string text = explore::scene_text_from_share_token(token);
-        write_file_atomic(path, text.data(), text.size());
+        const explore::SharedScene shared = explore::unpack_share_token(token);
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        for (const explore::SharedFile& file : shared.files) {
+            const std::filesystem::path target = folder / file.name;
+            std::filesystem::create_directories(target.parent_path());
+            write_file_atomic(target.string(), file.text.data(), file.text.size());
+        }
+        write_file_atomic(path, shared.scene_text.data(), shared.scene_text.size());
     } catch (const std::exception& e) {
         result = e.what();
     }
+    return result.c_str();
+}
+
+// Practice mode against the assignment file `path` (picked files, already in
+// the work folder: its reference and start scenes beside it), as
+// ?assignment= starts it: the start scene becomes the scene, a fresh history,
+// the live grade. "" or the one-line reason (the scene stays then).
+EMSCRIPTEN_KEEPALIVE const char* m3055_practise(const char* path) {
+    static std::string result;
+    result.clear();
+    ExplorerSession* s = web::session();
+    if (!s) return result.assign("m3055: the explorer did not start").c_str();
+    explore::ExplorerState& state = s->state();
+    try {
+        grading::load_assignment(path);  // a bad file changes nothing
+        grading::Assignment assignment = explore::open_assignment(state, path, false);
+        explore::start_history(state);
+        if (!s->practise(std::move(assignment))) result = text::one_line(state.error);
+    } catch (const std::exception& e) {
+        result = text::one_line(e.what());
+    }
+    state.changed();
+    return result.c_str();
+}
+
+// The CPU time of each frame that rendered a changed scene so far, as a JSON
+// array of milliseconds (m3055.frameTimes(); scripts/bench-web).
+EMSCRIPTEN_KEEPALIVE const char* m3055_render_frame_ms(void) {
+    static std::string result;
+    result = "[";
+    if (ExplorerSession* s = web::session())
+        for (double ms : s->render_frame_ms()) result += (result.size() > 1 ? "," : "") + std::to_string(ms);
+    result += "]";
     return result.c_str();
 }
 

@@ -15,6 +15,7 @@ std::string g_folder;
 bool g_allowed = true;
 bool g_confined = false;  // a BrdfConfinement lives
 std::string g_root, g_why_none;
+std::string g_written_relative_to;  // a BrdfPathsRelativeTo's folder
 
 }  // namespace
 
@@ -86,6 +87,12 @@ BrdfScope::~BrdfScope() {
     g_allowed = old_allowed_;
 }
 
+BrdfPathsRelativeTo::BrdfPathsRelativeTo(std::string folder) : old_folder_(g_written_relative_to) {
+    g_written_relative_to = std::move(folder);
+}
+
+BrdfPathsRelativeTo::~BrdfPathsRelativeTo() { g_written_relative_to = old_folder_; }
+
 BrdfConfinement::BrdfConfinement(std::string root, std::string why_none)
     : old_active_(g_confined), old_root_(g_root), old_why_none_(g_why_none) {
     g_confined = true;
@@ -137,6 +144,21 @@ Material read_brdf_material(const Node& node) {
     return material;
 }
 
+namespace {
+
+// The "file" a scene names a .brdf by: absolute, or relative to a
+// BrdfPathsRelativeTo's folder when the file is inside it.
+std::string written_path(const std::string& path) {
+    namespace fs = std::filesystem;
+    if (g_written_relative_to.empty()) return fs::absolute(path).string();
+    const fs::path full = fs::absolute(path).lexically_normal();
+    const fs::path relative = full.lexically_relative(fs::absolute(g_written_relative_to).lexically_normal());
+    if (relative.empty() || *relative.begin() == ".." || relative == ".") return full.string();
+    return relative.generic_string();
+}
+
+}  // namespace
+
 json brdf_material_json(const Material& material) {
     const BrdfModel* model = find_brdf_model(material.model());
     json params = json::object();
@@ -154,7 +176,7 @@ json brdf_material_json(const Material& material) {
     }
     const dvec3 axis = material.vec3("axis");
     return {{"model", "brdf"},
-            {"file", std::filesystem::absolute(model->path).string()},
+            {"file", written_path(model->path)},
             {"params", params},
             {"axis", json::array({axis.x, axis.y, axis.z})}};
 }

@@ -45,6 +45,22 @@ private:
     std::string old_root_, old_why_none_;
 };
 
+// While one lives, brdf_material_json names a .brdf file inside `folder` by
+// its path relative to it (the page, app/web/: a saved or shared scene names
+// the file as the user named it, not by the page's work folder, so the
+// download renders next to the .brdf); a file outside it, and every file with
+// none alive, by its absolute path, as before.
+class BrdfPathsRelativeTo {
+public:
+    explicit BrdfPathsRelativeTo(std::string folder);
+    ~BrdfPathsRelativeTo();
+    BrdfPathsRelativeTo(const BrdfPathsRelativeTo&) = delete;
+    BrdfPathsRelativeTo& operator=(const BrdfPathsRelativeTo&) = delete;
+
+private:
+    std::string old_folder_;
+};
+
 // A BrdfConfinement's refusal with no folder: "a .brdf file is not accepted
 // here: " + why_none (m3055 explore --assignment --allow-brdf gives it for a
 // scene that is one file, as grade does).

@@ -30,6 +30,8 @@ const site = path.resolve(option('site', path.join(repo, 'build-web', 'site')));
 const work = path.resolve(option('work', fs.mkdtempSync('/tmp/m3055-web-')));
 const backend = option('backend', 'swiftshader');
 const out = path.resolve(option('out', work));
+// --only PART[,PART]: scenes, input, latency (all when not given), for a quick rerun of one part.
+const only = option('only', 'scenes,input,latency').split(',');
 fs.mkdirSync(work, { recursive: true });
 fs.mkdirSync(out, { recursive: true });
 
@@ -206,6 +208,16 @@ async function compareScenes(page, scenes) {
   }
 }
 
+// The first file with this ending that a download finished in `folder`, or null after 10 s.
+async function waitForDownload(folder, ending) {
+  for (let i = 0; i < 100; ++i) {
+    const done = fs.readdirSync(folder).filter((f) => f.endsWith(ending));
+    if (done.length) return path.join(folder, done[0]);
+    await sleep(100);
+  }
+  return null;
+}
+
 // Real mouse and keyboard input (the DevTools protocol's Input domain), at the
 // places the side panel puts the spec example's controls at 1280 x 720.
 const M_SLIDER = { y: 384 + 0, grab: 178 };  // "m (size)", page coordinates (the bar is 30 px)
@@ -273,16 +285,46 @@ async function realInput(browser, base) {
   await chooser.accept([brdf]);
   await sleep(800);
   const opened = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
-  const token = new URLSearchParams((await page.evaluate(() => window.m3055.shareLink())).split('#')[1]).get('scene');
-  const sceneText = zlib.inflateSync(Buffer.from(token, 'base64url')).toString();
-  const openedScene = JSON.parse(sceneText);
-  check(openedScene.objects[0].material.model === 'brdf', `${backend}: the file chooser opened lambert.brdf on object 0`);
-  openedScene.objects[0].material.file = 'lambert.brdf';  // the page's work folder is /work
-  fs.copyFileSync(brdf, path.join(work, 'lambert.brdf'));
-  fs.writeFileSync(path.join(work, 'opened.json'), JSON.stringify(openedScene));
-  execFileSync(m3055, ['render', '--scene', 'opened.json', '--out', 'opened.png'], { cwd: work });
-  check(opened.equals(fs.readFileSync(path.join(work, 'opened.png'))), `${backend}: ... and the display is m3055 render's of that scene, byte for byte`);
+  // Saved as a user does (Ctrl+S over the display: a download): the scene names
+  // the file as the user did, so it renders natively next to lambert.brdf.
+  const downloads = path.join(work, 'downloads');
+  fs.rmSync(downloads, { recursive: true, force: true });
+  fs.mkdirSync(downloads);
+  const cdp = await browser.target().createCDPSession();
+  await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  await page.mouse.move(900, 300);
+  await page.keyboard.down('Control');
+  await sleep(100);
+  await page.keyboard.press('s');
+  await page.keyboard.up('Control');
+  await sleep(500);  // "Save scene as", its file name selected: a name typed replaces it
+  await page.keyboard.type('with-lambert.json');
+  await page.keyboard.press('Enter');
+  const savedJson = await waitForDownload(downloads, '.json');
+  await page.screenshot({ path: path.join(out, `${backend}-saved.png`) });
+  await cdp.detach();
+  const openedScene = savedJson ? JSON.parse(fs.readFileSync(savedJson, 'utf8')) : { objects: [{ material: {} }] };
+  check(openedScene.objects[0].material.model === 'brdf', `${backend}: the file chooser opened lambert.brdf on object 0 ` +
+    `(Ctrl+S downloaded ${savedJson ? path.basename(savedJson) : 'nothing'})`);
+  check(openedScene.objects[0].material.file === 'lambert.brdf',
+    `${backend}: ... and the saved scene names it as the user did: "${openedScene.objects[0].material.file}"`);
+  fs.copyFileSync(brdf, path.join(downloads, 'lambert.brdf'));
+  let rendered = Buffer.alloc(0);
+  if (savedJson) {
+    execFileSync(m3055, ['render', '--scene', path.basename(savedJson), '--out', 'opened.png'], { cwd: downloads });
+    rendered = fs.readFileSync(path.join(downloads, 'opened.png'));
+  }
+  check(opened.equals(rendered), `${backend}: ... m3055 render of the downloaded scene next to lambert.brdf is the page's display, byte for byte`);
   await page.screenshot({ path: path.join(out, `${backend}-brdf-opened.png`) });
+  // The share link carries lambert.brdf: a fresh page (its own empty work
+  // folder) shows the same display.
+  const brdfLink = await page.evaluate(() => window.m3055.shareLink());
+  const brdfShared = await openPage(browser, brdfLink);
+  const brdfSharedPng = pngOf(await brdfShared.evaluate(() => window.m3055.displayPNG()));
+  await brdfShared.screenshot({ path: path.join(out, `${backend}-brdf-shared.png`) });
+  await brdfShared.close();
+  check(brdfSharedPng.equals(opened),
+    `${backend}: the share link of a scene with lambert.brdf (${brdfLink.length} characters) opens the same display in a fresh page`);
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
@@ -300,6 +342,150 @@ async function realInput(browser, base) {
   const score = (line.match(/score=([0-9.]+)/) || [])[1];
   check(score !== undefined && csv.split('\n').some((row) => row.startsWith('student,' + score + ',') || row.split(',').includes(score)),
     `${backend}: practice mode's grade (${line.split('\t')[0]}) is m3055 grade's (grades.csv: ${csv.split('\n')[1]})`);
+
+  // The student's own copy of the assignment, picked as a folder (Practise…)
+  // and as files (Open… with assignment.json among them): the same grade.
+  const assignmentDir = path.join(repo, 'assignments', 'three-point');
+  for (const [how, button, files] of [
+    ['its folder through Practise…', '#practise', [assignmentDir]],
+    ['its three files through Open…', '#open', ['assignment.json', 'reference.json', 'start.json'].map((f) => path.join(assignmentDir, f))]]) {
+    const picked = await openPage(browser, base);
+    const [chooser] = await Promise.all([picked.waitForFileChooser(), picked.click(button)]);
+    await chooser.accept(files);
+    await sleep(1500);
+    const pickedLine = await picked.evaluate(() => window.m3055.gradeLine());
+    const bar = await picked.evaluate(() => document.getElementById('note').textContent);
+    await picked.screenshot({ path: path.join(out, `${backend}-practice-picked${button.slice(1)}.png`) });
+    await picked.close();
+    check(pickedLine !== '' && pickedLine === line, `${backend}: practice from ${how}: ${pickedLine.split('\t')[0] || '(none)'} ` +
+      `as by ?assignment= (the bar: ${bar})`);
+  }
+}
+
+// The mouse wheel over the side panel scrolls it, as on the desktop: one notch
+// down moves the panel's rows up (found by matching the rows of two
+// screenshots), one notch up puts them back pixel for pixel.
+const PANEL = { x0: 0, x1: 490, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar
+function panelRows(png) {
+  const image = decodePng(png);
+  const rows = [];
+  for (let y = 0; y < image.height; ++y) {
+    const start = (y * image.width + PANEL.x0) * image.channels;
+    rows.push(image.pixels.subarray(start, start + (PANEL.x1 - PANEL.x0) * image.channels).toString('base64'));
+  }
+  return rows;
+}
+// How far the panel's rows moved up from `before` to `after` (0: not at all, or not a scroll).
+function rowsMovedUp(before, after) {
+  let best = { dy: 0, matches: 0 };
+  for (let dy = -200; dy <= 200; ++dy) {
+    let matches = 0;
+    for (let y = PANEL.y0; y < PANEL.y1; ++y) if (before[y + dy] !== undefined && after[y] === before[y + dy]) ++matches;
+    if (matches > best.matches) best = { dy, matches };
+  }
+  return best.matches >= 0.9 * (PANEL.y1 - PANEL.y0) ? best.dy : 0;
+}
+async function wheelScrollsPanel(browser, base) {
+  const page = await openPage(browser, base);
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
+    fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
+  await page.mouse.move(PANEL.wheelX, PANEL.wheelY);
+  await sleep(800);
+  const shot = async () => panelRows(await page.screenshot());
+  const before = await shot();
+  await page.mouse.wheel({ deltaY: 100 });  // one notch down, as Chromium reports a wheel's notch (100 px)
+  await sleep(600);
+  const down = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-wheel-down.png`), down);
+  const moved = rowsMovedUp(before, panelRows(down));
+  await page.mouse.wheel({ deltaY: -100 });
+  await sleep(600);
+  const back = await shot();
+  const same = back.slice(PANEL.y0, PANEL.y1).every((row, i) => row === before[PANEL.y0 + i]);
+  check(moved > 0 && moved < 200, `${backend}: a wheel notch down over the side panel moves its rows up (by ${moved} px)`);
+  check(same, `${backend}: ... and a notch up puts them back, pixel for pixel`);
+  await page.close();
+}
+
+// Where `image` (decoded) appears in `shot` (decoded) pixel for pixel: the
+// top-left corners, row by row (a pane drawn at 1x on a 1x page).
+function findImage(shot, image) {
+  const found = [];
+  const row = (img, x, y) => {
+    const out = Buffer.alloc(image.width * 3);
+    for (let i = 0; i < image.width; ++i)
+      for (let c = 0; c < 3; ++c) out[i * 3 + c] = img.pixels[((y * img.width) + x + i) * img.channels + c];
+    return out;
+  };
+  const first = row(image, 0, 0);
+  for (let y = 0; y + image.height <= shot.height; ++y) {
+    for (let x = 0; x + image.width <= shot.width; ++x) {
+      if (!row(shot, x, y).equals(first)) continue;
+      let all = true;
+      for (let r = 1; r < image.height && all; ++r) all = row(shot, x, y + r).equals(row(image, 0, r));
+      if (all) found.push({ x, y });
+    }
+  }
+  return found;
+}
+// Pixels in a rectangle of `shot` that are not black.
+function litPixels(shot, x0, y0, w, h) {
+  let lit = 0;
+  for (let y = y0; y < y0 + h; ++y)
+    for (let x = x0; x < x0 + w; ++x) {
+      const i = (y * shot.width + x) * shot.channels;
+      if (shot.pixels[i] || shot.pixels[i + 1] || shot.pixels[i + 2]) ++lit;
+    }
+  return lit;
+}
+
+// The A/B split as a student turns it on: the Display, Material and Lights
+// headers closed with the mouse, "A/B compare" opened, "split" and
+// "difference pane" ticked; then B's "m (size)" slider dragged. The page's
+// screenshots must show m3055's display twice (A and B, B a copy of A at
+// first), a black difference pane, and after the drag A unchanged, B changed,
+// the difference pane lit.
+async function abSplitByMouse(browser, base) {
+  const page = await openPage(browser, base);
+  await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
+    fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
+  await sleep(500);
+  const a = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
+  for (const [x, y] of [[60, 90], [60, 115], [60, 140], [60, 215], [18, 240], [18, 299]]) {  // headers, split, difference
+    await page.mouse.click(x, y);
+    await sleep(400);
+  }
+  const away = async () => { await page.mouse.move(1000, 745); await sleep(1200); };  // no tooltip over the panes
+  await away();
+  const splitShot = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-ab-split.png`), splitShot);
+  const split = decodePng(splitShot);
+  const panes = findImage(split, a);
+  check(panes.length === 2, `${backend}: A/B split by mouse: m3055's display appears twice in the page, A and B ` +
+    `(at ${panes.map((p) => `${p.x},${p.y}`).join(' and ')})`);
+  if (panes.length !== 2) { await page.close(); return; }
+  const [paneA, paneB] = panes.sort((p, q) => p.y - q.y || p.x - q.x);
+  // The difference pane: the free cell under A (the layout of three panes).
+  const diff = { x: paneA.x, y: paneA.y + a.height + 8, w: a.width, h: a.height - 16 };
+  check(litPixels(split, diff.x, diff.y, diff.w, diff.h) === 0, `${backend}: ... the difference pane |A - B| is black while B = A`);
+
+  // B's "m (size)" slider (the narrow panel of three panes), dragged right.
+  const grab = { x: 128, y: 614 };
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  for (let x = grab.x; x <= grab.x + 60; x += 10) { await page.mouse.move(x, grab.y); await sleep(30); }
+  await page.mouse.up();
+  await away();
+  const changedShot = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-ab-changed.png`), changedShot);
+  const changed = decodePng(changedShot);
+  const aNow = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
+  const stillA = findImage(changed, a);
+  check(stillA.length === 1 && stillA[0].x === paneA.x && stillA[0].y === paneA.y && aNow.pixels.equals(a.pixels),
+    `${backend}: ... dragging B's "m (size)" leaves A as it was (the scene's display, once in the page)`);
+  const lit = litPixels(changed, diff.x, diff.y, diff.w, diff.h);
+  check(lit > 0, `${backend}: ... and lights the difference pane (${lit} px)`);
+  await page.close();
 }
 
 // Slider to pixels: a drag of the "m (size)" slider, 40 moves 25 ms apart;
@@ -327,7 +513,7 @@ async function measureLatency(browser, base) {
 }
 
 (async () => {
-  const scenes = sceneSet();
+  const scenes = only.includes('scenes') ? sceneSet() : [];
   renderNatively(scenes);
   const server = await serve(site);
   const base = `http://127.0.0.1:${server.address().port}/`;
@@ -343,10 +529,14 @@ async function measureLatency(browser, base) {
       return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
     });
     console.log(`${backend}: WebGL2 renderer: ${renderer}; page ready in ${page.readyMs} ms`);
-    await compareScenes(page, scenes);
+    if (only.includes('scenes')) await compareScenes(page, scenes);
     await page.close();
-    await realInput(browser, base);
-    await measureLatency(browser, base);
+    if (only.includes('input')) {
+      await wheelScrollsPanel(browser, base);
+      await abSplitByMouse(browser, base);
+      await realInput(browser, base);
+    }
+    if (only.includes('latency')) await measureLatency(browser, base);
   } finally {
     await browser.close();
     server.close();
