@@ -451,7 +451,13 @@ async function abSplitByMouse(browser, base) {
     fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
   await sleep(500);
   const a = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
-  for (const [x, y] of [[60, 90], [60, 115], [60, 140], [60, 215], [18, 240], [18, 299]]) {  // headers, split, difference
+  // The side panel's rows are 25 px from the first header at y = 90: Display,
+  // Material, Lights (closed here), then Spectra, Objects, Camera and A/B
+  // compare (opened here), whose first rows are "split" and, after two rows
+  // of text, "difference pane".
+  const header = (i) => 90 + 25 * i;
+  for (const [x, y] of [[60, header(0)], [60, header(1)], [60, header(2)], [60, header(6)], [18, header(7)],
+                        [18, header(7) + 59]]) {
     await page.mouse.click(x, y);
     await sleep(400);
   }
@@ -470,7 +476,7 @@ async function abSplitByMouse(browser, base) {
   check(litPixels(split, diff.x, diff.y, diff.w, diff.h) === 0, `${backend}: ... the difference pane |A - B| is black while B = A`);
 
   // B's "m (size)" slider (the narrow panel of three panes), dragged right.
-  const grab = { x: 128, y: 614 };
+  const grab = { x: 128, y: header(6) + 399 };
   await page.mouse.move(grab.x, grab.y);
   await page.mouse.down();
   for (let x = grab.x; x <= grab.x + 60; x += 10) { await page.mouse.move(x, grab.y); await sleep(30); }
