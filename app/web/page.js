@@ -57,6 +57,21 @@
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
     const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
+    // A chooser gives names without folders: a .brdf the scene names in a
+    // subfolder ("brdfs/my.brdf") and that was picked with it ("my.brdf") is
+    // put where the scene looks for it too.
+    if (!scene.name.endsWith('.brdf')) {
+      let named = [];
+      try {
+        named = (JSON.parse(await scene.text()).objects || [])
+          .map((o) => o && o.material && o.material.file).filter((f) => typeof f === 'string');
+      } catch (e) { /* not JSON: the loader says so */ }
+      for (const name of named) {
+        const picked = list.find((f) => f.name === basename(name));
+        if (picked && name.includes('/') && !name.startsWith('/') && !name.split('/').includes('..'))
+          writeWorkFile(name, new Uint8Array(await picked.arrayBuffer()));
+      }
+    }
     const error = Module.ccall('m3055_open_file', 'string', ['string'], [scene.name]);
     say(error ? error : 'opened ' + scene.name);
     canvas.focus();

@@ -325,6 +325,25 @@ async function realInput(browser, base) {
   await brdfShared.close();
   check(brdfSharedPng.equals(opened),
     `${backend}: the share link of a scene with lambert.brdf (${brdfLink.length} characters) opens the same display in a fresh page`);
+  // A scene naming its .brdf in a subfolder, picked together with that file
+  // (a chooser gives names without folders): it opens as m3055 render draws it.
+  const sub = path.join(work, 'subscene');
+  fs.mkdirSync(path.join(sub, 'brdfs'), { recursive: true });
+  fs.copyFileSync(brdf, path.join(sub, 'brdfs', 'lambert.brdf'));
+  openedScene.objects[0].material.file = 'brdfs/lambert.brdf';
+  openedScene.display = Object.assign({}, openedScene.display, { bits: 4 });  // not the display shown before
+  fs.writeFileSync(path.join(sub, 'subscene.json'), JSON.stringify(openedScene));
+  const [subChooser] = await Promise.all([page.waitForFileChooser(), page.click('#open')]);
+  await subChooser.accept([path.join(sub, 'subscene.json'), path.join(sub, 'brdfs', 'lambert.brdf')]);
+  await sleep(800);
+  const subPng = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  let subRendered = Buffer.alloc(0);
+  if (savedJson) {
+    execFileSync(m3055, ['render', '--scene', 'subscene.json', '--out', 'subscene.png'], { cwd: sub });
+    subRendered = fs.readFileSync(path.join(sub, 'subscene.png'));
+  }
+  check(subPng.equals(subRendered), `${backend}: a scene naming brdfs/lambert.brdf, picked with lambert.brdf, ` +
+    'shows what m3055 render draws of it');
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
