@@ -380,6 +380,33 @@ TEST_F(ExplorerInput, SliderDragThenCtrlZRestoresTheExactImage) {
         << "one drag is one step";
 }
 
+// A Ctrl+click on "m (size)" behind a burst of keys still opens the slider's
+// text field: the click waits in the input queue behind its Ctrl (the keys
+// before it go one transition a frame), and the value typed there gives
+// `m3055 render --set`'s image.
+TEST_F(ExplorerInput, CtrlClickBehindABurstOfKeysTypesIntoTheSlider) {
+    ASSERT_TRUE(start(1920, 1080));
+    const Rgb8Image original = headless(dir_);
+    Place at;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, original)).scale > 0; });
+    ASSERT_GT(at.scale, 0);
+    app_->move(kSizeSliderX, kSizeSliderY);
+    sleep_ms(150);
+    // With no field active the BackSpaces change nothing; queued, they hold the Ctrl back for frames.
+    ASSERT_EQ(app_->xdo("key --delay 0 BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace keydown ctrl "
+                        "click 1 keyup ctrl"),
+              0);
+    sleep_ms(1000);
+    ASSERT_EQ(app_->xdo("type --delay 120 25"), 0);
+    ASSERT_EQ(app_->xdo("key Return"), 0);
+    app_->move(kRestX, kRestY);
+    const Rgb8Image expected = headless(dir_, {"--set", "objects[0].material.m=25"});
+    const Rgb8Image shown = app_->wait_for(
+        dir_.path(), [&](const Rgb8Image& s) { return shows_at(s, expected, at.x, at.y, at.scale); }, 20);
+    EXPECT_TRUE(shows_at(shown, expected, at.x, at.y, at.scale)) << "m = 25, typed into the slider";
+    EXPECT_TRUE(app_->running());
+}
+
 TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
     ASSERT_TRUE(start(1920, 1080));
     const Rgb8Image expected = headless(dir_);
