@@ -1,5 +1,9 @@
 #include "explore/material_fields.h"
 
+#include "scene/conductor_use.h"
+
+#include <glm/common.hpp>
+
 namespace m3055::explore {
 
 namespace {
@@ -33,6 +37,15 @@ std::string inert_detail(const Material& material, const ParamSpec& param) {
         return "C0 is worked out per light from the reflectance spectrum (spec section 7.3); the field shows "
                "the spectrum's colour under D65.";
     return "";
+}
+
+void carry_replaced_colour(const Material& before, Material& material, const ParamSpec& param) {
+    if (param.replaces.empty() || param.name != "conductor" || material.choice(param.name) != 0) return;
+    const std::optional<ConductorUse> was = conductor_use(before);
+    if (!was) return;
+    // Within the field's range, as every colour a scene gives: gold's D65 red is 1.04.
+    const Range range = material.model().param(param.replaces).range;
+    material.set_vec3(param.replaces, glm::clamp(conductor_d65_colour(was->metal), dvec3(range.lo), dvec3(range.hi)));
 }
 
 }  // namespace m3055::explore

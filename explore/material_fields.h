@@ -20,4 +20,11 @@ std::string inert_reason(const Material& material, const ParamSpec& param);
 // What to do about it, for the reason's tooltip ("" when it has an effect).
 std::string inert_detail(const Material& material, const ParamSpec& param);
 
+// After the choice `param` changed from `before` to `material`: when it was a
+// conductor standing in for a colour and is now "none", that colour takes the
+// metal's colour under D65 (scene/conductor_use.h; within the field's range),
+// so turning the conductor off keeps the material's look instead of showing
+// the colour hidden under it.
+void carry_replaced_colour(const Material& before, Material& material, const ParamSpec& param);
+
 }  // namespace m3055::explore

@@ -48,6 +48,7 @@ bool choice_widget(Material& material, const ParamSpec& param) {
         if (!ImGui::Selectable(param.choices[std::size_t(i)].c_str(), i == index)) continue;
         const Material before = material;
         material.set_choice(param.name, i);
+        carry_replaced_colour(before, material, param);
         for (const ParamSpec& other : material.model().params) {
             if (other.form_from == param.name && other.form_for(material).key != other.form_for(before).key)
                 material.set_lobes(other.name, other.form_for(material).fallback);

@@ -1,6 +1,7 @@
 #include "scene/conductor_use.h"
 
 #include "spectral/conductor.h"
+#include "spectral/reflected_colour.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,12 @@ std::optional<ConductorUse> conductor_use(const Material& material) {
     if (fresnel == "full" || fresnel == "dielectric") use.fresnel = ConductorFresnel::full;
     if (fresnel == "schlick") use.fresnel = ConductorFresnel::schlick;
     return use;
+}
+
+dvec3 conductor_d65_colour(const std::string& metal) {
+    const spectral::ComplexIndex& index = spectral::conductor(metal);
+    return spectral::reflected_c0(spectral::light_power(0.0, ""),
+                                  [&index](double nm) { return spectral::normal_reflectance(index.at(nm)); });
 }
 
 double conductor_F(ConductorFresnel fresnel, std::complex<double> eta, double cos_theta) {

@@ -26,6 +26,11 @@ struct ConductorUse {
 // The material's conductor, or nothing (no "conductor" parameter, or "none").
 std::optional<ConductorUse> conductor_use(const Material& material);
 
+// The colour the metal shows under D65 at normal incidence (its C0 under the
+// display's white): what its "color" field is given when the conductor is
+// turned off in the explorer, so the material keeps its look.
+dvec3 conductor_d65_colour(const std::string& metal);
+
 // F of the metal's index `eta` at cos(theta) under `fresnel`.
 double conductor_F(ConductorFresnel fresnel, std::complex<double> eta, double cos_theta);
 
