@@ -1,5 +1,6 @@
 #include "explore/share_link.h"
 
+#include "io/input_file.h"
 #include "scene/json_brdf.h"
 #include "scene/load.h"
 
@@ -10,8 +11,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -94,14 +93,6 @@ bool plain_relative_brdf_name(const std::string& name) {
     return true;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("share link: cannot read " + path.string());
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::string deflate_to_token(const std::string& text) {
     uLongf size = compressBound(uLong(text.size()));
     std::vector<Bytef> packed(size);
@@ -154,7 +145,11 @@ std::string share_token(const Scene& scene, const std::string& folder) {
         if (!plain_relative_brdf_name(name))
             throw std::runtime_error("share link: the .brdf file " + name +
                                      " is not in the page's folder, so the link cannot carry it");
-        files[name] = read_text(std::filesystem::path(folder) / name);
+        try {  // io's safe read: a regular file, at most what a link may unpack to
+            files[name] = io::read_input_file((std::filesystem::path(folder) / name).string(), kMaxSharedSceneBytes);
+        } catch (const io::InputError& e) {
+            throw std::runtime_error(std::string("share link: ") + e.what());
+        }
     }
     const std::string text = files.empty() ? doc.dump()
                                            : json{{"m3055_share", 1}, {"scene", doc}, {"brdf_files", files}}.dump();
