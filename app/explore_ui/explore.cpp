@@ -722,6 +722,8 @@ bool ExplorerSession::step() {
     return true;
 }
 
+bool ExplorerSession::idle() const { return !parts_->explorer->frame_needed(); }
+
 int ExplorerSession::finish() { return parts_->explorer->finish(); }
 
 ExplorerState& ExplorerSession::state() { return parts_->state; }

@@ -48,6 +48,10 @@ public:
     // One turn of the loop: waits for work (the desktop sleeps until an event;
     // a browser returns at once) and draws a frame when one is due. False once done.
     bool step();
+    // Nothing left to do until the next input: every queued key and click fed
+    // to Dear ImGui, the frames owed after them drawn, the scene's change
+    // rendered (the page's m3055.settled()).
+    bool idle() const;
     int finish();  // --stats; the exit status
     explore::ExplorerState& state();
     long renders() const;  // scene renders so far (a changed scene drawn once each)

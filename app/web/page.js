@@ -252,6 +252,18 @@
       return Module.ccall('m3055_grade_line', 'string', [], []);
     },
     shareLink,
+    // Resolves once the explorer has handled every key and click sent so far
+    // and drawn what they changed (checked each animation frame); rejects
+    // after timeoutMs. Input is fed one transition per key a frame, so a
+    // typed word takes a few frames: wait for this, not for a fixed time.
+    async settled(timeoutMs = 30000) {
+      await ready;
+      const start = performance.now();
+      while (!Module.ccall('m3055_idle', 'number', [], [])) {
+        if (performance.now() - start > timeoutMs) throw new Error(`the explorer was still busy after ${timeoutMs} ms`);
+        await new Promise((resolve) => requestAnimationFrame(resolve));
+      }
+    },
     // The CPU time (ms) of each frame that rendered a changed scene so far.
     async frameTimes() {
       await ready;

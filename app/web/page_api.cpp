@@ -160,6 +160,13 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_render_frame_ms(void) {
     return result.c_str();
 }
 
+// 1 when the explorer has nothing left to do until the next input (every
+// queued event handled, its frames drawn: ExplorerSession::idle), else 0.
+EMSCRIPTEN_KEEPALIVE int m3055_idle(void) {
+    ExplorerSession* s = web::session();
+    return s && s->idle() ? 1 : 0;
+}
+
 // The practice grade line as `m3055 grade` scores it ("" outside practice mode).
 EMSCRIPTEN_KEEPALIVE const char* m3055_grade_line(void) {
     static std::string result;

@@ -218,6 +218,11 @@ async function waitForDownload(folder, ending) {
   return null;
 }
 
+// Waits until the page's explorer has handled all input sent so far and drawn
+// it (m3055.settled()): keys reach it one transition a frame, so on a busy
+// software GPU a typed word takes seconds, more than any fixed sleep.
+const settle = (page) => page.evaluate(() => window.m3055.settled());
+
 // Real mouse and keyboard input (the DevTools protocol's Input domain), at the
 // places the side panel puts the spec example's controls at 1280 x 720.
 const M_SLIDER = { y: 384 + 0, grab: 178 };  // "m (size)", page coordinates (the bar is 30 px)
@@ -235,7 +240,7 @@ async function realInput(browser, base) {
   await page.mouse.down();
   for (let x = M_SLIDER.grab; x <= M_SLIDER.grab + 60; x += 10) { await page.mouse.move(x, M_SLIDER.y); await sleep(30); }
   await page.mouse.up();
-  await sleep(400);
+  await settle(page);
   const dragged = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   check(!dragged.equals(before), `${backend}: dragging the "m (size)" slider changes the display`);
   await page.screenshot({ path: path.join(out, `${backend}-after-drag.png`) });
@@ -245,7 +250,7 @@ async function realInput(browser, base) {
   await page.keyboard.down('Control');
   await page.keyboard.press('z');
   await page.keyboard.up('Control');
-  await sleep(400);
+  await settle(page);
   const undone = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   check(undone.equals(before), `${backend}: Ctrl+Z after the drag gives the display byte for byte as before`);
 
@@ -256,12 +261,14 @@ async function realInput(browser, base) {
   // the click can arrive first: docs/web.md.)
   await sleep(1000);
   await page.mouse.click(WIDTH_FIELD.x, WIDTH_FIELD.y);
-  await sleep(200);
+  await settle(page);
   await page.keyboard.press('End');
   for (let i = 0; i < 6; ++i) await page.keyboard.press('Backspace');
   await page.keyboard.type('256');
   await page.keyboard.press('Enter');
-  await sleep(600);
+  const typedAt = Date.now();
+  await settle(page);
+  console.log(`        the typed keys were handled and drawn ${Date.now() - typedAt} ms after Enter was sent`);
   const typed = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   fs.writeFileSync(path.join(work, 'spec_example.json'), spec);
   execFileSync(m3055, ['render', '--scene', 'spec_example.json', '--set', 'display.width=256', '--out', 'typed.png'], { cwd: work });
@@ -297,7 +304,7 @@ async function realInput(browser, base) {
   await sleep(100);
   await page.keyboard.press('s');
   await page.keyboard.up('Control');
-  await sleep(500);  // "Save scene as", its file name selected: a name typed replaces it
+  await settle(page);  // "Save scene as", its file name selected: a name typed replaces it
   await page.keyboard.type('with-lambert.json');
   await page.keyboard.press('Enter');
   const savedJson = await waitForDownload(downloads, '.json');
@@ -413,12 +420,12 @@ async function wheelScrollsPanel(browser, base) {
   const shot = async () => panelRows(await page.screenshot());
   const before = await shot();
   await page.mouse.wheel({ deltaY: 100 });  // one notch down, as Chromium reports a wheel's notch (100 px)
-  await sleep(600);
+  await settle(page);
   const down = await page.screenshot();
   fs.writeFileSync(path.join(out, `${backend}-wheel-down.png`), down);
   const moved = rowsMovedUp(before, panelRows(down));
   await page.mouse.wheel({ deltaY: -100 });
-  await sleep(600);
+  await settle(page);
   const back = await shot();
   const same = back.slice(PANEL.y0, PANEL.y1).every((row, i) => row === before[PANEL.y0 + i]);
   check(moved > 0 && moved < 200, `${backend}: a wheel notch down over the side panel moves its rows up (by ${moved} px)`);
@@ -478,7 +485,7 @@ async function abSplitByMouse(browser, base) {
   for (const [x, y] of [[60, header(0)], [60, header(1)], [60, header(2)], [60, header(6)], [18, header(7)],
                         [18, header(7) + 59]]) {
     await page.mouse.click(x, y);
-    await sleep(400);
+    await settle(page);
   }
   const away = async () => { await page.mouse.move(1000, 745); await sleep(1200); };  // no tooltip over the panes
   await away();
@@ -500,6 +507,7 @@ async function abSplitByMouse(browser, base) {
   await page.mouse.down();
   for (let x = grab.x; x <= grab.x + 60; x += 10) { await page.mouse.move(x, grab.y); await sleep(30); }
   await page.mouse.up();
+  await settle(page);
   await away();
   const changedShot = await page.screenshot();
   fs.writeFileSync(path.join(out, `${backend}-ab-changed.png`), changedShot);
