@@ -13,6 +13,7 @@
 
 #include "grading/submissions.h"
 #include "image/image.h"
+#include "image/temporary_files.h"
 #include "io/message_text.h"
 #include "io/scene_inputs.h"
 
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <mutex>
 
 namespace m3055 {
 
@@ -141,7 +143,12 @@ void add_batch_command(CLI::App& app) {
             batch.scene_timeout_s = options->scene_timeout;
             // A render with NaN or infinite pixels: written, exit status unchanged, one line.
             std::map<const BatchItem*, std::string> warnings;
+            // Lines on stderr are printed under the file-commit lock, which an
+            // interrupt takes for good before its own line: that line stays
+            // the last (a scene's progress line printed after it would say
+            // the batch went on).
             batch.warned = [&](std::size_t, const BatchItem& item, const std::string& warning) {
+                const std::lock_guard<std::mutex> hold(temporary_files::lock());
                 std::cerr << (interactive ? "\r\033[K" : "") << warning << "\n";
                 warnings[&item] = text::one_line(warning.substr(std::string("m3055: warning: ").size()));
             };
@@ -156,6 +163,7 @@ void add_batch_command(CLI::App& app) {
                     report.push_back(report_entry(item, error, std::chrono::duration<double>(now - last).count()));
                     report.back()["warning"] = warnings.count(&item) ? warnings[&item] : "";
                     last = now;
+                    const std::lock_guard<std::mutex> hold(temporary_files::lock());
                     progress.step(item.out, error);
                 },
                 batch);
