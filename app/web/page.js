@@ -76,7 +76,15 @@
     say(error ? error : 'opened ' + scene.name);
     canvas.focus();
   }
-  fileInput.addEventListener('change', () => { openFiles(fileInput.files); fileInput.value = ''; });
+  // Picked files being read (m3055.settled() waits for them too), and how
+  // many picks were handled (m3055.filesHandled(): a folder chooser's change
+  // event comes a while after the pick, once the folder has been listed).
+  let filesInFlight = 0, filesHandled = 0;
+  function reading(work) {
+    ++filesInFlight;
+    work.finally(() => { --filesInFlight; ++filesHandled; });
+  }
+  fileInput.addEventListener('change', () => { reading(openFiles(fileInput.files)); fileInput.value = ''; });
 
   // Practice mode from the student's own copy of an assignment: its folder
   // (Practise…, a folder chooser) or its files (Open… with assignment.json
@@ -100,7 +108,7 @@
     canvas.focus();
   }
   const folderInput = document.getElementById('assignment-folder');
-  folderInput.addEventListener('change', () => { practiseFiles(folderInput.files); folderInput.value = ''; });
+  folderInput.addEventListener('change', () => { reading(practiseFiles(folderInput.files)); folderInput.value = ''; });
   document.getElementById('practise').addEventListener('click', () => folderInput.click());
   document.getElementById('open').addEventListener('click', () => fileInput.click());
 
@@ -252,14 +260,17 @@
       return Module.ccall('m3055_grade_line', 'string', [], []);
     },
     shareLink,
+    // How many picks of files (Open…, Practise…) the page has handled so far.
+    filesHandled: () => filesHandled,
     // Resolves once the explorer has handled every key and click sent so far
-    // and drawn what they changed (checked each animation frame); rejects
-    // after timeoutMs. Input is fed one transition per key a frame, so a
-    // typed word takes a few frames: wait for this, not for a fixed time.
+    // and every file picked in the page, and drawn what they changed (checked
+    // each animation frame); rejects after timeoutMs. Input is fed one
+    // transition per key a frame, so a typed word takes a few frames: wait
+    // for this, not for a fixed time.
     async settled(timeoutMs = 30000) {
       await ready;
       const start = performance.now();
-      while (!Module.ccall('m3055_idle', 'number', [], [])) {
+      while (filesInFlight > 0 || !Module.ccall('m3055_idle', 'number', [], [])) {
         if (performance.now() - start > timeoutMs) throw new Error(`the explorer was still busy after ${timeoutMs} ms`);
         await new Promise((resolve) => requestAnimationFrame(resolve));
       }

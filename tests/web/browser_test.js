@@ -225,6 +225,15 @@ async function waitForDownload(folder, ending) {
 // it (m3055.settled()): keys reach it one transition a frame, so on a busy
 // software GPU a typed word takes seconds, more than any fixed sleep.
 const settle = (page) => page.evaluate(() => window.m3055.settled());
+// Picks `files` in the chooser that clicking `selector` opens, then waits for
+// the page to have handled them (a folder's change event comes late) and settled.
+async function pickFiles(page, selector, files) {
+  const before = await page.evaluate(() => window.m3055.filesHandled());
+  const [chooser] = await Promise.all([page.waitForFileChooser(), page.click(selector)]);
+  await chooser.accept(files);
+  await page.waitForFunction((n) => window.m3055.filesHandled() > n, { timeout: 60000 }, before);
+  await settle(page);
+}
 
 // Real mouse and keyboard input (the DevTools protocol's Input domain), at the
 // places the side panel puts the spec example's controls at 1280 x 720.
@@ -234,7 +243,7 @@ async function realInput(browser, base) {
   const page = await openPage(browser, base);
   const spec = fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8');
   await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'), spec);
-  await sleep(500);
+  await settle(page);
   const before = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   await page.screenshot({ path: path.join(out, `${backend}-page.png`) });
 
@@ -291,9 +300,7 @@ async function realInput(browser, base) {
   // A .brdf file through the page's file chooser: it becomes object 0's material;
   // the scene it makes (read back through the share link) renders the same natively.
   const brdf = path.join(repo, 'tests', 'data', 'brdf', 'lambert.brdf');
-  const [chooser] = await Promise.all([page.waitForFileChooser(), page.click('#open')]);
-  await chooser.accept([brdf]);
-  await sleep(800);
+  await pickFiles(page, '#open', [brdf]);
   const opened = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   // Saved as a user does (Ctrl+S over the display: a download): the scene names
   // the file as the user did, so it renders natively next to lambert.brdf.
@@ -343,9 +350,7 @@ async function realInput(browser, base) {
   openedScene.objects[0].material.file = 'brdfs/lambert.brdf';
   openedScene.display = Object.assign({}, openedScene.display, { bits: 4 });  // not the display shown before
   fs.writeFileSync(path.join(sub, 'subscene.json'), JSON.stringify(openedScene));
-  const [subChooser] = await Promise.all([page.waitForFileChooser(), page.click('#open')]);
-  await subChooser.accept([path.join(sub, 'subscene.json'), path.join(sub, 'brdfs', 'lambert.brdf')]);
-  await sleep(800);
+  await pickFiles(page, '#open', [path.join(sub, 'subscene.json'), path.join(sub, 'brdfs', 'lambert.brdf')]);
   const subPng = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
   let subRendered = Buffer.alloc(0);
   if (savedJson) {
@@ -379,9 +384,7 @@ async function realInput(browser, base) {
     ['its folder through Practise…', '#practise', [assignmentDir]],
     ['its three files through Open…', '#open', ['assignment.json', 'reference.json', 'start.json'].map((f) => path.join(assignmentDir, f))]]) {
     const picked = await openPage(browser, base);
-    const [chooser] = await Promise.all([picked.waitForFileChooser(), picked.click(button)]);
-    await chooser.accept(files);
-    await sleep(1500);
+    await pickFiles(picked, button, files);
     const pickedLine = await picked.evaluate(() => window.m3055.gradeLine());
     const bar = await picked.evaluate(() => document.getElementById('note').textContent);
     await picked.screenshot({ path: path.join(out, `${backend}-practice-picked${button.slice(1)}.png`) });
@@ -420,6 +423,7 @@ async function wheelScrollsPanel(browser, base) {
     fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
   await page.mouse.move(PANEL.wheelX, PANEL.wheelY);
   await sleep(800);
+  await settle(page);
   const shot = async () => panelRows(await page.screenshot());
   const before = await shot();
   await page.mouse.wheel({ deltaY: 100 });  // one notch down, as Chromium reports a wheel's notch (100 px)
@@ -478,7 +482,7 @@ async function abSplitByMouse(browser, base) {
   const page = await openPage(browser, base);
   await page.evaluate((t) => window.m3055.loadScene(t, 'spec_example.json'),
     fs.readFileSync(path.join(repo, 'scenes', 'spec_example.json'), 'utf8'));
-  await sleep(500);
+  await settle(page);
   const a = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
   // The side panel's rows are 25 px from the first header at y = 90: Display,
   // Material, Lights (closed here), then Spectra, Objects, Camera and A/B
