@@ -2,6 +2,7 @@
 
 #include "analysis/brdf_check.h"
 #include "analysis/brdf_views.h"
+#include "numeric/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,7 @@ namespace m3055::plot {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 double rad(double deg) { return deg * kPi / 180.0; }
 
 std::string header(int width, int height, const std::string& title) {

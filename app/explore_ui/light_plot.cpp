@@ -8,6 +8,7 @@
 
 #include "analysis/lighting_ratio.h"
 #include "explore_ui/widgets.h"
+#include "numeric/angles.h"
 #include "scene/light_direction.h"
 
 #include <imgui.h>
@@ -19,7 +20,7 @@ namespace m3055::explore {
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using numeric::kDegree;
 
 // Seen from above (+y): +x right, +z (towards the default camera) down.
 ImVec2 plan_direction(const Light& light, const dvec3& subject) {
@@ -39,7 +40,7 @@ void set_azimuth(Light& light, const dvec3& subject, double azimuth_deg) {
     }
     const dvec3 offset = light.position - subject;
     const double radius = std::hypot(offset.x, offset.z);
-    light.position = subject + dvec3(radius * std::sin(azimuth_deg * kDeg), offset.y, radius * std::cos(azimuth_deg * kDeg));
+    light.position = subject + dvec3(radius * std::sin(azimuth_deg * kDegree), offset.y, radius * std::cos(azimuth_deg * kDegree));
 }
 
 }  // namespace
@@ -69,7 +70,7 @@ void light_plot(ExplorerState& state) {
     if (ImGui::IsItemActive() && dragged >= 0 && dragged < static_cast<int>(lights.size()) &&
         (mouse.x != centre.x || mouse.y != centre.y)) {
         Light turned = lights[std::size_t(dragged)];
-        set_azimuth(turned, subject, std::atan2(mouse.x - centre.x, mouse.y - centre.y) / kDeg);
+        set_azimuth(turned, subject, std::atan2(mouse.x - centre.x, mouse.y - centre.y) / kDegree);
         if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f)
             edit_light(state, dragged, turned);
     }

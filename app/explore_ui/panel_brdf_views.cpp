@@ -7,6 +7,7 @@
 
 #include "analysis/brdf_views.h"
 #include "explore_ui/widgets.h"
+#include "numeric/angles.h"
 
 #include <imgui.h>
 
@@ -19,7 +20,7 @@ namespace m3055::explore {
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using numeric::kDegree;
 const ImU32 kAxis = IM_COL32(255, 255, 255, 90), kLabel = IM_COL32(220, 220, 220, 255);
 
 // Black, red, yellow, white over [0, 1] (gnuplot's "hot", as `m3055 plot`).
@@ -138,8 +139,8 @@ void lobe_view(ExplorerState& state, const Lobe3d& lobe) {
         return ImVec2(centre.x + float(x) * scale, centre.y - float(p.z * cp + y * sp) * scale);
     };
     for (int a = 0; a < 72; ++a)  // the horizon and N
-        draw->AddLine(project({std::cos(a * 5 * kDeg), std::sin(a * 5 * kDeg), 0}),
-                      project({std::cos((a + 1) * 5 * kDeg), std::sin((a + 1) * 5 * kDeg), 0}), kAxis);
+        draw->AddLine(project({std::cos(a * 5 * kDegree), std::sin(a * 5 * kDegree), 0}),
+                      project({std::cos((a + 1) * 5 * kDegree), std::sin((a + 1) * 5 * kDegree), 0}), kAxis);
     draw->AddLine(project(dvec3(0.0)), project({0, 0, 1}), kAxis);
     const auto tip = [&](int t, int p) {
         const std::size_t k = std::size_t(t * lobe.np + p);

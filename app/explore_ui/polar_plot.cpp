@@ -1,5 +1,7 @@
 #include "explore_ui/polar_plot.h"
 
+#include "numeric/angles.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -12,7 +14,7 @@
 namespace m3055::explore {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using numeric::kDegree;
 
 // The grid: half circles at quarter steps (linear) or at each decade (log),
 // and display white (1.0) bold.
@@ -65,8 +67,8 @@ void polar_plot(const PlaneCurve& curve, RadialScale scale, double top, float si
     const ImVec2 origin(corner.x + size * 0.5f, corner.y + radius + 4.0f);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const std::function<ImVec2(double, double)> at = [&](double angle_deg, double r) {  // from N, + to the right
-        return ImVec2(origin.x + static_cast<float>(std::sin(angle_deg * kDeg) * r),
-                      origin.y - static_cast<float>(std::cos(angle_deg * kDeg) * r));
+        return ImVec2(origin.x + static_cast<float>(std::sin(angle_deg * kDegree) * r),
+                      origin.y - static_cast<float>(std::cos(angle_deg * kDegree) * r));
     };
     draw_grid(draw, origin, radius, scale, top, at);
 

@@ -1,6 +1,7 @@
 #include "analysis/brdf_check.h"
 
 #include "models/model_spec.h"
+#include "numeric/angles.h"
 #include "reference/classic.h"
 
 #include <algorithm>
@@ -9,7 +10,7 @@
 namespace m3055 {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 
 dvec3 spherical(double theta, double phi) {
     return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};

@@ -1,6 +1,7 @@
 #include "analysis/brdf_views.h"
 
 #include "analysis/brdf_check.h"
+#include "numeric/angles.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,7 @@
 namespace m3055 {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 double rad(double deg) { return deg * kPi / 180.0; }
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include "reference/hooks.h"
 
 #include "models/model_spec.h"
+#include "numeric/angles.h"
 #include "reference/reference.h"
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,7 @@
 namespace m3055 {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using numeric::kDegree;
 constexpr double kLogFloor = 1e-3;  // the log scale's centre
 }  // namespace
 
@@ -33,18 +34,18 @@ PlaneCurve plane_curve(const Material& material, const Light& light, double inci
                        int steps) {
     PlaneCurve curve;
     curve.incidence_deg = incidence_deg;
-    curve.light_behind = std::cos(incidence_deg * kDeg) <= 0.0;
+    curve.light_behind = std::cos(incidence_deg * kDegree) <= 0.0;
     curve.translucent = material.model().family == Family::translucent;
     // The plane of incidence is x-y, N = +y, L on the left (-x): no clamp.
     const dvec3 N(0.0, 1.0, 0.0);
     Light plotted = light;  // keep intensity, colour and own lobes
     plotted.type = LightType::directional;
     plotted.enabled = true;
-    plotted.direction = {-std::sin(incidence_deg * kDeg), std::cos(incidence_deg * kDeg), 0.0};
+    plotted.direction = {-std::sin(incidence_deg * kDegree), std::cos(incidence_deg * kDegree), 0.0};
     const std::vector<Light> lights = {plotted};
     for (int i = 0; i <= steps; ++i) {
         const double view = -90.0 + 180.0 * i / steps;
-        const ref::SurfacePoint point{dvec3(0.0), N, dvec3(std::sin(view * kDeg), std::cos(view * kDeg), 0.0)};
+        const ref::SurfacePoint point{dvec3(0.0), N, dvec3(std::sin(view * kDegree), std::cos(view * kDegree), 0.0)};
         dvec3 value(0.0);
         if (curve.translucent) {
             const ref::TranslucentShade shade = ref::reference_hooks(material.model()).translucent(material, lights, point);
@@ -64,7 +65,7 @@ double incidence_at_target(const Light& light, const Camera& camera) {
     const dvec3 N = glm::normalize(camera.position - camera.target);
     const dvec3 L = light.type == LightType::directional ? glm::normalize(light.direction)
                                                           : glm::normalize(light.position - camera.target);
-    return std::acos(std::clamp(glm::dot(N, L), -1.0, 1.0)) / kDeg;
+    return std::acos(std::clamp(glm::dot(N, L), -1.0, 1.0)) / kDegree;
 }
 
 double radial_fraction(double value, RadialScale scale, double top) {

@@ -1,6 +1,7 @@
 #include "analysis/plane_curve_gpu.h"
 
 #include "models/model_spec.h"
+#include "numeric/angles.h"
 #include "passes/brdf_grid.h"
 
 #include <algorithm>
@@ -9,8 +10,8 @@
 namespace m3055 {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
+using numeric::kPi;
+using numeric::kDegree;
 
 bool gpu_only(const Material& material) { return material.model().family == Family::brdf; }
 }  // namespace
@@ -19,7 +20,7 @@ PlaneCurve brdf_plane_curve(BrdfGrid& grid, const Material& material, const Ligh
                             int steps) {
     PlaneCurve curve;
     curve.incidence_deg = incidence_deg;
-    const double cos_in = std::cos(incidence_deg * kDeg);
+    const double cos_in = std::cos(incidence_deg * kDegree);
     curve.light_behind = cos_in <= 0.0;
     // The grid's frame: N = +z, the plane of incidence x-z (the default axis
     // gives X = +x), L on the -x side as the plot draws it.
@@ -27,11 +28,11 @@ PlaneCurve brdf_plane_curve(BrdfGrid& grid, const Material& material, const Ligh
     for (int i = 0; i <= steps; ++i) {
         const double view = -90.0 + 180.0 * i / steps;
         curve.view_deg.push_back(view);
-        Vs.emplace_back(std::sin(view * kDeg), 0.0, std::cos(view * kDeg));
+        Vs.emplace_back(std::sin(view * kDegree), 0.0, std::cos(view * kDegree));
     }
     curve.values.assign(Vs.size(), dvec3(0.0));
     if (curve.light_behind) return curve;
-    const dvec3 L(-std::sin(incidence_deg * kDeg), 0.0, cos_in);
+    const dvec3 L(-std::sin(incidence_deg * kDegree), 0.0, cos_in);
     const std::vector<float> f = grid.evaluate(material, {L}, Vs);
     const dvec3 scale = kPi * cos_in * light.intensity * light.color;
     for (std::size_t k = 0; k < Vs.size(); ++k) {

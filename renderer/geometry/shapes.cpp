@@ -1,6 +1,8 @@
 // One function per shape; see mesh.h for the conventions they all follow.
 #include "geometry/mesh.h"
 
+#include "numeric/angles.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -9,7 +11,7 @@ namespace m3055::geometry {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 
 std::uint32_t add_vertex(Mesh& mesh, const dvec3& position, const dvec3& normal) {
     mesh.positions.push_back(position);

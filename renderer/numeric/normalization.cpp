@@ -1,12 +1,13 @@
 #include "numeric/normalization.h"
 
+#include "numeric/angles.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace m3055::numeric {
 
 double gaussian_norm(double m) {
-    constexpr double kPi = 3.14159265358979323846;
     const double upper = std::min(kPi / 2.0, 9.0 * m);
     const int n = 400;  // even; ~44 intervals per width m: error far below 1e-9
     const double h = upper / n;

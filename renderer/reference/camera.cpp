@@ -2,6 +2,8 @@
 // and exact ray/sphere intersection.
 #include "reference/reference.h"
 
+#include "numeric/angles.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -9,7 +11,7 @@
 namespace m3055::ref {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 }  // namespace
 
 // docs/spec.md#3-geometry: pixel (x, y), y = 0 the top row, sampled at its centre.

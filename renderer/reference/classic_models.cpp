@@ -7,6 +7,7 @@
 #include "reference/hooks.h"
 
 #include "models/model_spec.h"
+#include "numeric/angles.h"
 #include "numeric/normalization.h"
 
 #include <glm/geometric.hpp>
@@ -18,7 +19,7 @@ namespace m3055::ref {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 
 // H = normalize(L + V); N where L = -V exactly (as the paper's models do).
 dvec3 half_vector(const dvec3& L, const dvec3& V, const dvec3& N) {

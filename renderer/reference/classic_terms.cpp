@@ -2,6 +2,7 @@
 // mirrors the GLSL function of the same name in glsl/terms/.
 #include "reference/classic.h"
 
+#include "numeric/angles.h"
 #include "numeric/normalization.h"
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,7 @@
 namespace m3055::ref {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using numeric::kPi;
 }
 
 // ---- Diffuse -------------------------------------------------------------------

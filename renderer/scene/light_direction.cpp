@@ -1,5 +1,7 @@
 #include "scene/light_direction.h"
 
+#include "numeric/angles.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -8,24 +10,24 @@
 namespace m3055 {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
+using numeric::kPi;
+using numeric::kDegree;
 // Below this projected length the azimuth is numerically meaningless.
 constexpr double kPoleEpsilon = 1e-9;
 }  // namespace
 
 dvec3 direction_from_angles(const Angles& angles) {
-    const double a = angles.azimuth_deg * kDeg, e = angles.elevation_deg * kDeg;
+    const double a = angles.azimuth_deg * kDegree, e = angles.elevation_deg * kDegree;
     return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
 }
 
 Angles angles_from_direction(const dvec3& direction, double previous_azimuth_deg) {
     const dvec3 d = glm::normalize(direction);
     Angles angles;
-    angles.elevation_deg = std::asin(std::clamp(d.y, -1.0, 1.0)) / kDeg;
+    angles.elevation_deg = std::asin(std::clamp(d.y, -1.0, 1.0)) / kDegree;
     const double horizontal = std::hypot(d.x, d.z);
     angles.azimuth_deg =
-        horizontal < kPoleEpsilon ? previous_azimuth_deg : std::atan2(d.x, d.z) / kDeg;
+        horizontal < kPoleEpsilon ? previous_azimuth_deg : std::atan2(d.x, d.z) / kDegree;
     return angles;
 }
 
