@@ -8,20 +8,20 @@
 namespace m3055 {
 namespace {
 
-struct Range {
+struct SlopeRange {
     double lo, hi;
 };
 
 // Perspective: the rays x = s z through the origin that touch the circle of
 // centre (x, z), radius r, in one coordinate plane of camera space. The
 // u (or v) range of the sphere's image is exactly this range of slopes s.
-std::optional<Range> tangent_slopes(double x, double z, double r) {
+std::optional<SlopeRange> tangent_slopes(double x, double z, double r) {
     const double d2 = x * x + z * z;
-    if (d2 <= r * r) return Range{-1e30, 1e30};  // the eye is inside this cylinder
+    if (d2 <= r * r) return SlopeRange{-1e30, 1e30};  // the eye is inside this cylinder
     const double centre = std::atan2(x, z), half = std::asin(r / std::sqrt(d2));
     const double lo = centre - half, hi = centre + half;
     if (lo >= M_PI / 2 || hi <= -M_PI / 2) return std::nullopt;  // wholly behind
-    return Range{lo <= -M_PI / 2 ? -1e30 : std::tan(lo), hi >= M_PI / 2 ? 1e30 : std::tan(hi)};
+    return SlopeRange{lo <= -M_PI / 2 ? -1e30 : std::tan(lo), hi >= M_PI / 2 ? 1e30 : std::tan(hi)};
 }
 
 }  // namespace
@@ -30,7 +30,7 @@ std::optional<std::array<float, 4>> sphere_ndc_rect(const CameraFrame& frame, co
                                                     double radius) {
     const dvec3 c = center - frame.position;
     const double x = glm::dot(c, frame.right), y = glm::dot(c, frame.up), z = glm::dot(c, frame.forward);
-    Range u{}, v{};
+    SlopeRange u{}, v{};
     if (frame.projection == Projection::perspective) {
         if (z + radius <= 0) return std::nullopt;
         auto su = tangent_slopes(x, z, radius), sv = tangent_slopes(y, z, radius);
