@@ -31,6 +31,7 @@ function(m3055_library name)
   endif()
   add_library(m3055_${name} STATIC ${sources} ${ARG_SOURCES})
   target_include_directories(m3055_${name} PUBLIC "${root}")
+  set_target_properties(m3055_${name} PROPERTIES UNITY_BUILD ${M3055_UNITY})  # CMakeLists.txt says why
   set(uses "")
   foreach(dep IN LISTS ARG_USES)
     list(APPEND uses m3055_${dep})
