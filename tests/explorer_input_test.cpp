@@ -13,6 +13,7 @@
 // widget fails the test instead of passing it vacuously.
 #include "explore/layout.h"
 #include "image/image.h"
+#include "sanitized.h"
 #include "test_paths.h"
 #include "test_support.h"
 
@@ -42,17 +43,7 @@ namespace {
 // slower: the four tests of issue 20 paced by wall-clock sleeps (a Shift
 // drag's steps, a regrade's settling time, a key burst 40 ms apart, the split's
 // second pane) failed there and run in the Release suite only, saying so.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using test::kSanitized;
 
 using test::TempDir;
 

@@ -1,5 +1,7 @@
 #include "untrusted_harness.h"
 
+#include "sanitized.h"
+
 #include "io/message_text.h"
 
 #include <gtest/gtest.h>
@@ -9,17 +11,8 @@
 
 namespace m3055::test {
 
-#if defined(__SANITIZE_ADDRESS__)
-const double kSanitizerSlack = 6.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-const double kSanitizerSlack = 6.0;
-#else
-const double kSanitizerSlack = 1.0;
-#endif
-#else
-const double kSanitizerSlack = 1.0;
-#endif
+// Processes run several times slower and larger under the sanitizers.
+const double kSanitizerSlack = kSanitized ? 6.0 : 1.0;
 
 void expect_within(const RunResult& run, const Bounds& bounds) {
     EXPECT_LE(run.seconds, bounds.seconds * kSanitizerSlack);
