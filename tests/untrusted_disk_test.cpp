@@ -109,7 +109,7 @@ TEST(ShaderCache, UnwritableCacheRunsWithoutIt) {
 TEST(ShaderCache, BusErrorIsOneLineNamingTheCache) {
     TempDir dir;
     // Slow enough to be inside the render when the signal lands.
-    write_stalling_scene(dir.file("slow.json"), 512, 320, 20000);
+    write_stalling_scene(dir.file("slow.json"));
     const auto before = snapshot(dir.path());
     const WithShaderCache on("");  // so that the line can name it
     Running render({"render", "--scene", dir.file("slow.json"), "--out", dir.file("o.png")});

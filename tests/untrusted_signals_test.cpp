@@ -80,7 +80,7 @@ TEST_P(RenderSignal, DuringTheWriteRemovesTemporariesAndKeepsOldFiles) {
 TEST_P(RenderSignal, DuringASlowSceneEndsWithoutFinishingIt) {
     const int signal = GetParam();
     TempDir dir;
-    write_stalling_scene(dir.file("slow.json"), 512, 320, 20000);
+    write_stalling_scene(dir.file("slow.json"));
     const auto before = snapshot(dir.path());
     Running render({"render", "--scene", dir.file("slow.json"), "--out", dir.file("o.png")});
     ASSERT_TRUE(render.wait_for_gl_driver()) << "the render ended, or never made its context";
@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(Untrusted, RenderSignal, ::testing::Values(SIGINT, SIGT
 TEST(BatchSignal, SigtermDuringASlowSceneKeepsWhatWasWrittenAndEndsAtOnce) {
     TempDir dir;
     write_scene(dir.file("quick.json"));
-    write_stalling_scene(dir.file("slow.json"), 512, 320, 20000);
+    write_stalling_scene(dir.file("slow.json"));
     write_text(dir.file("m.json"), R"([{"scene": "quick.json", "out": "quick.png", "raw": "quick.pfm"},
         {"scene": "slow.json", "out": "slow.png"}, {"scene": "quick.json", "out": "after.png"}])");
     Running batch({"batch", dir.file("m.json")});

@@ -47,7 +47,9 @@ void write_scene(const std::string& path, const std::string& name = "spec_exampl
 
 // A legal scene that stalls a renderer (issue 11, class 10): `spheres`
 // overlapping screen-filling translucent spheres under 16 spot lights. 20 000
-// take minutes at 512 x 320, 100 000 (the object limit) hours.
-void write_stalling_scene(const std::string& path, int width = 512, int height = 320, int spheres = 100000);
+// take minutes at 512 x 320, far over any time budget the tests give. (The
+// object limit, 100 000, took 8 s to load in the sanitizer build before a
+// budget's clock starts; scene_loader_test checks the limit itself.)
+void write_stalling_scene(const std::string& path, int width = 512, int height = 320, int spheres = 20000);
 
 }  // namespace m3055::test
