@@ -425,14 +425,25 @@ async function wheelScrollsPanel(browser, base) {
   await sleep(800);
   await settle(page);
   const shot = async () => panelRows(await page.screenshot());
+  // The DevTools protocol answers a wheel event before the page has it (it
+  // goes by the compositor): count the canvas's wheel events, and wait for
+  // each to arrive before waiting for the explorer to draw it. Without this a
+  // CI run saw the screenshot taken before the notch reached the page.
+  await page.evaluate(() => {
+    window.wheelsSeen = 0;
+    document.getElementById('canvas').addEventListener('wheel', () => ++window.wheelsSeen);
+  });
+  const wheel = async (deltaY, n) => {
+    await page.mouse.wheel({ deltaY });
+    await page.waitForFunction((count) => window.wheelsSeen >= count, { timeout: 30000 }, n);
+    await settle(page);
+  };
   const before = await shot();
-  await page.mouse.wheel({ deltaY: 100 });  // one notch down, as Chromium reports a wheel's notch (100 px)
-  await settle(page);
+  await wheel(100, 1);  // one notch down, as Chromium reports a wheel's notch (100 px)
   const down = await page.screenshot();
   fs.writeFileSync(path.join(out, `${backend}-wheel-down.png`), down);
   const moved = rowsMovedUp(before, panelRows(down));
-  await page.mouse.wheel({ deltaY: -100 });
-  await settle(page);
+  await wheel(-100, 2);
   const back = await shot();
   const same = back.slice(PANEL.y0, PANEL.y1).every((row, i) => row === before[PANEL.y0 + i]);
   check(moved > 0 && moved < 200, `${backend}: a wheel notch down over the side panel moves its rows up (by ${moved} px)`);
