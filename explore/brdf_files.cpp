@@ -1,11 +1,13 @@
 #include "explore/brdf_files.h"
 
 #include "brdf_file/brdf_model.h"
+#include "explore/edits.h"
 #include "explore/operations.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 namespace m3055::explore {
@@ -32,43 +34,51 @@ std::string brdf_path_of(const Material& material) {
     return model ? model->path : std::string();
 }
 
-std::string glsl_error(const ExplorerState& state, const Material& material) {
-    return state.brdf_compile_check ? state.brdf_compile_check(material) : std::string();
+std::string glsl_error(const Explorer& e, const Material& material) {
+    const auto& check = e.session.platform.brdf_compile_check;
+    return check ? check(material) : std::string();
 }
 
-std::vector<Material*> users_of(ExplorerState& state, const std::string& path) {
-    std::vector<Material*> users;
-    for (Object& object : state.scene.objects)
-        if (brdf_path_of(object.material) == path) users.push_back(&object.material);
-    if (brdf_path_of(state.material_b) == path) users.push_back(&state.material_b);
+// The objects (by index) and B (kMaterialB) whose material comes from `path`.
+std::vector<int> users_of(const Explorer& e, const std::string& path) {
+    std::vector<int> users;
+    const std::vector<Object>& objects = e.doc.scene.objects;
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        if (brdf_path_of(objects[i].material) == path) users.push_back(int(i));
+    if (brdf_path_of(e.doc.material_b) == path) users.push_back(kMaterialB);
     return users;
 }
 
-// Re-reads `path` for every material using it; all or none change.
-void reload(ExplorerState& state, const std::string& path) {
-    const std::vector<Material*> users = users_of(state, path);
+const Material& material_at(const Explorer& e, int user) {
+    return user == kMaterialB ? e.doc.material_b : e.doc.scene.objects[std::size_t(user)].material;
+}
+
+// Re-reads `path` for every material using it; all or none change (one undo step).
+void reload(Explorer& e, const std::string& path) {
+    const std::vector<int> users = users_of(e, path);
     if (users.empty()) return;
+    Messages& messages = e.session.messages;
     std::vector<Material> fresh;
     try {
-        for (const Material* m : users) fresh.push_back(reload_brdf_material(*m, path));
-        const std::string error = glsl_error(state, fresh.front());
+        for (int user : users) fresh.push_back(reload_brdf_material(material_at(e, user), path));
+        const std::string error = glsl_error(e, fresh.front());
         if (!error.empty()) {
             retire_brdf_model(fresh.front().model());  // or no general program compiles again
-            state.brdf_error = error;
-            state.brdf_error_path = path;
-            state.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
+            messages.brdf_error = error;
+            messages.brdf_path = path;
+            messages.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
             return;
         }
-    } catch (const std::exception& e) {  // BrdfError: "FILE:LINE: problem"
-        state.brdf_error = e.what();
-        state.brdf_error_path = path;
-        state.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
+    } catch (const std::exception& error) {  // BrdfError: "FILE:LINE: problem"
+        messages.brdf_error = error.what();
+        messages.brdf_path = path;
+        messages.status = "not reloaded " + path + ": an error (Material section); the last version that compiled stays";
         return;
     }
-    for (std::size_t i = 0; i < users.size(); ++i) *users[i] = fresh[i];
-    state.brdf_error.clear();
-    note_edit(state, "reload " + file_name(path));
-    state.status = "reloaded " + path;
+    for (std::size_t i = 0; i < users.size(); ++i)
+        edit_document(e, {MaterialEdit{users[i], material_at(e, users[i]), fresh[i]}, "reload " + file_name(path)});
+    messages.brdf_error.clear();
+    messages.status = "reloaded " + path;
 }
 
 }  // namespace
@@ -80,62 +90,65 @@ bool is_brdf_path(const std::string& path) {
     return extension == ".brdf";
 }
 
-bool open_brdf(ExplorerState& state, const std::string& path) {
-    Material* target = selected_material(state);
+bool open_brdf(Explorer& e, const std::string& path) {
+    const Material* target = selected_material(e);
     std::string error = target ? "" : "no object to apply " + path + " to";
     std::string model_path;
+    std::optional<Material> fresh;
     if (target) {
         try {
             const BrdfModel& model = load_brdf_model(path);
-            const Material fresh(*model.spec);  // the file's defaults
-            error = glsl_error(state, fresh);
-            if (error.empty()) *target = fresh;
-            else retire_brdf_model(*model.spec);
+            fresh.emplace(*model.spec);  // the file's defaults
+            error = glsl_error(e, *fresh);
+            if (!error.empty()) retire_brdf_model(*model.spec);
             model_path = model.path;
-        } catch (const std::exception& e) {
-            error = e.what();
+        } catch (const std::exception& exception) {
+            error = exception.what();
         }
     }
+    Messages& messages = e.session.messages;
     if (!error.empty()) {
-        state.brdf_error = state.load_error = error;
-        state.brdf_error_path = path;
+        messages.brdf_error = messages.load_error = error;
+        messages.brdf_path = path;
         return false;
     }
-    state.brdf_stamps[model_path] = stamp(model_path);  // watched from now on
-    state.brdf_error.clear();
-    note_edit(state, "open " + file_name(path));
-    state.status = "opened " + path + " on object " + std::to_string(state.selected_object);
+    e.session.brdf_watch.stamps[model_path] = stamp(model_path);  // watched from now on
+    messages.brdf_error.clear();
+    const int object = e.view.selected_object;
+    edit_document(e, {MaterialEdit{object, *target, *fresh}, "open " + file_name(path)});
+    messages.status = "opened " + path + " on object " + std::to_string(object);
     return true;
 }
 
-std::vector<std::string> brdf_files_in_use(const ExplorerState& state) {
+std::vector<std::string> brdf_files_in_use(const Explorer& e) {
     std::vector<std::string> paths;
     auto note = [&paths](const Material& m) {
         const std::string path = brdf_path_of(m);
         if (!path.empty() && std::find(paths.begin(), paths.end(), path) == paths.end()) paths.push_back(path);
     };
-    for (const Object& object : state.scene.objects) note(object.material);
-    note(state.material_b);
+    for (const Object& object : e.doc.scene.objects) note(object.material);
+    note(e.doc.material_b);
     return paths;
 }
 
-bool poll_brdf_files(ExplorerState& state, double now) {
+bool poll_brdf_files(Explorer& e, double now) {
+    BrdfWatch& watch = e.session.brdf_watch;
     // Found by the last poll, shown as "reloading FILE..." since: reload them now.
-    if (!state.brdf_reload_pending.empty()) {
-        for (const std::string& path : state.brdf_reload_pending) reload(state, path);
-        state.brdf_reload_pending.clear();
+    if (!watch.reload_pending.empty()) {
+        for (const std::string& path : watch.reload_pending) reload(e, path);
+        watch.reload_pending.clear();
         return true;
     }
-    if (now < state.brdf_next_poll) return false;
-    state.brdf_next_poll = now + kBrdfPollSeconds;
-    for (const std::string& path : brdf_files_in_use(state)) {
+    if (now < watch.next_poll) return false;
+    watch.next_poll = now + kBrdfPollSeconds;
+    for (const std::string& path : brdf_files_in_use(e)) {
         const std::string current = stamp(path);
-        const auto [seen, first_time] = state.brdf_stamps.emplace(path, current);
+        const auto [seen, first_time] = watch.stamps.emplace(path, current);
         if (first_time || seen->second == current) continue;
         seen->second = current;
-        state.brdf_reload_pending.push_back(path);
+        watch.reload_pending.push_back(path);
     }
-    return !state.brdf_reload_pending.empty();
+    return !watch.reload_pending.empty();
 }
 
 }  // namespace m3055::explore

@@ -1,13 +1,13 @@
-// The explorer's .brdf files (issue 13): File > Open BRDF and a drop apply a
+// The explorer's .brdf files: File > Open BRDF and a drop apply a
 // file to the selected object, and the files in use are watched (their mtime
 // and size polled twice a second: one stat each) and re-read when saved,
 // keeping the current parameter values. A parse or GLSL error leaves the
 // materials as they were (the last good version keeps rendering) and is kept
-// in state.brdf_error, in the file's own line numbers, until the file is
-// fixed. No ImGui and no GL here: the GLSL check is state.brdf_compile_check.
+// in messages.brdf_error, in the file's own line numbers, until the file is
+// fixed. No ImGui and no GL here: the GLSL check is the platform's brdf_compile_check.
 #pragma once
 
-#include "explore/state.h"
+#include "explore/explorer.h"
 
 #include <string>
 #include <vector>
@@ -20,18 +20,18 @@ inline constexpr double kBrdfPollSeconds = 0.5;
 bool is_brdf_path(const std::string& path);
 
 // Applies `path` to the selected object, with the file's defaults (one undo
-// step "open NAME"). On a parse or GLSL error: state.brdf_error and
-// state.load_error are set, nothing else changes, false.
-bool open_brdf(ExplorerState& state, const std::string& path);
+// step "open NAME"). On a parse or GLSL error: messages.brdf_error and
+// load_error are set, nothing else changes, false.
+bool open_brdf(Explorer& explorer, const std::string& path);
 
 // The .brdf files the scene's materials and the compare's B use, each once.
-std::vector<std::string> brdf_files_in_use(const ExplorerState& state);
+std::vector<std::string> brdf_files_in_use(const Explorer& explorer);
 
 // At most every kBrdfPollSeconds (`now` in seconds): each file in use whose
-// mtime or size changed is noted in state.brdf_reload_pending (a frame shows
+// mtime or size changed is noted in brdf_watch.reload_pending (a frame shows
 // "reloading FILE..."); the next call re-reads and checks them, and on success
 // every material using one is reloaded (reload_brdf_material: values kept) and
 // the status says "reloaded FILE". Returns true when there is something new to show.
-bool poll_brdf_files(ExplorerState& state, double now);
+bool poll_brdf_files(Explorer& explorer, double now);
 
 }  // namespace m3055::explore

@@ -9,10 +9,10 @@ std::string file_name_of(const std::string& path) {
 }
 }  // namespace
 
-std::string busy_line(const ExplorerState& state, std::size_t deferred) {
-    if (!state.brdf_reload_pending.empty()) {
+std::string busy_line(const BrdfWatch& watch, std::size_t deferred) {
+    if (!watch.reload_pending.empty()) {
         std::string files;
-        for (const std::string& path : state.brdf_reload_pending) files += (files.empty() ? "" : ", ") + file_name_of(path);
+        for (const std::string& path : watch.reload_pending) files += (files.empty() ? "" : ", ") + file_name_of(path);
         return "reloading " + files + "...";
     }
     if (deferred > 0) return "compiling...";

@@ -1,11 +1,10 @@
-// What the explorer is busy with, for the line beside the menu (issue 20,
-// item 9): "reloading FILE..." between noticing a changed .brdf file and
+// What the explorer is busy with, for the line beside the menu: "reloading FILE..." between noticing a changed .brdf file and
 // reloading it (a frame shows it first: explore/brdf_files.h), "compiling..."
 // while a model's own program waits to be built (the display meanwhile draws
 // with the general program, the same pixels: explore/display_renderers.h).
 #pragma once
 
-#include "explore/state.h"
+#include "explore/session.h"
 
 #include <cstddef>
 #include <string>
@@ -13,6 +12,6 @@
 namespace m3055::explore {
 
 // "" when idle; `deferred`: programs waiting to be compiled.
-std::string busy_line(const ExplorerState& state, std::size_t deferred);
+std::string busy_line(const BrdfWatch& watch, std::size_t deferred);
 
 }  // namespace m3055::explore

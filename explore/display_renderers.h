@@ -8,7 +8,7 @@
 // the Renderer's; the caller waits for the GPU (glFinish) as it needs.
 #pragma once
 
-#include "explore/state.h"
+#include "explore/explorer.h"
 #include "frame/renderer.h"
 
 #include <cstddef>
@@ -23,7 +23,7 @@ inline constexpr double kIdleBeforeCompile = 0.12;
 void defer_compiles(Renderer& renderer);
 
 // A's scene, and B's compare scene when the split is on.
-void render_displays(const ExplorerState& state, Renderer& a, Renderer& b);
+void render_displays(const Explorer& explorer, Renderer& a, Renderer& b);
 
 // Specialized programs waiting to be compiled, on A and B together.
 std::size_t deferred_programs(const Renderer& a, const Renderer& b);
@@ -31,6 +31,6 @@ std::size_t deferred_programs(const Renderer& a, const Renderer& b);
 // After kIdleBeforeCompile s of no input: the first display with a program
 // waiting (A, then B) drawn again with its specialized program (the same
 // pixels); later frames use it. Returns whether it drew.
-bool render_specialized_when_idle(const ExplorerState& state, Renderer& a, Renderer& b);
+bool render_specialized_when_idle(const Explorer& explorer, Renderer& a, Renderer& b);
 
 }  // namespace m3055::explore

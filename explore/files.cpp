@@ -1,8 +1,8 @@
 #include "explore/files.h"
 
+#include "explore/edits.h"
 #include "explore/figure_scenes.h"
 #include "explore/operations.h"
-#include "explore/undo.h"
 #include "image/image.h"
 #include "scene/json_brdf.h"
 #include "scene/load.h"
@@ -16,124 +16,134 @@
 
 namespace m3055::explore {
 
-void set_scene(ExplorerState& state, const Scene& scene, const std::string& name) {
-    note_edit(state, "load " + name);
-    state.scene = scene;
-    state.camera_home = scene.camera;
-    state.scene_name = name;
-    state.selected_object = 0;
-    state.selected_light = 0;
-    if (!scene.objects.empty()) state.material_b = scene.objects[0].material;
-    state.b_edited = false;
+void set_scene(Explorer& e, const Scene& scene, const std::string& name, const std::string& action) {
+    auto content = std::make_shared<DocumentContent>();
+    content->scene = scene;
+    content->camera_home = scene.camera;
+    content->name = name;
+    content->material_b = scene.objects.empty() ? e.doc.material_b : scene.objects[0].material;
+    content->b_edited = false;
+    edit_document(e, {DocumentEdit{content_of(e.doc), std::move(content)}, action.empty() ? "load " + name : action});
+    e.view.selected_object = 0;
+    e.view.selected_light = 0;
 }
 
-bool load_scene(ExplorerState& state, const std::string& path) {
+bool apply(Explorer& e, const command::LoadScene& c) {
+    Messages& messages = e.session.messages;
+    Scene scene;
     try {
-        set_scene(state, load_scene_file(path), path);
-        state.scene_file = path;
-        mark_saved(state);
-        state.save_dir = std::filesystem::path(path).parent_path().string();
-        state.status = "loaded " + path;
-        state.error.clear();
-        state.load_error.clear();
-        return true;
-    } catch (const std::exception& e) {  // SceneError names file and JSON path
-        state.error = state.load_error = e.what();
+        scene = load_scene_file(c.path);
+    } catch (const std::exception& error) {  // SceneError names file and JSON path
+        messages.error = messages.load_error = error.what();
+        if (c.error_dialog) e.view.dialog = Dialog::load_error;
         return false;
     }
+    set_scene(e, scene, c.path);
+    e.doc.file = c.path;
+    mark_saved(e.doc);
+    e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
+    messages.status = "loaded " + c.path;
+    messages.error.clear();
+    messages.load_error.clear();
+    return true;
 }
 
-bool load_figure(ExplorerState& state, const std::string& name) {
+bool apply(Explorer& e, const command::LoadFigure& c) {
     for (const FigureScene& figure : figure_scenes()) {
-        if (figure.name != name) continue;
+        if (figure.name != c.name) continue;
         try {
-            const std::string source = "scenes/" + name + ".json";
-            set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
-            // Built in: unsaved once edited; Ctrl+S asks where to save
-            // (proposing NAME.json, never the file of the scene it replaced).
-            state.scene_file.clear();
-            mark_saved(state);
-            note_edit(state, "figure preset " + name);
-            state.status = "figure preset " + name;
-            state.error.clear();
+            const std::string source = "scenes/" + c.name + ".json";
+            // Built in: no file of its own, unsaved once edited; Ctrl+S asks
+            // where to save (proposing NAME.json, never the file of the scene it replaced).
+            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source), source,
+                      "figure preset " + c.name);
+            mark_saved(e.doc);
+            e.session.messages.status = "figure preset " + c.name;
+            e.session.messages.error.clear();
             return true;
-        } catch (const std::exception& e) {
-            state.error = e.what();
+        } catch (const std::exception& error) {
+            e.session.messages.error = error.what();
             return false;
         }
     }
-    state.error = "no figure preset named '" + name + "'";
+    e.session.messages.error = "no figure preset named '" + c.name + "'";
     return false;
 }
 
 namespace {
 
 // The text of a saved scene file (Save, a screenshot's JSON): .brdf files
-// named as the platform asks (ExplorerState::Platform::brdf_paths_relative_to).
-std::string scene_file_text(const ExplorerState& state) {
+// named as the platform asks (Platform::brdf_paths_relative_to).
+std::string scene_file_text(const Explorer& e) {
     std::optional<scene_json::BrdfPathsRelativeTo> relative;
-    if (!state.platform.brdf_paths_relative_to.empty()) relative.emplace(state.platform.brdf_paths_relative_to);
-    return scene_to_json(state.scene).dump(2) + "\n";
+    if (!e.session.platform.brdf_paths_relative_to.empty()) relative.emplace(e.session.platform.brdf_paths_relative_to);
+    return scene_to_json(e.doc.scene).dump(2) + "\n";
+}
+
+std::string full_path(const std::string& path) {
+    std::error_code ec;
+    const auto full = std::filesystem::absolute(path, ec);
+    return ec ? path : full.string();
 }
 
 }  // namespace
 
-bool save_scene(ExplorerState& state, const std::string& path) {
+bool apply(Explorer& e, const command::SaveTo& c) {
     try {
-        const std::string text = scene_file_text(state);
-        write_file_atomic(path, text.data(), text.size());
-        if (state.platform.file_written) state.platform.file_written(path);
-        state.scene_file = path;
-        state.overwrite_warned.clear();
-        state.save_dir = std::filesystem::path(path).parent_path().string();
-        state.scene_name = std::filesystem::path(path).filename().string();
-        commit_edits(state);  // the edits before the save are a step; the save itself is none
-        state.history.set_head_file(state.scene_name, path);
-        mark_saved(state);
-        std::error_code ec;
-        const auto full = std::filesystem::absolute(path, ec);
-        state.status = "saved " + (ec ? path : full.string());
+        const std::string text = scene_file_text(e);
+        write_file_atomic(c.path, text.data(), text.size());
+        if (e.session.platform.file_written) e.session.platform.file_written(c.path);
+        explore::commit_edits(e.doc);  // the edits before the save are a step; the save itself is none
+        e.doc.file = c.path;
+        e.doc.name = std::filesystem::path(c.path).filename().string();
+        mark_saved(e.doc);
+        e.session.files.overwrite_warned.clear();
+        e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
+        e.session.messages.status = "saved " + full_path(c.path);
         return true;
-    } catch (const std::exception& e) {
-        state.error = e.what();
+    } catch (const std::exception& error) {
+        e.session.messages.error = error.what();
         return false;
     }
 }
 
-void save_or_ask(ExplorerState& state) {
-    if (state.scene_file.empty()) request_save_as(state);
-    else save_scene(state, state.scene_file);
+bool apply(Explorer& e, const command::Save&) {
+    if (e.doc.file.empty()) return apply(e, command::AskSaveAs{});
+    return apply(e, command::SaveTo{e.doc.file});
 }
 
-std::string save_as_proposal(const ExplorerState& state) {
-    if (!state.scene_file.empty()) return state.scene_file;
-    std::string name = state.save_name;
-    const std::filesystem::path from(state.scene_name);
+std::string save_as_proposal(const Explorer& e) {
+    if (!e.doc.file.empty()) return e.doc.file;
+    std::string name = e.session.files.save_name;
+    const std::filesystem::path from(e.doc.name);
     if (from.extension() == ".json") name = from.filename().string();  // a figure preset: fig10.json
-    return state.save_dir.empty() ? name : (std::filesystem::path(state.save_dir) / name).string();
+    const std::string& dir = e.session.files.save_dir;
+    return dir.empty() ? name : (std::filesystem::path(dir) / name).string();
 }
 
-void request_save_as(ExplorerState& state) {
-    state.save_path = save_as_proposal(state);
-    state.overwrite_warned.clear();
-    state.save_as_requested = true;
+bool apply(Explorer& e, const command::AskSaveAs&) {
+    e.view.save_path = save_as_proposal(e);
+    e.session.files.overwrite_warned.clear();
+    e.view.dialog = Dialog::save_as;
+    return true;
 }
 
-bool save_as(ExplorerState& state, const std::string& path) {
+bool apply(Explorer& e, const command::SaveAs& c) {
     std::error_code ec;
-    const bool own = !state.scene_file.empty() && std::filesystem::equivalent(path, state.scene_file, ec);
-    if (!own && std::filesystem::exists(path, ec) && state.overwrite_warned != path) {
-        state.overwrite_warned = path;
-        state.error = path + " exists and is not this scene's file: Save again to overwrite it";
+    const bool own = !e.doc.file.empty() && std::filesystem::equivalent(c.path, e.doc.file, ec);
+    if (!own && std::filesystem::exists(c.path, ec) && e.session.files.overwrite_warned != c.path) {
+        e.session.files.overwrite_warned = c.path;
+        e.session.messages.error = c.path + " exists and is not this scene's file: Save again to overwrite it";
         return false;
     }
-    return save_scene(state, path);
+    return apply(e, command::SaveTo{c.path});
 }
 
-std::string next_screenshot_path(const ExplorerState& state) {
+std::string next_screenshot_path(const Explorer& e) {
     namespace fs = std::filesystem;
-    const std::string stem = state.scene_file.empty() ? "m3055" : fs::path(state.scene_file).stem().string();
-    const fs::path dir = state.screenshot_dir.empty() ? fs::path(".") : fs::path(state.screenshot_dir);
+    const std::string stem = e.doc.file.empty() ? "m3055" : fs::path(e.doc.file).stem().string();
+    const std::string& folder = e.session.files.screenshot_dir;
+    const fs::path dir = folder.empty() ? fs::path(".") : fs::path(folder);
     for (int n = 1;; ++n) {
         char number[16];
         std::snprintf(number, sizeof number, "-%04d", n);
@@ -159,27 +169,25 @@ std::string json_beside(const std::string& png_path) {
 // same Renderer, the same read_display and write_png), and the scene beside it.
 // A script's `screenshot PATH` names the file; F12 takes the next free
 // NAME-0001.png in the chosen folder, so nothing is overwritten.
-void take_screenshot(ExplorerState& state, Renderer& renderer) {
-    const std::string png = state.screenshot_path.empty() ? next_screenshot_path(state) : state.screenshot_path;
-    state.screenshot_path.clear();
+void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path) {
+    const std::string png = path.empty() ? next_screenshot_path(e) : path;
     try {
         // The screenshot waits for the specialized program (as `m3055 render` uses).
         const bool deferring = renderer.defers_compiles();
         renderer.set_defer_compiles(false);
-        renderer.render(state.scene);
+        renderer.render(e.doc.scene);
         renderer.set_defer_compiles(deferring);
         write_png(png, renderer.read_display());
-        const std::string json = json_beside(png), text = scene_file_text(state);
+        const std::string json = json_beside(png), text = scene_file_text(e);
         write_file_atomic(json, text.data(), text.size());
-        if (state.platform.file_written) {
-            state.platform.file_written(png);
-            state.platform.file_written(json);
+        if (e.session.platform.file_written) {
+            e.session.platform.file_written(png);
+            e.session.platform.file_written(json);
         }
-        std::error_code ec;
-        const std::string full = std::filesystem::absolute(png, ec).string();
-        state.status = "screenshot " + (ec ? png : full) + " + " + json_beside(ec ? png : full);
-    } catch (const std::exception& e) {
-        state.error = e.what();
+        const std::string full = full_path(png);
+        e.session.messages.status = "screenshot " + full + " + " + json_beside(full);
+    } catch (const std::exception& error) {
+        e.session.messages.error = error.what();
     }
 }
 

@@ -1,8 +1,5 @@
 #include "explore/keys.h"
 
-#include "explore/files.h"
-#include "explore/operations.h"
-#include "explore/undo.h"
 
 #include <cctype>
 
@@ -14,12 +11,12 @@ namespace {
 const char* const kFigureKeys[10] = {"spec_example", "fig05", "fig06", "fig07", "fig08",
                                      "fig09",        "fig10", "fig11", "fig12", "fig13"};
 
-bool control_shortcut(ExplorerState& state, const KeyPress& press) {
+bool control_shortcut(CommandQueue& commands, const KeyPress& press) {
     switch (press.key) {
-        case Key::z: return press.shift ? redo(state) : undo(state);
-        case Key::y: return redo(state);
-        case Key::s: return save_or_ask(state), true;
-        case Key::digit: return load_figure(state, kFigureKeys[press.digit]);
+        case Key::z: return press.shift ? (commands.push(command::Redo{}), true) : (commands.push(command::Undo{}), true);
+        case Key::y: return commands.push(command::Redo{}), true;
+        case Key::s: return commands.push(command::Save{}), true;
+        case Key::digit: return commands.push(command::LoadFigure{kFigureKeys[press.digit]}), true;
         default: return false;
     }
 }
@@ -28,22 +25,24 @@ bool control_shortcut(ExplorerState& state, const KeyPress& press) {
 
 const char* figure_for_digit(int digit) { return digit >= 0 && digit <= 9 ? kFigureKeys[digit] : ""; }
 
-bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus& focus) {
+bool handle_shortcut(Explorer& explorer, const KeyPress& press, const KeyFocus& focus) {
     if (focus.text_input) return false;  // the field's own editing (and its own Ctrl+Z)
     if (press.key == Key::digit && (press.digit < 0 || press.digit > 9)) return false;
-    if (press.ctrl) return control_shortcut(state, press);
+    CommandQueue& commands = explorer.commands;
+    if (press.ctrl) return control_shortcut(commands, press);
     if (focus.wants_keyboard || focus.item_active) return false;
     switch (press.key) {
         case Key::digit: {  // typed, not a shortcut: a number meant for a field must not replace the scene
             const std::string digit = std::to_string(press.digit);
-            state.status = "key " + digit + " does nothing: Ctrl+" + digit + " (or Objects > Fig. buttons) loads " +
-                           kFigureKeys[press.digit] + ", undoably";
+            explorer.session.messages.status = "key " + digit + " does nothing: Ctrl+" + digit +
+                                               " (or Objects > Fig. buttons) loads " + kFigureKeys[press.digit] +
+                                               ", undoably";
             return false;
         }
-        case Key::escape: state.quit_requested = state.platform.can_quit; return true;
-        case Key::r: reset_camera(state); return true;
-        case Key::f1: state.show_panels = !state.show_panels; return true;
-        case Key::f12: state.screenshot_requested = true; return true;
+        case Key::escape: commands.push(command::AskQuit{}); return true;
+        case Key::r: commands.push(command::ResetCamera{}); return true;
+        case Key::f1: commands.push(command::TogglePanels{}); return true;
+        case Key::f12: commands.push(command::Screenshot{}); return true;
         default: return false;
     }
 }

@@ -4,7 +4,7 @@
 // KeyPress) and --script's `key`. No GLFW here.
 #pragma once
 
-#include "explore/state.h"
+#include "explore/explorer.h"
 
 #include <optional>
 #include <string>
@@ -35,8 +35,9 @@ struct KeyFocus {
 // A plain digit never loads anything, in any mode (a number typed with no
 // field active must not replace the scene): it says in the status line that
 // Ctrl+digit loads Fig. 5-13 (1-9) or the spec example (0), undoably. None act
-// while a text field is being typed into. Returns true when the key did something.
-bool handle_shortcut(ExplorerState& state, const KeyPress& press, const KeyFocus& focus = {});
+// while a text field is being typed into. The key's command goes on
+// explorer.commands; returns true when it gave one.
+bool handle_shortcut(Explorer& explorer, const KeyPress& press, const KeyFocus& focus = {});
 
 // The figure preset a digit key loads: "spec_example" (0), "fig05" (1) ... "fig13" (9).
 const char* figure_for_digit(int digit);

@@ -1,8 +1,8 @@
-// The scene's edits (operations.h). Each one changes the state and calls
-// note_edit, which names the undo step and asks for a render.
+// The document's commands (operations.h). Each builds the typed edit of the
+// part it changes and records it (edits.h), which names the undo step.
 #include "explore/operations.h"
 
-#include "explore/change_label.h"
+#include "explore/edits.h"
 #include "explore/shapes.h"
 #include "geometry/mesh.h"
 #include "models/model_table.h"
@@ -18,216 +18,206 @@ namespace m3055::explore {
 
 namespace {
 
-void note(ExplorerState& state, const PendingEdit& edit) {
-    if (!edit.empty()) note_edit(state, edit.what, edit.from, edit.to);
+bool valid_index(int index, std::size_t size) { return index >= 0 && static_cast<std::size_t>(index) < size; }
+
+void clamp_light_selection(Explorer& e) {
+    const int lights = static_cast<int>(e.doc.scene.lights.size());
+    e.view.selected_light = std::clamp(e.view.selected_light, 0, std::max(0, lights - 1));
 }
 
-const ModelSpec& model_named(const std::string& name) {
-    const ModelSpec* model = model_table().find(name);
-    if (!model) throw std::runtime_error("unknown model '" + name + "'");
-    return *model;
-}
-
-// A scene that differs from the current one in one part: named after what
-// differs, then taken.
-void take_scene(ExplorerState& state, Scene edited) {
-    note(state, describe_change(state.scene, edited));
-    state.scene = std::move(edited);
+// The typed edits that take `before` to `after`, part by part (a script's
+// `set PATH VALUE` names the field it set); a change of the object count or
+// of the ambient colour replaces the whole document.
+std::vector<EditValue> edits_between(const Explorer& e, const Scene& before, const Scene& after) {
+    std::vector<EditValue> edits;
+    if (before.objects.size() != after.objects.size() || before.ambient != after.ambient) {
+        auto content = std::make_shared<DocumentContent>(*content_of(e.doc));
+        content->scene = after;
+        return {DocumentEdit{content_of(e.doc), std::move(content)}};
+    }
+    edits.push_back(DisplayEdit{before.display, after.display});
+    edits.push_back(BackgroundEdit{before.background, after.background});
+    edits.push_back(CameraEdit{before.camera, after.camera});
+    if (before.lights.size() == after.lights.size()) {
+        for (std::size_t i = 0; i < after.lights.size(); ++i)
+            edits.push_back(LightEdit{int(i), before.lights[i], after.lights[i]});
+    } else {
+        edits.push_back(LightListEdit{before.lights, after.lights});
+    }
+    for (std::size_t i = 0; i < after.objects.size(); ++i)
+        edits.push_back(ObjectEdit{int(i), before.objects[i], after.objects[i]});
+    return edits;
 }
 
 }  // namespace
 
-void note_edit(ExplorerState& state, const std::string& what, const std::string& from, const std::string& to) {
-    state.status.clear();  // the status line tells the last action: an edit replaces "redid ...", "saved ..."
-    PendingEdit& pending = state.pending;
-    if (pending.what != what) {
-        pending.what = what;
-        pending.from = from;
-    }
-    pending.to = to;
-    state.changed();
+bool edit_document(Explorer& e, Edit edit) {
+    if (!record_edit(e.doc, std::move(edit))) return false;
+    e.session.messages.status.clear();  // the status line tells the last action: an edit replaces "redid ..."
+    e.session.render_needed = true;
+    return true;
 }
+
+bool commit_edits(Explorer& e) { return explore::commit_edits(e.doc); }
 
 // ---- Materials --------------------------------------------------------------------------
 
-void edit_material(ExplorerState& state, const Material& edited, const std::string& action) {
-    if (!selected_material(state)) return;
-    Material& material = state.scene.objects[std::size_t(state.selected_object)].material;
-    if (!action.empty()) {
-        material = edited;
-        return note_edit(state, action);
+bool apply(Explorer& e, const command::SetMaterial& c) {
+    if (c.object == kMaterialB) {
+        e.doc.b_edited = true;  // the user's choice of B: the split keeps it
+        return edit_document(e, {MaterialEdit{kMaterialB, e.doc.material_b, c.value},
+                                 c.action.empty() ? "" : "B " + c.action});
     }
-    Scene scene = state.scene;
-    scene.objects[std::size_t(state.selected_object)].material = edited;
-    take_scene(state, std::move(scene));
+    if (!valid_index(c.object, e.doc.scene.objects.size())) return false;
+    const Material& current = e.doc.scene.objects[std::size_t(c.object)].material;
+    return edit_document(e, {MaterialEdit{c.object, current, c.value}, c.action});
 }
 
-void edit_material_b(ExplorerState& state, const Material& edited, const std::string& action) {
-    if (!action.empty()) note_edit(state, "B " + action);
-    else note(state, describe_change(state.material_b, edited));
-    state.material_b = edited;
-    state.b_edited = true;
+Material with_model_named(const Material& material, const std::string& name) {
+    const ModelSpec* model = model_table().find(name);
+    if (!model) throw std::runtime_error("unknown model '" + name + "'");
+    return with_model(material, *model);
 }
 
-void set_model(ExplorerState& state, const std::string& model_name) {
-    const ModelSpec& model = model_named(model_name);
-    const Material* material = selected_material(state);
-    if (!material) throw std::runtime_error("no object");
-    edit_material(state, with_model(*material, model));
-}
-
-void set_model_b(ExplorerState& state, const std::string& model_name) {
-    edit_material_b(state, with_model(state.material_b, model_named(model_name)));
-}
-
-bool rescale_weights_to_eq14(ExplorerState& state) {
-    const Material* material = selected_material(state);
-    if (!material) return false;
-    Material rescaled = *material;
-    if (!rescale_to_eq14(rescaled)) return false;
-    edit_material(state, rescaled, kEq14Action);
-    return true;
+bool eq14_rescaled(const Material& material, Material* rescaled) {
+    *rescaled = material;
+    return rescale_to_eq14(*rescaled);
 }
 
 // ---- Lights -----------------------------------------------------------------------------
 
-void edit_light(ExplorerState& state, int index, const Light& edited) {
-    if (index < 0 || index >= static_cast<int>(state.scene.lights.size())) return;
-    Scene scene = state.scene;
-    scene.lights[std::size_t(index)] = edited;
-    take_scene(state, std::move(scene));
-}
-
-void apply_light_preset(ExplorerState& state, LightPreset preset) {
-    try {
-        state.scene.lights = light_preset(preset);
-    } catch (const std::runtime_error& e) {  // the studio preset without colord-data
-        state.error = e.what();
-        return;
-    }
-    note_edit(state, std::string("light preset ") + preset_name(preset));  // as "figure preset fig05"
-    state.selected_light = 0;
-}
-
-bool add_light(ExplorerState& state) {
-    if (static_cast<int>(state.scene.lights.size()) >= kMaxExplorerLights) return false;
-    state.scene.lights.push_back(light_preset(LightPreset::single_key)[0]);
-    note_edit(state, "add light");
-    state.selected_light = static_cast<int>(state.scene.lights.size()) - 1;
+bool apply(Explorer& e, const command::SetLight& c) {
+    if (!valid_index(c.index, e.doc.scene.lights.size())) return false;
+    edit_document(e, {LightEdit{c.index, e.doc.scene.lights[std::size_t(c.index)], c.value}, ""});
     return true;
 }
 
-bool remove_light(ExplorerState& state, int index) {
-    auto& lights = state.scene.lights;
-    if (index < 0 || index >= static_cast<int>(lights.size())) return false;
-    lights.erase(lights.begin() + index);
-    note_edit(state, "remove light " + std::to_string(index));
-    state.selected_light = std::clamp(state.selected_light, 0, std::max(0, static_cast<int>(lights.size()) - 1));
+bool apply(Explorer& e, const command::ApplyLightPreset& c) {
+    std::vector<Light> lights;
+    try {
+        lights = light_preset(c.preset);
+    } catch (const std::runtime_error& error) {  // the studio preset without colord-data
+        e.session.messages.error = error.what();
+        return false;
+    }
+    edit_document(e, {LightListEdit{e.doc.scene.lights, std::move(lights)},
+                      std::string("light preset ") + preset_name(c.preset)});  // as "figure preset fig05"
+    e.view.selected_light = 0;
+    return true;
+}
+
+bool apply(Explorer& e, const command::AddLight&) {
+    std::vector<Light> lights = e.doc.scene.lights;
+    if (static_cast<int>(lights.size()) >= kMaxExplorerLights) return false;
+    lights.push_back(light_preset(LightPreset::single_key)[0]);
+    edit_document(e, {LightListEdit{e.doc.scene.lights, std::move(lights)}, "add light"});
+    e.view.selected_light = static_cast<int>(e.doc.scene.lights.size()) - 1;
+    return true;
+}
+
+bool apply(Explorer& e, const command::RemoveLight& c) {
+    std::vector<Light> lights = e.doc.scene.lights;
+    if (!valid_index(c.index, lights.size())) return false;
+    lights.erase(lights.begin() + c.index);
+    edit_document(e, {LightListEdit{e.doc.scene.lights, std::move(lights)}, "remove light " + std::to_string(c.index)});
+    clamp_light_selection(e);
     return true;
 }
 
 // ---- Objects ----------------------------------------------------------------------------
 
-void edit_object(ExplorerState& state, int index, const Object& edited) {
-    if (index < 0 || index >= static_cast<int>(state.scene.objects.size())) return;
-    Scene scene = state.scene;
-    scene.objects[std::size_t(index)] = edited;
-    take_scene(state, std::move(scene));
+bool apply(Explorer& e, const command::SetObject& c) {
+    if (!valid_index(c.index, e.doc.scene.objects.size())) return false;
+    edit_document(e, {ObjectEdit{c.index, e.doc.scene.objects[std::size_t(c.index)], c.value}, ""});
+    return true;
 }
 
-void add_object(ExplorerState& state, Shape shape) {
-    Object sphere;
-    if (Material* material = selected_material(state)) sphere.material = *material;
+bool apply(Explorer& e, const command::AddObject& c) {
+    const std::vector<Object>& objects = e.doc.scene.objects;
+    Object added;
+    if (const Material* material = selected_material(e)) added.material = *material;
     // Beside the right-most object (not counting floors), so the new one is
     // visible and does not overlap.
     double right = -1e300;
-    for (const Object& o : state.scene.objects)
+    for (const Object& o : objects)
         if (o.shape != Shape::plane) right = std::max(right, o.center.x + geometry::bounding_radius(o));
-    if (right > -1e300) sphere.center = {right + 0.25 + sphere.radius, 0.0, 0.0};
-    if (shape == Shape::plane) {  // a floor under everything
+    if (right > -1e300) added.center = {right + 0.25 + added.radius, 0.0, 0.0};
+    if (c.shape == Shape::plane) {  // a floor under everything
         double bottom = 0.0, reach = 1.0;
-        for (const Object& o : state.scene.objects) {
+        for (const Object& o : objects) {
             if (o.shape == Shape::plane) continue;
             bottom = std::min(bottom, o.center.y - geometry::bounding_radius(o));
             reach = std::max(reach, std::abs(o.center.x) + geometry::bounding_radius(o));
         }
-        sphere.center = {0.0, bottom, 0.0};
-        sphere.shape = Shape::plane;
-        sphere.size = 4.0 * reach;
+        added.center = {0.0, bottom, 0.0};
+        added.shape = Shape::plane;
+        added.size = 4.0 * reach;
     }
-    set_shape(sphere, shape);
-    state.scene.objects.push_back(sphere);
-    note_edit(state, std::string("add ") + to_string(shape));
-    state.selected_object = static_cast<int>(state.scene.objects.size()) - 1;
+    set_shape(added, c.shape);
+    const int index = static_cast<int>(objects.size());
+    edit_document(e, {ObjectInsert{index, std::move(added)}, std::string("add ") + to_string(c.shape)});
+    e.view.selected_object = index;
+    return true;
 }
 
-bool remove_object(ExplorerState& state, int index) {
-    auto& objects = state.scene.objects;
-    if (objects.size() <= 1 || index < 0 || index >= static_cast<int>(objects.size())) return false;
-    objects.erase(objects.begin() + index);
-    note_edit(state, "remove object " + std::to_string(index));
-    selected_material(state);  // clamps the selection
+bool apply(Explorer& e, const command::RemoveObject& c) {
+    const auto& objects = e.doc.scene.objects;
+    if (objects.size() <= 1 || !valid_index(c.index, objects.size())) return false;
+    edit_document(e, {ObjectErase{c.index, objects[std::size_t(c.index)]}, "remove object " + std::to_string(c.index)});
+    selected_material(e);  // clamps the selection
     return true;
 }
 
 // ---- Display and background -------------------------------------------------------------
 
-void edit_display(ExplorerState& state, const Display& edited) {
-    Scene scene = state.scene;
-    scene.display = edited;
-    take_scene(state, std::move(scene));
+bool apply(Explorer& e, const command::SetDisplay& c) {
+    edit_document(e, {DisplayEdit{e.doc.scene.display, c.value}, c.action});
+    return true;
 }
 
-void set_background(ExplorerState& state, const dvec3& colour) {
-    Scene scene = state.scene;
-    scene.background = colour;
-    take_scene(state, std::move(scene));
+bool apply(Explorer& e, const command::SetBackground& c) {
+    edit_document(e, {BackgroundEdit{e.doc.scene.background, c.value}, ""});
+    return true;
 }
 
-void set_display_m3055(ExplorerState& state) {
-    state.scene.display.width = 512;
-    state.scene.display.height = 320;
-    state.scene.display.bits = 5;
-    note_edit(state, "display M3055");
+Display m3055_display(const Display& from) {
+    Display d = from;
+    d.width = 512;
+    d.height = 320;
+    d.bits = 5;
+    return d;
 }
 
-void set_display_modern(ExplorerState& state, int width, int height) {
-    state.scene.display.width = std::clamp(width, 1, kMaxDisplaySize);
-    state.scene.display.height = std::clamp(height, 1, kMaxDisplaySize);
-    state.scene.display.bits = 8;
-    state.scene.display.dither = false;
-    note_edit(state, "display modern");
-}
-
-// ---- Camera (the moves: operations_camera.cpp) ------------------------------------------
-
-void edit_camera(ExplorerState& state, const Camera& edited) {
-    Scene scene = state.scene;
-    scene.camera = edited;
-    take_scene(state, std::move(scene));
+Display modern_display(const Display& from, int width, int height) {
+    Display d = from;
+    d.width = std::clamp(width, 1, kMaxDisplaySize);
+    d.height = std::clamp(height, 1, kMaxDisplaySize);
+    d.bits = 8;
+    d.dither = false;
+    return d;
 }
 
 // ---- A/B compare ------------------------------------------------------------------------
 
-void set_compare(ExplorerState& state, bool on) {
+bool apply(Explorer& e, const command::SetCompare& c) {
     // A B nobody has set yet starts as A (a metal against a metal, not an unrelated highlight).
-    const Material* a = selected_material(state);
-    if (on && !state.compare && !state.b_edited && a && !(state.material_b == *a)) {
-        state.material_b = *a;
-        note_edit(state, "B = copy of A (split on)");
-    }
-    state.compare = on;
-    state.changed();  // B is rendered (or not): no edit of the scene, no undo step
+    const Material* a = selected_material(e);
+    if (c.on && !e.view.compare && !e.doc.b_edited && a && !(e.doc.material_b == *a))
+        edit_document(e, {MaterialEdit{kMaterialB, e.doc.material_b, *a}, "B = copy of A (split on)"});
+    e.view.compare = c.on;
+    e.session.render_needed = true;  // B is rendered (or not): no edit of the document
+    return true;
 }
 
-void copy_a_to_b(ExplorerState& state) {
-    if (const Material* a = selected_material(state)) state.material_b = *a;
-    state.b_edited = true;  // the user's choice of B: the split keeps it
-    note_edit(state, "B = copy of A");
+bool apply(Explorer& e, const command::CopyAToB&) {
+    const Material* a = selected_material(e);
+    e.doc.b_edited = true;
+    if (a) edit_document(e, {MaterialEdit{kMaterialB, e.doc.material_b, *a}, "B = copy of A"});
+    return a != nullptr;
 }
 
-bool compare_fresnel(ExplorerState& state) {
-    const Material* selected = selected_material(state);
+bool apply(Explorer& e, const command::CompareFresnel&) {
+    const Material* selected = selected_material(e);
     if (!selected || selected->model().family != Family::metal || !selected->has("conductor")) return false;
     Material a = *selected;
     a.set_colour_spectrum(nullptr);  // a conductor is the colour now
@@ -235,20 +225,56 @@ bool compare_fresnel(ExplorerState& state) {
     a.set_choice("fresnel", "normal");
     Material b = a;
     b.set_choice("fresnel", "full");
-    // B and A in one pending edit: one undo step, named by the preset.
-    state.material_b = b;
-    state.b_edited = true;
-    edit_material(state, a, kFresnelPresetAction);
-    set_compare(state, true);
+    // B and A in one step, named by the preset.
+    e.doc.b_edited = true;
+    edit_document(e, {MaterialEdit{kMaterialB, e.doc.material_b, b}, kFresnelPresetAction});
+    edit_document(e, {MaterialEdit{e.view.selected_object, *selected, a}, kFresnelPresetAction});
+    e.view.compare = true;
+    e.session.render_needed = true;
     return true;
 }
 
 // ---- Any scene value --------------------------------------------------------------------
 
-void set_scene_value(ExplorerState& state, const std::string& path, const std::string& value) {
-    nlohmann::json doc = scene_to_json(state.scene);
-    apply_overrides(doc, {{path, value}}, "script");
-    take_scene(state, scene_from_json(doc, "script"));
+bool apply(Explorer& e, const command::SetSceneValue& c) {
+    nlohmann::json doc = scene_to_json(e.doc.scene);
+    apply_overrides(doc, {{c.path, c.value}}, "script");
+    const Scene after = scene_from_json(doc, "script");
+    for (EditValue& edit : edits_between(e, e.doc.scene, after)) edit_document(e, {std::move(edit), ""});
+    selected_material(e);
+    clamp_light_selection(e);
+    return true;
+}
+
+// ---- Undo and redo ----------------------------------------------------------------------
+
+namespace {
+// After the document moved back or forward: selections within it, one render.
+void after_history_move(Explorer& e) {
+    selected_material(e);
+    clamp_light_selection(e);
+    e.session.render_needed = true;
+}
+}  // namespace
+
+bool apply(Explorer& e, const command::Undo&) {
+    explore::commit_edits(e.doc);
+    if (!e.doc.history.can_undo()) return false;
+    const std::string label = e.doc.history.undo_label();
+    undo(e.doc);
+    e.session.messages.status = "undid " + label;
+    after_history_move(e);
+    return true;
+}
+
+bool apply(Explorer& e, const command::Redo&) {
+    explore::commit_edits(e.doc);
+    if (!e.doc.history.can_redo()) return false;
+    const std::string label = e.doc.history.redo_label();
+    redo(e.doc);
+    e.session.messages.status = "redid " + label;
+    after_history_move(e);
+    return true;
 }
 
 }  // namespace m3055::explore

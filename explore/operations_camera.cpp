@@ -1,6 +1,8 @@
 // The camera's moves (operations.h): the orbit and zoom of a drag and the
-// wheel on the display, and R's reset.
+// wheel on the display, R's reset, and Shift+drag's move of an object.
 #include "explore/operations.h"
+
+#include "numeric/angles.h"
 
 #include <glm/geometric.hpp>
 
@@ -11,6 +13,8 @@
 namespace m3055::explore {
 
 namespace {
+using numeric::kPi;
+
 // Rodrigues' rotation of v by `angle` radians about the unit axis k.
 dvec3 rotate(const dvec3& v, double angle, const dvec3& k) {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -18,15 +22,16 @@ dvec3 rotate(const dvec3& v, double angle, const dvec3& k) {
 }
 
 // Radians of orbit per pixel dragged: a 300-pixel drag turns about 90 degrees.
-constexpr double kOrbitPerPixel = 0.3 * 3.14159265358979323846 / 180.0;
+constexpr double kOrbitPerPixel = 0.3 * kPi / 180.0;
 // Keep the view direction at least this far (radians) from `up` (docs/spec.md#7-scene-files).
 constexpr double kPoleMargin = 0.02;
 // One wheel step moves 10 % closer.
 constexpr double kZoomPerStep = 0.9;
 }  // namespace
 
-void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels) {
-    Camera& c = state.scene.camera;
+bool apply(Explorer& e, const command::OrbitCamera& move) {
+    const double dx_pixels = move.dx, dy_pixels = move.dy;
+    Camera c = e.doc.scene.camera;
     const dvec3 up = glm::normalize(c.up);
     dvec3 offset = c.position - c.target;
     // Dragging right turns the camera left around the object (the object seems to turn right).
@@ -35,16 +40,17 @@ void orbit_camera(ExplorerState& state, double dx_pixels, double dy_pixels) {
     const double radius = glm::length(offset);
     const double polar = std::acos(std::clamp(glm::dot(offset / radius, up), -1.0, 1.0));
     const double wanted = std::clamp(polar - dy_pixels * kOrbitPerPixel, kPoleMargin,
-                                     3.14159265358979323846 - kPoleMargin);
+                                     kPi - kPoleMargin);
     const dvec3 right = glm::normalize(glm::cross(offset, up));
     offset = rotate(offset, polar - wanted, right);
     c.position = c.target + offset;
-    note_edit(state, "orbit camera");
+    edit_document(e, {CameraEdit{e.doc.scene.camera, c}, "orbit camera"});
+    return true;
 }
 
-void zoom_camera(ExplorerState& state, double wheel_steps) {
-    Camera& c = state.scene.camera;
-    const double factor = std::pow(kZoomPerStep, wheel_steps);
+bool apply(Explorer& e, const command::ZoomCamera& zoom) {
+    Camera c = e.doc.scene.camera;
+    const double factor = std::pow(kZoomPerStep, zoom.steps);
     if (c.projection == Projection::orthographic) {
         c.height = std::clamp(c.height * factor, 1e-3, 1e4);
     } else {
@@ -52,14 +58,16 @@ void zoom_camera(ExplorerState& state, double wheel_steps) {
         const double distance = std::clamp(glm::length(offset) * factor, 1e-2, 1e4);
         c.position = c.target + glm::normalize(offset) * distance;
     }
-    note_edit(state, "zoom camera");
+    edit_document(e, {CameraEdit{e.doc.scene.camera, c}, "zoom camera"});
+    return true;
 }
 
-void move_object_in_view(ExplorerState& state, double dx, double dy, double shown_height) {
-    const int index = state.selected_object;
-    if (index < 0 || index >= static_cast<int>(state.scene.objects.size()) || !(shown_height > 0.0)) return;
-    const Camera& c = state.scene.camera;
-    Object& object = state.scene.objects[std::size_t(index)];
+bool apply(Explorer& e, const command::MoveObjectInView& move) {
+    const double dx = move.dx, dy = move.dy, shown_height = move.shown_height;
+    const int index = e.view.selected_object;
+    if (index < 0 || index >= static_cast<int>(e.doc.scene.objects.size()) || !(shown_height > 0.0)) return false;
+    const Camera& c = e.doc.scene.camera;
+    Object object = e.doc.scene.objects[std::size_t(index)];
     const dvec3 forward = glm::normalize(c.target - c.position);
     const dvec3 right = glm::normalize(glm::cross(forward, c.up));
     const dvec3 up = glm::cross(right, forward);
@@ -69,15 +77,22 @@ void move_object_in_view(ExplorerState& state, double dx, double dy, double show
     const double depth = glm::dot(object.center - c.position, forward);
     const double view_height = c.projection == Projection::orthographic
                                    ? c.height
-                                   : 2.0 * std::max(depth, 1e-3) * std::tan(c.fov_y_deg * 3.14159265358979323846 / 360.0);
+                                   : 2.0 * std::max(depth, 1e-3) * std::tan(c.fov_y_deg * kPi / 360.0);
     const double per_unit = view_height / shown_height;
     object.center += right * (dx * per_unit) - up * (dy * per_unit);
-    note_edit(state, "move objects[" + std::to_string(index) + "]");
+    edit_document(e, {ObjectEdit{index, e.doc.scene.objects[std::size_t(index)], object},
+                      "move objects[" + std::to_string(index) + "]"});
+    return true;
 }
 
-void reset_camera(ExplorerState& state) {
-    state.scene.camera = state.camera_home;
-    note_edit(state, "reset camera");
+bool apply(Explorer& e, const command::ResetCamera&) {
+    edit_document(e, {CameraEdit{e.doc.scene.camera, e.doc.camera_home}, "reset camera"});
+    return true;
+}
+
+bool apply(Explorer& e, const command::SetCamera& c) {
+    edit_document(e, {CameraEdit{e.doc.scene.camera, c.value}, ""});
+    return true;
 }
 
 }  // namespace m3055::explore

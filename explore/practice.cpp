@@ -123,9 +123,9 @@ std::string grade_line(const PracticeStatus& status) {
 }
 
 
-grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given) {
+grading::Assignment open_assignment(Explorer& e, const std::string& path, bool scene_given) {
     grading::Assignment assignment = grading::load_assignment(path);
-    state.save_path = state.save_name = "submission.json";
+    e.view.save_path = e.session.files.save_name = "submission.json";
     if (!scene_given && !assignment.start.empty()) {
         Scene start;
         try {
@@ -133,8 +133,8 @@ grading::Assignment open_assignment(ExplorerState& state, const std::string& pat
         } catch (const std::exception& e) {  // the loader names the scene; say which field named it
             throw std::runtime_error(text::quote_name(path) + ": start: " + text::one_line(e.what()));
         }
-        set_scene(state, start, std::filesystem::path(assignment.start).filename().string() + " (copy)");
-        state.scene_file.clear();  // Ctrl+S asks: the assignment's own file stays as it is
+        // A name and no file: Ctrl+S asks, the assignment's own file stays as it is.
+        set_scene(e, start, std::filesystem::path(assignment.start).filename().string() + " (copy)");
     }
     return assignment;
 }

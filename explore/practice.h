@@ -7,7 +7,7 @@
 #pragma once
 
 #include "explore/practice_status.h"
-#include "explore/state.h"
+#include "explore/explorer.h"
 #include "grading/assignment.h"
 #include "grading/grade.h"
 #include "grading/level_compare.h"
@@ -77,6 +77,6 @@ std::string grade_line(const PracticeStatus& status);
 // scene, or the spec example when it names none: never the reference, which
 // would score full marks untouched. The copy has no file of its own, so the
 // first Ctrl+S asks where to save the submission (proposing submission.json).
-grading::Assignment open_assignment(ExplorerState& state, const std::string& path, bool scene_given);
+grading::Assignment open_assignment(Explorer& explorer, const std::string& path, bool scene_given);
 
 }  // namespace m3055::explore

@@ -12,14 +12,15 @@ const ScenePicker& Readouts::picker(const Scene& scene) {
     return *picker_;
 }
 
-PixelProbe Readouts::probe(const ExplorerState& state, Renderer& renderer, int x, int y) {
+PixelProbe Readouts::probe(const Explorer& e, Renderer& renderer, int x, int y) {
     if (!raw_) raw_ = renderer.read_raw();
-    return probe_pixel(state.scene, picker(state.scene), *raw_, display(renderer), x, y, state.plotted_light);
+    const Scene& scene = e.doc.scene;
+    return probe_pixel(scene, picker(scene), *raw_, display(renderer), x, y, e.view.plotted_light);
 }
 
-const NonFiniteView& Readouts::nonfinite(const ExplorerState& state, Renderer& renderer) {
+const NonFiniteView& Readouts::nonfinite(const Scene& scene, Renderer& renderer) {
     if (!nonfinite_) {
-        if (may_render_nonfinite(state.scene)) {
+        if (may_render_nonfinite(scene)) {
             if (!raw_) raw_ = renderer.read_raw();
             nonfinite_ = nonfinite_view(*raw_);
         } else {
@@ -29,22 +30,16 @@ const NonFiniteView& Readouts::nonfinite(const ExplorerState& state, Renderer& r
     return *nonfinite_;
 }
 
-const RowProfile* Readouts::profile(const ExplorerState& state, Renderer& renderer) {
-    const int row = state.profile_row;
-    if (row < 0 || row >= state.scene.display.height) return nullptr;  // none yet, or the display shrank
-    if (!profile_ || profile_->row != row) profile_ = row_profile(display(renderer), state.scene.display.bits, row);
+const RowProfile* Readouts::profile(const Display& shown, int row, Renderer& renderer) {
+    if (row < 0 || row >= shown.height) return nullptr;  // none yet, or the display shrank
+    if (!profile_ || profile_->row != row) profile_ = row_profile(display(renderer), shown.bits, row);
     return &*profile_;
 }
 
-bool Readouts::pick(ExplorerState& state, int x, int y) {
-    const int object = picker(state.scene).pick(x, y).object;
-    if (object < 0) return false;
-    state.selected_object = object;
-    return true;
-}
+int Readouts::pick(const Scene& scene, int x, int y) { return picker(scene).pick(x, y).object; }
 
-const LevelHistogram& Readouts::histogram(const ExplorerState& state, Renderer& renderer) {
-    if (!histogram_fresh_) histogram_ = level_histogram(display(renderer), state.scene.display.bits);
+const LevelHistogram& Readouts::histogram(const Display& shown, Renderer& renderer) {
+    if (!histogram_fresh_) histogram_ = level_histogram(display(renderer), shown.bits);
     histogram_fresh_ = true;
     return histogram_;
 }

@@ -8,7 +8,7 @@
 
 #include "analysis/pixel_probe.h"
 #include "explore/nonfinite_view.h"
-#include "explore/state.h"
+#include "explore/explorer.h"
 #include "frame/renderer.h"
 
 #include <memory>
@@ -30,18 +30,18 @@ public:
     }
 
     // The probe; a pixel whose value is NaN or infinite says so (PixelProbe::text).
-    PixelProbe probe(const ExplorerState& state, Renderer& renderer, int x, int y);
+    PixelProbe probe(const Explorer& explorer, Renderer& renderer, int x, int y);
     // A's NaN and infinite pixels: read back once a render, and only for a
     // scene that can hold them (a .brdf material); none for the others.
-    const NonFiniteView& nonfinite(const ExplorerState& state, Renderer& renderer);
+    const NonFiniteView& nonfinite(const Scene& scene, Renderer& renderer);
     // A's display as read back (PNG values, rows top to bottom): what the A/B difference uses.
     const Rgb8Image& display_image(Renderer& renderer) { return display(renderer); }
-    // The scanline profile of state.profile_row, from the same readback as the
-    // probe; nullptr before any row was hovered.
-    const RowProfile* profile(const ExplorerState& state, Renderer& renderer);
-    // Selects the object under pixel (x, y); false (selection kept) on the background.
-    bool pick(ExplorerState& state, int x, int y);
-    const LevelHistogram& histogram(const ExplorerState& state, Renderer& renderer);
+    // The scanline profile of display row `row`, from the same readback as the
+    // probe; nullptr before any row was hovered (row -1).
+    const RowProfile* profile(const Display& display, int row, Renderer& renderer);
+    // The object under pixel (x, y); -1 on the background.
+    int pick(const Scene& scene, int x, int y);
+    const LevelHistogram& histogram(const Display& display, Renderer& renderer);
     // The object under each display pixel (rows top to bottom), for the
     // selection's outline; computed when `allowed_to_compute` (not during a
     // drag), else nullptr until it was. Also nullptr with one object: nothing

@@ -1,10 +1,10 @@
 #include "explore/script.h"
 
+#include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
-#include "explore/undo.h"
 #include "explore/shapes.h"
 #include "grading/ab_compare.h"
 #include "scene/light_direction.h"
@@ -28,7 +28,7 @@ namespace {
 
 // One command line being run: its words, and what the handlers may touch.
 struct Call {
-    ExplorerState& state;
+    Explorer& explorer;
     Script& script;
     std::istringstream in;
     std::string command;
@@ -52,14 +52,16 @@ struct Call {
         std::getline(in >> std::ws, value);
         return value;
     }
-    Material& material() {
-        Material* m = selected_material(state);
+    const Scene& scene() const { return explorer.doc.scene; }
+    View& view() { return explorer.view; }
+    const Material& material() {
+        const Material* m = selected_material(explorer);
         if (!m) throw std::runtime_error("no object");
         return *m;
     }
     int light() {
         const int index = integer();
-        if (index < 0 || index >= static_cast<int>(state.scene.lights.size()))
+        if (index < 0 || index >= static_cast<int>(scene().lights.size()))
             throw std::runtime_error("no light " + std::to_string(index));
         return index;
     }
@@ -68,6 +70,8 @@ struct Call {
         if (!found) throw std::runtime_error("unknown shape '" + name + "'");
         return *found;
     }
+    // The command applied now, as a widget's or key's would be this frame.
+    bool run(Command c) { return run_command(explorer, std::move(c)); }
 };
 
 using Handler = void (*)(Call&);
@@ -76,10 +80,14 @@ using Handler = void (*)(Call&);
 
 void set_value(Call& c) {
     const std::string path = c.word();
-    set_scene_value(c.state, path, c.rest());
+    c.run(command::SetSceneValue{path, c.rest()});
 }
 
-void model(Call& c) { set_model(c.state, c.word()); }
+void model(Call& c) {
+    const std::string name = c.word();
+    const Material& material = c.material();
+    c.run(command::SetMaterial{c.view().selected_object, with_model_named(material, name), ""});
+}
 
 void print_models(Call&) {
     for (const ModelSpec* model : all_models()) std::printf("model %s\t%s\n", model->name.c_str(), model->label.c_str());
@@ -88,124 +96,127 @@ void print_models(Call&) {
 
 void select_object(Call& c) {
     const int i = c.integer();
-    if (i < 0 || i >= static_cast<int>(c.state.scene.objects.size()))
-        throw std::runtime_error("no object " + std::to_string(i));
-    c.state.selected_object = i;
+    if (!c.run(command::SelectObject{i})) throw std::runtime_error("no object " + std::to_string(i));
 }
 
 void rescale_eq14(Call& c) {
-    c.material();  // there is a selected object
-    if (!rescale_weights_to_eq14(c.state)) throw std::runtime_error("rescale_eq14: not possible for this material");
+    Material rescaled;
+    if (!eq14_rescaled(c.material(), &rescaled)) throw std::runtime_error("rescale_eq14: not possible for this material");
+    c.run(command::SetMaterial{c.view().selected_object, rescaled, kEq14Action});
 }
 
 void add_object_command(Call& c) {
     std::string name = "sphere";
     c.in >> name;  // optional: the shape
-    add_object(c.state, c.shape(name));
+    c.run(command::AddObject{c.shape(name)});
 }
 
 void shape(Call& c) {
     const Shape shape = c.shape(c.word());
     c.material();  // there is a selected object
-    Object object = c.state.scene.objects[std::size_t(c.state.selected_object)];
+    const int index = c.view().selected_object;
+    Object object = c.scene().objects[std::size_t(index)];
     set_shape(object, shape);  // as the Objects panel's shape selector
-    edit_object(c.state, c.state.selected_object, object);
+    c.run(command::SetObject{index, object});
 }
 
 void remove_object_command(Call& c) {
-    if (!remove_object(c.state, c.integer())) throw std::runtime_error("cannot remove that object");
+    if (!c.run(command::RemoveObject{c.integer()})) throw std::runtime_error("cannot remove that object");
 }
 
 void figure(Call& c) {
-    if (!load_figure(c.state, c.word())) throw std::runtime_error(c.state.error);
+    if (!c.run(command::LoadFigure{c.word()})) throw std::runtime_error(c.explorer.session.messages.error);
 }
 
-void load(Call& c) { load_scene(c.state, c.word()); }  // a bad file shows in the window, like a drop
+void load(Call& c) { c.run(command::LoadScene{c.word()}); }  // a bad file shows in the window, like a drop
 
 // ---- Lights -------------------------------------------------------------------------------
 
-void select_light(Call& c) { c.state.selected_light = c.light(); }
+void select_light(Call& c) { c.run(command::SelectLight{c.light()}); }
 
 void light_preset(Call& c) {
     LightPreset preset;
     const std::string name = c.word();
     if (!parse_light_preset(name, &preset)) throw std::runtime_error("unknown light preset '" + name + "'");
-    apply_light_preset(c.state, preset);
+    c.run(command::ApplyLightPreset{preset});
 }
 
 void light_angles(Call& c) {
     const int i = c.light();
     const double azimuth = c.number(), elevation = c.number();
-    Light light = c.state.scene.lights[std::size_t(i)];
+    Light light = c.scene().lights[std::size_t(i)];
     light.direction = direction_from_angles({azimuth, elevation});
-    edit_light(c.state, i, light);
+    c.run(command::SetLight{i, light});
 }
 
 void light_drag(Call& c) {
     const int i = c.light();
     const double x = c.number(), y = c.number();
-    Light light = c.state.scene.lights[std::size_t(i)];
+    Light light = c.scene().lights[std::size_t(i)];
     light.direction = direction_from_disc({x, y});
-    edit_light(c.state, i, light);
+    c.run(command::SetLight{i, light});
 }
 
 void add_light_command(Call& c) {
-    if (!add_light(c.state)) throw std::runtime_error("already " + std::to_string(kMaxExplorerLights) + " lights");
+    if (!c.run(command::AddLight{})) throw std::runtime_error("already " + std::to_string(kMaxExplorerLights) + " lights");
 }
 
 void remove_light_command(Call& c) {
-    if (!remove_light(c.state, c.integer())) throw std::runtime_error("no such light");
+    if (!c.run(command::RemoveLight{c.integer()})) throw std::runtime_error("no such light");
 }
 
 // ---- View, display and compare -----------------------------------------------------------
 
 void display(Call& c) {
     const std::string which = c.word();
-    if (which == "m3055") set_display_m3055(c.state);
-    else if (which == "modern") set_display_modern(c.state, c.free_width, c.free_height);
+    const Display& now = c.scene().display;
+    if (which == "m3055") c.run(command::SetDisplay{m3055_display(now), "display M3055"});
+    else if (which == "modern") c.run(command::SetDisplay{modern_display(now, c.free_width, c.free_height), "display modern"});
     else throw std::runtime_error("display: m3055 or modern");
 }
 
 void orbit(Call& c) {
     const double dx = c.number(), dy = c.number();
-    orbit_camera(c.state, dx, dy);
+    c.run(command::OrbitCamera{dx, dy});
 }
 
-void zoom(Call& c) { zoom_camera(c.state, c.number()); }
+void zoom(Call& c) { c.run(command::ZoomCamera{c.number()}); }
 
 void projection(Call& c) {  // the Camera panel's combo
     const std::string name = c.word();
     if (name != "perspective" && name != "orthographic")
         throw std::runtime_error("projection: perspective or orthographic");
-    Camera camera = c.state.scene.camera;
+    Camera camera = c.scene().camera;
     camera.projection = name == "perspective" ? Projection::perspective : Projection::orthographic;
-    edit_camera(c.state, camera);
+    c.run(command::SetCamera{camera});
 }
 
 void compare(Call& c) {
     const std::string on = c.word();
     if (on != "on" && on != "off") throw std::runtime_error("compare: on or off");
-    set_compare(c.state, on == "on");
+    c.run(command::SetCompare{on == "on"});
 }
 
-void compare_model(Call& c) { set_model_b(c.state, c.word()); }
+void compare_model(Call& c) {
+    c.run(command::SetMaterial{kMaterialB, with_model_named(c.explorer.doc.material_b, c.word()), ""});
+}
 
-void plot_light(Call& c) { c.state.plotted_light = c.light(); }  // the plot header's light combo
+void plot_light(Call& c) { c.view().plotted_light = c.light(); }  // the plot header's light combo
 void plot_scale(Call& c) {  // the plot header's scale combo, and its outer value (optional)
     const std::string name = c.word();
-    if (name == "fixed") c.state.plot_scale = RadialScale::fixed;
-    else if (name == "model_max") c.state.plot_scale = RadialScale::model_max;
-    else if (name == "log") c.state.plot_scale = RadialScale::log;
-    else if (name == "lobe") c.state.plot_scale = RadialScale::lobe;
+    if (name == "fixed") c.view().plot_scale = RadialScale::fixed;
+    else if (name == "model_max") c.view().plot_scale = RadialScale::model_max;
+    else if (name == "log") c.view().plot_scale = RadialScale::log;
+    else if (name == "lobe") c.view().plot_scale = RadialScale::lobe;
     else throw std::runtime_error("plot_scale: fixed, model_max, log or lobe");
     double top = name == "log" ? 1000.0 : 1.0;
     if (!c.rest().empty()) throw std::runtime_error("plot_scale: one word");
-    c.state.plot_top = top;
+    c.view().plot_top = top;
 }
 
 std::pair<int, int> display_pixel(Call& c) {
     const int x = c.integer(), y = c.integer();
-    const Display& d = c.state.scene.display;
+    const Display& d = c.scene().display;
     if (x < 0 || y < 0 || x >= d.width || y >= d.height)
         throw std::runtime_error(c.command + ": (" + std::to_string(x) + ", " + std::to_string(y) +
                                  ") is outside the " + std::to_string(d.width) + " x " + std::to_string(d.height) +
@@ -214,21 +225,27 @@ std::pair<int, int> display_pixel(Call& c) {
 }
 int display_pixel_row(Call& c) {
     const int y = c.integer();
-    if (y < 0 || y >= c.state.scene.display.height)
+    if (y < 0 || y >= c.scene().display.height)
         throw std::runtime_error(c.command + ": row " + std::to_string(y) + " is outside the " +
-                                 std::to_string(c.state.scene.display.height) + "-row display");
+                                 std::to_string(c.scene().display.height) + "-row display");
     return y;
 }
 // Hovering display pixel (x, y): prints "probe ..." once rendered.
-void probe(Call& c) { c.state.probe_requests.push_back(display_pixel(c)); }
+void probe(Call& c) {
+    const auto [x, y] = display_pixel(c);
+    c.run(DisplayRequest{command::Probe{x, y}});
+}
 // A click on display pixel (x, y): selects the object there.
-void click(Call& c) { c.state.pick_requests.push_back(display_pixel(c)); }
+void click(Call& c) {
+    const auto [x, y] = display_pixel(c);
+    c.run(DisplayRequest{command::Pick{x, y}});
+}
 
 void light_name(Call& c) {  // the Lights panel's name field
     const int index = c.light();
-    Light light = c.state.scene.lights[std::size_t(index)];
+    Light light = c.scene().lights[std::size_t(index)];
     light.name = valid_light_name(c.rest());
-    edit_light(c.state, index, light);
+    c.run(command::SetLight{index, light});
 }
 
 void section(Call& c) {  // a click on a side panel header: "section Lights closed"
@@ -236,46 +253,46 @@ void section(Call& c) {  // a click on a side panel header: "section Lights clos
     const auto space = rest.find_last_of(' ');
     const std::string name = space == std::string::npos ? "" : rest.substr(0, space), how = rest.substr(space + 1);
     if (name.empty() || (how != "open" && how != "closed")) throw std::runtime_error("section: NAME open|closed");
-    if (name == kPlotsTitle) c.state.plots_folded = how == "closed";  // the plots' title bar under the side panel
-    else c.state.section_requests[name] = how == "open";
+    if (name == kPlotsTitle) c.view().plots_folded = how == "closed";  // the plots' title bar under the side panel
+    else c.view().section_requests[name] = how == "open";
 }
 
-void copy_b(Call& c) { copy_a_to_b(c.state); }  // the A/B panel's "B = copy of A"
+void copy_b(Call& c) { c.run(command::CopyAToB{}); }  // the A/B panel's "B = copy of A"
 
 void compare_diff(Call& c) {  // the A/B panel's difference pane checkbox
     const std::string on = c.word();
     if (on != "on" && on != "off") throw std::runtime_error("compare_diff: on or off");
-    c.state.compare_diff = on == "on";
+    c.view().compare_diff = on == "on";
 }
 void diff_scale(Call& c) {  // the A/B panel's scale: auto or 1 ... 255
     const std::string value = c.word();
     if (value == "auto") {
-        c.state.diff_scale = 0;
+        c.view().diff_scale = 0;
         return;
     }
     const int scale = std::atoi(value.c_str());
     if (scale < 1 || scale > grading::kMaxDifferenceScale || std::to_string(scale) != value)
         throw std::runtime_error("diff_scale: auto or a whole number in [1, 255]");
-    c.state.diff_scale = scale;
+    c.view().diff_scale = scale;
 }
 void print_compare(Call& c) {  // "compare differing=N pixels=M scale=S", once rendered
-    if (!c.state.compare) throw std::runtime_error("print_compare: the A/B split is off");
-    c.state.readout_requests.push_back("compare");
+    if (!c.view().compare) throw std::runtime_error("print_compare: the A/B split is off");
+    c.run(DisplayRequest{command::PrintCompare{}});
 }
 void print_profile(Call& c) {  // hovering row Y of A (optional), then its profile, once rendered
-    if (!(c.in >> std::ws).eof()) c.state.profile_row = display_pixel_row(c);
-    c.state.readout_requests.push_back("profile");
+    if (!(c.in >> std::ws).eof()) c.view().profile_row = display_pixel_row(c);
+    c.run(DisplayRequest{command::PrintProfile{}});
 }
 void save_difference(Call& c) {  // the difference pane's image, at display resolution
-    if (!c.state.compare || !c.state.compare_diff)
+    if (!c.view().compare || !c.view().compare_diff)
         throw std::runtime_error("save_difference: needs compare on and compare_diff on");
-    c.state.readout_requests.push_back("save_difference " + c.word());
+    c.run(DisplayRequest{command::SaveDifference{c.word()}});
 }
 
 // ---- .brdf files (explore/brdf_files.h) ------------------------------------------------------
 
 // File > Open BRDF's dialog with PATH typed (or a drop): errors show in the window, as `load`'s.
-void open_brdf_command(Call& c) { open_brdf(c.state, c.rest()); }
+void open_brdf_command(Call& c) { c.run(command::OpenBrdf{c.rest()}); }
 
 // What an editor's save does to a watched file: DST's bytes replaced by SRC's
 // (written to a temporary and renamed, so the watcher never reads half a file).
@@ -293,38 +310,38 @@ void replace_file(Call& c) {
 void brdf_views(Call& c) {
     const std::string how = c.word();
     if (how != "on" && how != "off") throw std::runtime_error("brdf_views: on|off");
-    c.state.show_brdf_views = how == "on";
+    c.view().show_brdf_views = how == "on";
 }
 
 // One line: the Material section's .brdf error and the status strip.
 void print_brdf(Call& c) {
-    std::printf("brdf error=%s\tstatus=%s\terror=%s\n", c.state.brdf_error.c_str(), c.state.status.c_str(),
-                c.state.error.c_str());
+    const Messages& m = c.explorer.session.messages;
+    std::printf("brdf error=%s\tstatus=%s\terror=%s\n", m.brdf_error.c_str(), m.status.c_str(), m.error.c_str());
     std::fflush(stdout);
 }
 
 // ---- Undo/redo (Edit menu) -----------------------------------------------------------------
 
 void undo_command(Call& c) {
-    if (!undo(c.state)) throw std::runtime_error("undo: nothing to undo");
+    if (!c.run(command::Undo{})) throw std::runtime_error("undo: nothing to undo");
 }
 void redo_command(Call& c) {
-    if (!redo(c.state)) throw std::runtime_error("redo: nothing to redo");
+    if (!c.run(command::Redo{})) throw std::runtime_error("redo: nothing to redo");
 }
 // One line: the title's name, and what Undo and Redo would do.
 void print_state(Call& c) {
-    commit_edits(c.state);
-    const History& h = c.state.history;
-    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tselected=%d\n", title_name(c.state).c_str(),
+    commit_edits(c.explorer);
+    const History& h = c.explorer.doc.history;
+    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tselected=%d\n", title_name(c.explorer.doc).c_str(),
                 h.can_undo() ? h.undo_label().c_str() : "", h.can_redo() ? h.redo_label().c_str() : "",
-                h.undo_steps(), c.state.selected_object);
+                h.undo_steps(), c.view().selected_object);
     std::fflush(stdout);
 }
 
 // --assignment's live grade, printed by the frame loop once it is current.
 void print_grade(Call& c) {
-    if (!c.state.practice.active) throw std::runtime_error("print_grade: no --assignment");
-    c.state.practice.print_requested = true;
+    if (!c.explorer.session.practice.active) throw std::runtime_error("print_grade: no --assignment");
+    c.run(DisplayRequest{command::PrintGrade{}});
 }
 
 // ---- Keys, files and the script itself -----------------------------------------------------
@@ -333,22 +350,19 @@ void key(Call& c) {
     const std::string name = c.word();
     const std::optional<KeyPress> press = parse_key_name(name);
     if (!press) throw std::runtime_error("unknown key '" + name + "'");
-    handle_shortcut(c.state, *press);
+    if (handle_shortcut(c.explorer, *press)) apply_commands(c.explorer);
 }
 
-void screenshot(Call& c) {
-    c.state.screenshot_path = c.word();
-    c.state.screenshot_requested = true;
-}
+void screenshot(Call& c) { c.run(DisplayRequest{command::Screenshot{c.word()}}); }
 
 void save(Call& c) {
-    if (!save_scene(c.state, c.word())) throw std::runtime_error(c.state.error);
+    if (!c.run(command::SaveTo{c.word()})) throw std::runtime_error(c.explorer.session.messages.error);
 }
 
-void screenshot_dir(Call& c) { c.state.screenshot_dir = c.rest(); }
+void screenshot_dir(Call& c) { c.explorer.session.files.screenshot_dir = c.rest(); }
 void capture(Call& c) { c.script.capture_path = c.word(); }
 void idle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames); }
-void quit(Call& c) { c.state.quit = true; }
+void quit(Call& c) { c.run(command::Quit{}); }
 
 // Command name -> handler (the list in script.h).
 const std::map<std::string, Handler>& commands() {
@@ -394,7 +408,7 @@ Script Script::from_file(const std::string& path) {
     return script;
 }
 
-void Script::step(ExplorerState& state, double now, long frames, int free_width, int free_height) {
+void Script::step(Explorer& explorer, double now, long frames, int free_width, int free_height) {
     if (idling()) {
         if (now < idle_until_) return;
         idle_records_.push_back({idle_seconds_, frames - idle_start_frames_});
@@ -407,11 +421,12 @@ void Script::step(ExplorerState& state, double now, long frames, int free_width,
     const std::size_t number = ++next_;
     const std::string& line = lines_[number - 1];
     try {
-        run(state, line, now, frames, free_width, free_height);
+        run(explorer, line, now, frames, free_width, free_height);
     } catch (const std::exception& e) {
         ++errors_;
-        state.error = path_ + ":" + std::to_string(number) + ": " + e.what();
-        std::fprintf(stderr, "%s\n", state.error.c_str());
+        std::string& error = explorer.session.messages.error;
+        error = path_ + ":" + std::to_string(number) + ": " + e.what();
+        std::fprintf(stderr, "%s\n", error.c_str());
     }
 }
 
@@ -421,9 +436,9 @@ void Script::start_idle(double seconds, double now, long frames) {
     idle_start_frames_ = frames;
 }
 
-void Script::run(ExplorerState& state, const std::string& line, double now, long frames, int free_width,
+void Script::run(Explorer& explorer, const std::string& line, double now, long frames, int free_width,
                  int free_height) {
-    Call call{state, *this, std::istringstream(line.substr(0, line.find('#'))), {}, now, frames, free_width,
+    Call call{explorer, *this, std::istringstream(line.substr(0, line.find('#'))), {}, now, frames, free_width,
               free_height};
     if (!(call.in >> call.command)) return;  // blank or comment
     const auto found = commands().find(call.command);

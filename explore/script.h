@@ -1,5 +1,5 @@
-// --script: a text file of UI actions, one a line, run one per frame through
-// the same functions the panels and keys call (state.h, keys.h), so a test can
+// --script: a text file of UI actions, one a line, run one per frame as the
+// same commands the panels and keys give (commands.h, keys.h), so a test can
 // drive the explorer without a mouse. '#' starts a comment. Commands:
 //
 //   set PATH VALUE          a scene field, as m3055's --set (validated like a load),
@@ -53,7 +53,7 @@
 //   quit                    quit at once (Esc asks first when there are unsaved edits)
 #pragma once
 
-#include "explore/state.h"
+#include "explore/explorer.h"
 
 #include <string>
 #include <vector>
@@ -76,7 +76,7 @@ public:
 
     // Runs the next command (or ends an idle period whose time has come).
     // `now` is glfwGetTime(), `frames` the frames drawn so far.
-    void step(ExplorerState& state, double now, long frames, int free_width, int free_height);
+    void step(Explorer& explorer, double now, long frames, int free_width, int free_height);
 
     // Set by `capture`: the frame loop writes the window to it and clears it.
     std::string capture_path;
@@ -87,8 +87,8 @@ public:
     const std::vector<IdleRecord>& idle_records() const { return idle_records_; }
 
 private:
-    void run(ExplorerState& state, const std::string& line, double now, long frames,
-             int free_width, int free_height);
+    void run(Explorer& explorer, const std::string& line, double now, long frames, int free_width,
+             int free_height);
 
     std::string path_;
     std::vector<std::string> lines_;

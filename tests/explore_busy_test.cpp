@@ -1,13 +1,13 @@
-// Issue 20, item 9: the line that says what the explorer is busy with
+// The line that says what the explorer is busy with
 // (explore/busy.h), and the two steps of a watched .brdf file's reload: the
 // poll that notices the change leaves "reloading FILE..." for a frame to
 // show, the next poll reloads.
+#include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore/busy.h"
 #include "explore/files.h"
 #include "explore/operations.h"
 #include "explore/start.h"
-#include "explore/undo.h"
 #include "scene/presets.h"
 #include "test_paths.h"
 #include "test_support.h"
@@ -31,9 +31,9 @@ std::string read(const fs::path& path) {
 }
 
 TEST(ExploreBusy, IdleSaysNothingAndDeferredProgramsSayCompiling) {
-    ExplorerState state;
-    EXPECT_EQ(busy_line(state, 0), "");
-    EXPECT_EQ(busy_line(state, 2), "compiling...");
+    const BrdfWatch watch;
+    EXPECT_EQ(busy_line(watch, 0), "");
+    EXPECT_EQ(busy_line(watch, 2), "compiling...");
 }
 
 TEST(ExploreBusy, AChangedBrdfFileIsShownAsReloadingBeforeItIsReloaded) {
@@ -44,23 +44,23 @@ TEST(ExploreBusy, AChangedBrdfFileIsShownAsReloadingBeforeItIsReloaded) {
     const std::string text = read(test::source_path("tests/data/brdf/lambert.brdf"));
     ASSERT_FALSE(text.empty());
     { std::ofstream(file) << text; }
-    ExplorerState state;
-    set_scene(state, default_scene(), "spec example");
-    start_history(state);
-    ASSERT_TRUE(open_brdf(state, file.string())) << state.brdf_error;
+    Explorer explorer;
+    set_scene(explorer, default_scene(), "spec example");
+    start_history(explorer);
+    ASSERT_TRUE(run_command(explorer, command::OpenBrdf{file.string()})) << explorer.session.messages.brdf_error;
     double now = 100.0;
-    EXPECT_FALSE(poll_brdf_files(state, now)) << "unchanged";
+    EXPECT_FALSE(poll_brdf_files(explorer, now)) << "unchanged";
     // Another size: the stamp (mtime and size) differs even within the same second.
     { std::ofstream(file) << text << "\n# edited\n"; }
     now += 10.0;
-    state.status.clear();
-    EXPECT_TRUE(poll_brdf_files(state, now)) << "noticed";
-    EXPECT_EQ(busy_line(state, 0), "reloading mine.brdf...");
-    EXPECT_EQ(state.status, "") << "not reloaded yet: a frame shows the line first";
-    EXPECT_TRUE(poll_brdf_files(state, now + 0.01)) << "reloaded at once, whatever the poll period";
-    EXPECT_EQ(busy_line(state, 0), "");
-    EXPECT_NE(state.status.find("reloaded"), std::string::npos) << state.status;
-    EXPECT_FALSE(poll_brdf_files(state, now + 0.02));
+    explorer.session.messages.status.clear();
+    EXPECT_TRUE(poll_brdf_files(explorer, now)) << "noticed";
+    EXPECT_EQ(busy_line(explorer.session.brdf_watch, 0), "reloading mine.brdf...");
+    EXPECT_EQ(explorer.session.messages.status, "") << "not reloaded yet: a frame shows the line first";
+    EXPECT_TRUE(poll_brdf_files(explorer, now + 0.01)) << "reloaded at once, whatever the poll period";
+    EXPECT_EQ(busy_line(explorer.session.brdf_watch, 0), "");
+    EXPECT_NE(explorer.session.messages.status.find("reloaded"), std::string::npos) << explorer.session.messages.status;
+    EXPECT_FALSE(poll_brdf_files(explorer, now + 0.02));
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 #include "test_support.h"
 #include "explore/operations.h"
 #include "explore/start.h"
-#include "explore/undo.h"
 #include "scene/load.h"
 #include "scene/presets.h"
 
@@ -25,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::run;
 using test::started;
 
 // A folder of its own under the test's temporary directory, empty.
@@ -37,108 +37,108 @@ fs::path fresh_folder(const std::string& name) {
 
 TEST(ExploreFiles, SavedSceneLoadsBackEqual) {
     const fs::path dir = fresh_folder("explore_files_round_trip");
-    ExplorerState state = started();
-    ASSERT_TRUE(load_figure(state, "fig11"));
-    set_model(state, "metal_blinn");
-    add_object(state, Shape::torus);
-    apply_light_preset(state, LightPreset::three_point_cool);
+    Explorer explorer = started();
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig11"}));
+    run(explorer, command::SetMaterial{explorer.view.selected_object, with_model_named(*selected_material(explorer), "metal_blinn"), ""});
+    run(explorer, command::AddObject{Shape::torus});
+    run(explorer, command::ApplyLightPreset{LightPreset::three_point_cool});
     const std::string file = (dir / "mine.json").string();
-    ASSERT_TRUE(save_scene(state, file)) << state.error;
-    EXPECT_EQ(state.scene_file, file);
-    EXPECT_EQ(state.scene_name, "mine.json");
+    ASSERT_TRUE(run(explorer, command::SaveTo{file})) << explorer.session.messages.error;
+    EXPECT_EQ(explorer.doc.file, file);
+    EXPECT_EQ(explorer.doc.name, "mine.json");
 
-    ExplorerState other = started();
-    ASSERT_TRUE(load_scene(other, file)) << other.error;
-    EXPECT_EQ(scene_to_json(other.scene), scene_to_json(state.scene));
-    EXPECT_FALSE(unsaved(other));
-    EXPECT_EQ(other.status, "loaded " + file);
+    Explorer other = started();
+    ASSERT_TRUE(run(other, command::LoadScene{file})) << other.session.messages.error;
+    EXPECT_EQ(scene_to_json(other.doc.scene), scene_to_json(explorer.doc.scene));
+    EXPECT_FALSE(unsaved(other.doc));
+    EXPECT_EQ(other.session.messages.status, "loaded " + file);
 }
 
 TEST(ExploreFiles, EveryFigurePresetLoadsAndRoundTrips) {
     const fs::path dir = fresh_folder("explore_files_figures");
     for (const char* name : {"fig05", "fig06", "fig07", "fig08", "fig09", "fig10", "fig11", "fig12", "fig13",
                              "spec_example"}) {
-        ExplorerState state = started();
-        ASSERT_TRUE(load_figure(state, name)) << name << ": " << state.error;
+        Explorer explorer = started();
+        ASSERT_TRUE(run(explorer, command::LoadFigure{name})) << name << ": " << explorer.session.messages.error;
         const std::string file = (dir / (std::string(name) + ".json")).string();
-        ASSERT_TRUE(save_scene(state, file)) << state.error;
-        EXPECT_EQ(scene_to_json(load_scene_file(file)), scene_to_json(state.scene)) << name;
+        ASSERT_TRUE(run(explorer, command::SaveTo{file})) << explorer.session.messages.error;
+        EXPECT_EQ(scene_to_json(load_scene_file(file)), scene_to_json(explorer.doc.scene)) << name;
     }
-    ExplorerState state = started();
-    EXPECT_FALSE(load_figure(state, "fig99"));
-    EXPECT_EQ(state.error, "no figure preset named 'fig99'");
+    Explorer explorer = started();
+    EXPECT_FALSE(run(explorer, command::LoadFigure{"fig99"}));
+    EXPECT_EQ(explorer.session.messages.error, "no figure preset named 'fig99'");
 }
 
 TEST(ExploreFiles, ABadFileKeepsTheSceneAndSaysWhy) {
-    ExplorerState state = started();
-    const nlohmann::json before = scene_to_json(state.scene);
+    Explorer explorer = started();
+    const nlohmann::json before = scene_to_json(explorer.doc.scene);
     const std::string bad = std::string(M3055_SOURCE_DIR) + "/tests/data/bad_scenes/material_m_negative.json";
-    EXPECT_FALSE(load_scene(state, bad));
-    EXPECT_EQ(scene_to_json(state.scene), before);
-    EXPECT_NE(state.load_error.find("objects[0].material.m"), std::string::npos) << state.load_error;
-    EXPECT_EQ(state.error, state.load_error);
-    EXPECT_FALSE(commit_edits(state)) << "a failed load is no step";
+    EXPECT_FALSE(run(explorer, command::LoadScene{bad}));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene), before);
+    EXPECT_NE(explorer.session.messages.load_error.find("objects[0].material.m"), std::string::npos) << explorer.session.messages.load_error;
+    EXPECT_EQ(explorer.session.messages.error, explorer.session.messages.load_error);
+    EXPECT_FALSE(commit_edits(explorer)) << "a failed load is no step";
 }
 
 TEST(ExploreFiles, ALoadIsOneUndoStepBackToThePreviousScene) {
     const fs::path dir = fresh_folder("explore_files_load_step");
-    ExplorerState state = started();
-    ASSERT_TRUE(load_figure(state, "fig07"));
+    Explorer explorer = started();
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig07"}));
     const std::string file = (dir / "seven.json").string();
-    ASSERT_TRUE(save_scene(state, file));
-    ASSERT_TRUE(load_figure(state, "fig05"));
-    commit_edits(state);
-    const nlohmann::json fig05 = scene_to_json(state.scene);
-    ASSERT_TRUE(load_scene(state, file));
-    commit_edits(state);
-    EXPECT_EQ(state.history.undo_label(), "load " + file);
-    ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), fig05);
-    EXPECT_EQ(state.scene_name, "scenes/fig05.json");
+    ASSERT_TRUE(run(explorer, command::SaveTo{file}));
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig05"}));
+    commit_edits(explorer);
+    const nlohmann::json fig05 = scene_to_json(explorer.doc.scene);
+    ASSERT_TRUE(run(explorer, command::LoadScene{file}));
+    commit_edits(explorer);
+    EXPECT_EQ(explorer.doc.history.undo_label(), "load " + file);
+    ASSERT_TRUE(run(explorer, command::Undo{}));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene), fig05);
+    EXPECT_EQ(explorer.doc.name, "scenes/fig05.json");
 }
 
 TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {
     const fs::path dir = fresh_folder("explore_files_screenshots");
-    ExplorerState state = started();
-    state.screenshot_dir = dir.string();
-    EXPECT_EQ(next_screenshot_path(state), (dir / "m3055-0001.png").string());
+    Explorer explorer = started();
+    explorer.session.files.screenshot_dir = dir.string();
+    EXPECT_EQ(next_screenshot_path(explorer), (dir / "m3055-0001.png").string());
     std::ofstream(dir / "m3055-0001.png") << "x";
     std::ofstream(dir / "m3055-0002.json") << "x";  // its PNG missing: still taken
-    EXPECT_EQ(next_screenshot_path(state), (dir / "m3055-0003.png").string());
-    ASSERT_TRUE(save_scene(state, (dir / "lesson.json").string()));
-    EXPECT_EQ(next_screenshot_path(state), (dir / "lesson-0001.png").string());
+    EXPECT_EQ(next_screenshot_path(explorer), (dir / "m3055-0003.png").string());
+    ASSERT_TRUE(run(explorer, command::SaveTo{(dir / "lesson.json").string()}));
+    EXPECT_EQ(next_screenshot_path(explorer), (dir / "lesson-0001.png").string());
 }
 
 TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     const fs::path dir = fresh_folder("explore_files_start");
-    ExplorerState plain;
+    Explorer plain;
     EXPECT_FALSE(start_scene(plain, "", ""));
-    EXPECT_EQ(plain.scene_name, "spec example");
-    EXPECT_EQ(scene_to_json(plain.scene), scene_to_json(default_scene()));
-    EXPECT_FALSE(unsaved(plain));
-    EXPECT_FALSE(plain.history.can_undo());
+    EXPECT_EQ(plain.doc.name, "spec example");
+    EXPECT_EQ(scene_to_json(plain.doc.scene), scene_to_json(default_scene()));
+    EXPECT_FALSE(unsaved(plain.doc));
+    EXPECT_FALSE(plain.doc.history.can_undo());
 
-    ExplorerState saved = started();
-    ASSERT_TRUE(load_figure(saved, "fig09"));
+    Explorer saved = started();
+    ASSERT_TRUE(run(saved, command::LoadFigure{"fig09"}));
     const std::string file = (dir / "nine.json").string();
-    ASSERT_TRUE(save_scene(saved, file));
-    ExplorerState named;
+    ASSERT_TRUE(run(saved, command::SaveTo{file}));
+    Explorer named;
     EXPECT_FALSE(start_scene(named, file, ""));
-    EXPECT_EQ(named.scene_file, file);
-    EXPECT_EQ(named.scene_name, file);
-    EXPECT_EQ(scene_to_json(named.scene), scene_to_json(saved.scene));
-    EXPECT_FALSE(unsaved(named));
+    EXPECT_EQ(named.doc.file, file);
+    EXPECT_EQ(named.doc.name, file);
+    EXPECT_EQ(scene_to_json(named.doc.scene), scene_to_json(saved.doc.scene));
+    EXPECT_FALSE(unsaved(named.doc));
 
-    ExplorerState missing;
+    Explorer missing;
     EXPECT_THROW(start_scene(missing, (dir / "none.json").string(), ""), std::exception)
         << "without an assignment, a scene file must exist";
 }
 
 TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
-    ExplorerState state = started();
-    EXPECT_FALSE(save_scene(state, (fs::path(::testing::TempDir()) / "no_such_folder" / "x.json").string()));
-    EXPECT_FALSE(state.error.empty());
-    EXPECT_EQ(state.scene_file, "");
+    Explorer explorer = started();
+    EXPECT_FALSE(run(explorer, command::SaveTo{(fs::path(::testing::TempDir()) / "no_such_folder" / "x.json").string()}));
+    EXPECT_FALSE(explorer.session.messages.error.empty());
+    EXPECT_EQ(explorer.doc.file, "");
 }
 
 // Issue 20, item 10: Save As proposes the scene's own file, or (a figure
@@ -146,15 +146,15 @@ TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
 // m3055-scene.json in the working folder.
 TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
     const fs::path dir = fresh_folder("explore_files_save_as");
-    ExplorerState state = started();
+    Explorer explorer = started();
     const std::string file = (dir / "mine.json").string();
-    ASSERT_TRUE(save_scene(state, file)) << state.error;
-    ASSERT_TRUE(load_scene(state, file)) << state.error;
-    request_save_as(state);
-    EXPECT_EQ(state.save_path, file);
-    ASSERT_TRUE(load_figure(state, "fig10"));
-    request_save_as(state);
-    EXPECT_EQ(state.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
+    ASSERT_TRUE(run(explorer, command::SaveTo{file})) << explorer.session.messages.error;
+    ASSERT_TRUE(run(explorer, command::LoadScene{file})) << explorer.session.messages.error;
+    run(explorer, command::AskSaveAs{});
+    EXPECT_EQ(explorer.view.save_path, file);
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig10"}));
+    run(explorer, command::AskSaveAs{});
+    EXPECT_EQ(explorer.view.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
 }
 
 // Issue 21: the page saves a scene naming its .brdf file as the user named it
@@ -166,23 +166,23 @@ TEST(ExploreFiles, ThePageSavesABrdfFileByTheNameTheUserGave) {
     fs::create_directories(dir / "work" / "mine");
     fs::copy_file(m3055::test::source_path("tests/data/brdf/lambert.brdf"), dir / "work" / "mine" / "lambert.brdf");
     fs::copy_file(m3055::test::source_path("tests/data/brdf/lambert.brdf"), dir / "elsewhere.brdf");
-    auto saved_file_field = [&](ExplorerState& state, const std::string& name, std::size_t object) {
+    auto saved_file_field = [&](Explorer& explorer, const std::string& name, std::size_t object) {
         const fs::path path = dir / "work" / name;
-        EXPECT_TRUE(save_scene(state, path.string())) << state.error;
+        EXPECT_TRUE(run(explorer, command::SaveTo{path.string()})) << explorer.session.messages.error;
         std::ifstream in(path);
         return nlohmann::json::parse(in)["objects"][object]["material"]["file"].get<std::string>();
     };
-    ExplorerState state = started();
-    ASSERT_TRUE(open_brdf(state, (dir / "work" / "mine" / "lambert.brdf").string())) << state.brdf_error;
-    EXPECT_EQ(saved_file_field(state, "desktop.json", 0), (dir / "work" / "mine" / "lambert.brdf").string());
-    state.platform.brdf_paths_relative_to = (dir / "work").string();
-    EXPECT_EQ(saved_file_field(state, "page.json", 0), "mine/lambert.brdf");
-    ExplorerState loaded = started();
-    loaded.platform.brdf_paths_relative_to = state.platform.brdf_paths_relative_to;
-    ASSERT_TRUE(load_scene(loaded, (dir / "work" / "page.json").string())) << loaded.load_error;
+    Explorer explorer = started();
+    ASSERT_TRUE(run(explorer, command::OpenBrdf{(dir / "work" / "mine" / "lambert.brdf").string()})) << explorer.session.messages.brdf_error;
+    EXPECT_EQ(saved_file_field(explorer, "desktop.json", 0), (dir / "work" / "mine" / "lambert.brdf").string());
+    explorer.session.platform.brdf_paths_relative_to = (dir / "work").string();
+    EXPECT_EQ(saved_file_field(explorer, "page.json", 0), "mine/lambert.brdf");
+    Explorer loaded = started();
+    loaded.session.platform.brdf_paths_relative_to = explorer.session.platform.brdf_paths_relative_to;
+    ASSERT_TRUE(run(loaded, command::LoadScene{(dir / "work" / "page.json").string()})) << loaded.session.messages.load_error;
     EXPECT_EQ(saved_file_field(loaded, "again.json", 0), "mine/lambert.brdf") << "loads back from the saved name";
-    ASSERT_TRUE(open_brdf(state, (dir / "elsewhere.brdf").string())) << state.brdf_error;
-    EXPECT_EQ(saved_file_field(state, "outside.json", 0), (dir / "elsewhere.brdf").string());
+    ASSERT_TRUE(run(explorer, command::OpenBrdf{(dir / "elsewhere.brdf").string()})) << explorer.session.messages.brdf_error;
+    EXPECT_EQ(saved_file_field(explorer, "outside.json", 0), (dir / "elsewhere.brdf").string());
 }
 
 }  // namespace

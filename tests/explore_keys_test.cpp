@@ -7,7 +7,6 @@
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
-#include "explore/undo.h"
 #include "scene/load.h"
 #include "scene/presets.h"
 
@@ -19,6 +18,7 @@
 namespace m3055::explore {
 namespace {
 
+using test::run;
 using test::started;
 
 KeyPress key(const std::string& name) {
@@ -27,174 +27,189 @@ KeyPress key(const std::string& name) {
     return press.value_or(KeyPress{});
 }
 
-void edit_m(ExplorerState& state, double m) {
-    Material edited = *selected_material(state);
+// The key pressed, then the frame's commands applied.
+bool press(Explorer& explorer, const std::string& name, const KeyFocus& focus = {}) {
+    const bool handled = handle_shortcut(explorer, key(name), focus);
+    apply_commands(explorer);
+    return handled;
+}
+
+void edit_m(Explorer& explorer, double m) {
+    Material edited = *selected_material(explorer);
     edited.set_number("m", m);
-    edit_material(state, edited);
-    commit_edits(state);
+    run(explorer, command::SetMaterial{explorer.view.selected_object, edited, ""});
+    commit_edits(explorer);
 }
 
 TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
     EXPECT_STREQ(figure_for_digit(0), "spec_example");
     EXPECT_STREQ(figure_for_digit(1), "fig05");
     EXPECT_STREQ(figure_for_digit(9), "fig13");
-    ExplorerState state = started();
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+2")));
-    EXPECT_EQ(state.scene_name, "scenes/fig06.json");
-    EXPECT_FALSE(unsaved(state)) << "a preset as it came has nothing to lose";
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+3")));
-    EXPECT_EQ(state.scene_name, "scenes/fig07.json");
+    Explorer explorer = started();
+    EXPECT_TRUE(press(explorer, "ctrl+2"));
+    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_FALSE(unsaved(explorer.doc)) << "a preset as it came has nothing to lose";
+    EXPECT_TRUE(press(explorer, "ctrl+3"));
+    EXPECT_EQ(explorer.doc.name, "scenes/fig07.json");
 }
 
 TEST(ExploreKeys, APlainDigitNeverReplacesTheSceneEditedOrNot) {
-    ExplorerState state = started();
-    const nlohmann::json fresh = scene_to_json(state.scene);
+    Explorer explorer = started();
+    const nlohmann::json fresh = scene_to_json(explorer.doc.scene);
     for (const char* digit : {"0", "6"}) {  // "0.6" typed with no field active, nothing edited
-        EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
-        EXPECT_EQ(scene_to_json(state.scene), fresh) << digit;
-        EXPECT_EQ(state.scene_name, "spec example");
+        EXPECT_FALSE(press(explorer, digit)) << digit;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene), fresh) << digit;
+        EXPECT_EQ(explorer.doc.name, "spec example");
     }
-    EXPECT_NE(state.status.find("Ctrl+6"), std::string::npos) << "the status says what does: " << state.status;
-    ASSERT_TRUE(handle_shortcut(state, key("ctrl+1")));
-    edit_m(state, 40);
-    const nlohmann::json edited = scene_to_json(state.scene);
+    EXPECT_NE(explorer.session.messages.status.find("Ctrl+6"), std::string::npos) << "the status says what does: " << explorer.session.messages.status;
+    ASSERT_TRUE(press(explorer, "ctrl+1"));
+    edit_m(explorer, 40);
+    const nlohmann::json edited = scene_to_json(explorer.doc.scene);
     for (const char* digit : {"0", "6"}) {
-        EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
-        EXPECT_EQ(scene_to_json(state.scene), edited) << digit;
+        EXPECT_FALSE(press(explorer, digit)) << digit;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene), edited) << digit;
     }
 }
 
 // The student: a saved practice scene, then a stray "0.6".
 TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
-    ExplorerState state = started();
+    Explorer explorer = started();
     const std::string file = ::testing::TempDir() + "explore_keys_mine.json";
     std::remove(file.c_str());
-    edit_m(state, 40);
-    ASSERT_TRUE(save_scene(state, file));
-    ASSERT_FALSE(unsaved(state));
-    const nlohmann::json saved = scene_to_json(state.scene);
-    EXPECT_FALSE(handle_shortcut(state, key("0")));
-    EXPECT_FALSE(handle_shortcut(state, key("6")));
-    EXPECT_EQ(scene_to_json(state.scene), saved);
-    EXPECT_EQ(state.scene_file, file);
-    EXPECT_FALSE(unsaved(state));
+    edit_m(explorer, 40);
+    ASSERT_TRUE(run(explorer, command::SaveTo{file}));
+    ASSERT_FALSE(unsaved(explorer.doc));
+    const nlohmann::json saved = scene_to_json(explorer.doc.scene);
+    EXPECT_FALSE(press(explorer, "0"));
+    EXPECT_FALSE(press(explorer, "6"));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene), saved);
+    EXPECT_EQ(explorer.doc.file, file);
+    EXPECT_FALSE(unsaved(explorer.doc));
 
     // Ctrl+6 on purpose: Fig. 10, Save As proposes fig10.json beside mine, not mine.
-    ASSERT_TRUE(handle_shortcut(state, key("ctrl+6")));
-    commit_edits(state);
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+s")));
-    EXPECT_TRUE(state.save_as_requested);
-    EXPECT_EQ(state.save_path, ::testing::TempDir() + "fig10.json");
-    EXPECT_FALSE(save_as(state, file)) << "an existing other file: asked twice";
-    EXPECT_NE(state.error.find("exists"), std::string::npos) << state.error;
+    ASSERT_TRUE(press(explorer, "ctrl+6"));
+    commit_edits(explorer);
+    EXPECT_TRUE(press(explorer, "ctrl+s"));
+    EXPECT_EQ(explorer.view.dialog, Dialog::save_as);
+    EXPECT_EQ(explorer.view.save_path, ::testing::TempDir() + "fig10.json");
+    EXPECT_FALSE(run(explorer, command::SaveAs{file})) << "an existing other file: asked twice";
+    EXPECT_NE(explorer.session.messages.error.find("exists"), std::string::npos) << explorer.session.messages.error;
     EXPECT_EQ(load_scene_file(file).objects[0].material.number("m"), 40.0);
 
     // Undo back to the saved scene: clean, its own file again.
-    ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), saved);
-    EXPECT_EQ(state.scene_file, file);
-    EXPECT_FALSE(unsaved(state)) << "identical to the file: nothing unsaved";
-    edit_m(state, 41);
-    EXPECT_TRUE(unsaved(state));
-    edit_m(state, 40);  // set back by hand: the same as the file again
-    EXPECT_FALSE(unsaved(state));
+    ASSERT_TRUE(run(explorer, command::Undo{}));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene), saved);
+    EXPECT_EQ(explorer.doc.file, file);
+    EXPECT_FALSE(unsaved(explorer.doc)) << "identical to the file: nothing unsaved";
+    edit_m(explorer, 41);
+    EXPECT_TRUE(unsaved(explorer.doc));
+    // Set back by hand: an edit since the save, as in any editor (revisions, not contents, are compared).
+    edit_m(explorer, 40);
+    EXPECT_TRUE(unsaved(explorer.doc));
     std::remove(file.c_str());
 }
 
 TEST(ExploreKeys, SaveAsOverwritesAnotherFileOnlyWhenAskedTwice) {
-    ExplorerState state = started();
+    Explorer explorer = started();
     const std::string other = ::testing::TempDir() + "explore_keys_other.json";
     {
-        ExplorerState writer = started();
-        ASSERT_TRUE(save_scene(writer, other));
+        Explorer writer = started();
+        ASSERT_TRUE(run(writer, command::SaveTo{other}));
     }
-    edit_m(state, 40);
-    request_save_as(state);
-    EXPECT_EQ(state.save_path, "m3055-scene.json") << "no file yet, nothing loaded: the default name";
-    EXPECT_FALSE(save_as(state, other));
-    EXPECT_TRUE(save_as(state, other)) << "the second Save overwrites";
-    EXPECT_EQ(state.scene_file, other);
-    edit_m(state, 41);
-    EXPECT_TRUE(save_as(state, other)) << "the scene's own file: no question";
-    request_save_as(state);
-    EXPECT_EQ(state.save_path, other) << "Save As proposes the scene's own file";
+    edit_m(explorer, 40);
+    run(explorer, command::AskSaveAs{});
+    EXPECT_EQ(explorer.view.save_path, "m3055-scene.json") << "no file yet, nothing loaded: the default name";
+    EXPECT_FALSE(run(explorer, command::SaveAs{other}));
+    EXPECT_TRUE(run(explorer, command::SaveAs{other})) << "the second Save overwrites";
+    EXPECT_EQ(explorer.doc.file, other);
+    edit_m(explorer, 41);
+    EXPECT_TRUE(run(explorer, command::SaveAs{other})) << "the scene's own file: no question";
+    run(explorer, command::AskSaveAs{});
+    EXPECT_EQ(explorer.view.save_path, other) << "Save As proposes the scene's own file";
     std::remove(other.c_str());
 }
 
 TEST(ExploreKeys, CtrlDigitReplacesAnEditedSceneUndoably) {
-    ExplorerState state = started();
-    edit_m(state, 40);
-    const nlohmann::json edited = scene_to_json(state.scene);
-    ASSERT_TRUE(handle_shortcut(state, key("ctrl+2")));
-    commit_edits(state);
-    EXPECT_EQ(state.scene_name, "scenes/fig06.json");
-    EXPECT_EQ(state.history.undo_label(), "figure preset fig06");
-    ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), edited);
+    Explorer explorer = started();
+    edit_m(explorer, 40);
+    const nlohmann::json edited = scene_to_json(explorer.doc.scene);
+    ASSERT_TRUE(press(explorer, "ctrl+2"));
+    commit_edits(explorer);
+    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_EQ(explorer.doc.history.undo_label(), "figure preset fig06");
+    ASSERT_TRUE(run(explorer, command::Undo{}));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene), edited);
 }
 
 TEST(ExploreKeys, CtrlSAsksForAFileFirstThenWritesTheScenesOwnFile) {
-    ExplorerState state = started();
+    Explorer explorer = started();
     const std::string file = ::testing::TempDir() + "explore_keys_saved.json";
-    edit_m(state, 40);
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+s")));
-    EXPECT_TRUE(state.save_as_requested) << "no file of its own yet: Save As";
-    EXPECT_TRUE(unsaved(state));
-    ASSERT_TRUE(save_scene(state, file));  // the Save As dialog's choice
-    EXPECT_FALSE(unsaved(state));
-    edit_m(state, 41);
-    EXPECT_FALSE(handle_shortcut(state, key("0")));
-    EXPECT_EQ(state.scene_file, file);
-    ASSERT_TRUE(handle_shortcut(state, key("ctrl+s")));  // its own file now: written, no dialog
-    EXPECT_FALSE(unsaved(state));
+    edit_m(explorer, 40);
+    EXPECT_TRUE(press(explorer, "ctrl+s"));
+    EXPECT_EQ(explorer.view.dialog, Dialog::save_as) << "no file of its own yet: Save As";
+    EXPECT_TRUE(unsaved(explorer.doc));
+    ASSERT_TRUE(run(explorer, command::SaveTo{file}));  // the Save As dialog's choice
+    EXPECT_FALSE(unsaved(explorer.doc));
+    edit_m(explorer, 41);
+    EXPECT_FALSE(press(explorer, "0"));
+    EXPECT_EQ(explorer.doc.file, file);
+    ASSERT_TRUE(press(explorer, "ctrl+s"));  // its own file now: written, no dialog
+    EXPECT_FALSE(unsaved(explorer.doc));
     std::remove(file.c_str());
 }
 
 TEST(ExploreKeys, NoShortcutWhileATextFieldIsTypedInto) {
-    ExplorerState state = started();
+    Explorer explorer = started();
     KeyFocus typing;
     typing.text_input = true;
     for (const char* name : {"1", "ctrl+1", "ctrl+z", "escape", "r", "f1"})
-        EXPECT_FALSE(handle_shortcut(state, key(name), typing)) << name;
-    EXPECT_EQ(state.scene_name, "spec example");
-    EXPECT_FALSE(state.quit_requested);
+        EXPECT_FALSE(press(explorer, name, typing)) << name;
+    EXPECT_EQ(explorer.doc.name, "spec example");
+    EXPECT_FALSE(explorer.session.quit);
+    EXPECT_EQ(explorer.view.dialog, Dialog::none);
 }
 
 TEST(ExploreKeys, SingleKeysWaitWhileAWidgetTakesTheKeyboardButCtrlShortcutsDoNot) {
-    ExplorerState state = started();
+    Explorer explorer = started();
     KeyFocus slider_held;
     slider_held.item_active = true;
-    EXPECT_FALSE(handle_shortcut(state, key("escape"), slider_held));
-    EXPECT_FALSE(handle_shortcut(state, key("1"), slider_held));
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+1"), slider_held));
-    EXPECT_EQ(state.scene_name, "scenes/fig05.json");
+    EXPECT_FALSE(press(explorer, "escape", slider_held));
+    EXPECT_FALSE(press(explorer, "1", slider_held));
+    EXPECT_TRUE(press(explorer, "ctrl+1", slider_held));
+    EXPECT_EQ(explorer.doc.name, "scenes/fig05.json");
 }
 
-TEST(ExploreKeys, EscAsksToQuitF1TogglesPanelsF12AsksForAScreenshotRResetsTheCamera) {
-    ExplorerState state = started();
-    EXPECT_TRUE(handle_shortcut(state, key("escape")));
-    EXPECT_TRUE(state.quit_requested);
-    EXPECT_FALSE(state.quit) << "Esc asks first (the dialog decides)";
-    EXPECT_TRUE(handle_shortcut(state, key("f1")));
-    EXPECT_FALSE(state.show_panels);
-    EXPECT_TRUE(handle_shortcut(state, key("f12")));
-    EXPECT_TRUE(state.screenshot_requested);
-    orbit_camera(state, 120, 30);
-    EXPECT_NE(state.scene.camera.position, state.camera_home.position);
-    EXPECT_TRUE(handle_shortcut(state, key("r")));
-    EXPECT_EQ(state.scene.camera.position, state.camera_home.position);
+TEST(ExploreKeys, EscQuitsAskingFirstWhenEditedF1TogglesPanelsF12AsksForAScreenshotRResetsTheCamera) {
+    Explorer explorer = started();
+    edit_m(explorer, 40);
+    EXPECT_TRUE(press(explorer, "escape"));
+    EXPECT_EQ(explorer.view.dialog, Dialog::unsaved_edits);
+    EXPECT_FALSE(explorer.session.quit) << "Esc asks first (the dialog decides)";
+    ASSERT_TRUE(run(explorer, command::Undo{}));
+    explorer.view.dialog = Dialog::none;
+    EXPECT_TRUE(press(explorer, "escape"));
+    EXPECT_TRUE(explorer.session.quit) << "nothing to lose: Esc quits";
+    EXPECT_TRUE(press(explorer, "f1"));
+    EXPECT_FALSE(explorer.view.show_panels);
+    EXPECT_TRUE(press(explorer, "f12"));
+    ASSERT_EQ(explorer.display_requests.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<command::Screenshot>(explorer.display_requests[0]));
+    run(explorer, command::OrbitCamera{120, 30});
+    EXPECT_NE(explorer.doc.scene.camera.position, explorer.doc.camera_home.position);
+    EXPECT_TRUE(press(explorer, "r"));
+    EXPECT_EQ(explorer.doc.scene.camera.position, explorer.doc.camera_home.position);
 }
 
 TEST(ExploreKeys, CtrlZUndoesCtrlShiftZAndCtrlYRedo) {
-    ExplorerState state = started();
-    edit_m(state, 40);
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+z")));
-    EXPECT_NE(selected_material(state)->number("m"), 40);
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+shift+z")));
-    EXPECT_EQ(selected_material(state)->number("m"), 40);
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+z")));
-    EXPECT_TRUE(handle_shortcut(state, key("ctrl+y")));
-    EXPECT_EQ(selected_material(state)->number("m"), 40);
+    Explorer explorer = started();
+    edit_m(explorer, 40);
+    EXPECT_TRUE(press(explorer, "ctrl+z"));
+    EXPECT_NE(selected_material(explorer)->number("m"), 40);
+    EXPECT_TRUE(press(explorer, "ctrl+shift+z"));
+    EXPECT_EQ(selected_material(explorer)->number("m"), 40);
+    EXPECT_TRUE(press(explorer, "ctrl+z"));
+    EXPECT_TRUE(press(explorer, "ctrl+y"));
+    EXPECT_EQ(selected_material(explorer)->number("m"), 40);
 }
 
 TEST(ExploreKeys, KeyNamesParseAsTheScriptWritesThem) {

@@ -1,10 +1,11 @@
 #include "latency.h"
 
 #include "timing.h"
+#include "explore/apply.h"
 #include "explore/display_renderers.h"
 #include "explore/files.h"
 #include "explore/operations.h"
-#include "explore/undo.h"
+#include "explore/start.h"
 #include "models/model_table.h"
 #include "frame/renderer.h"
 #include "models/material.h"
@@ -21,42 +22,42 @@ namespace m3055::bench {
 
 namespace {
 
-using Edit = std::function<void(explore::ExplorerState&)>;
+using Step = std::function<void(explore::Explorer&)>;
 
 // The session: what a student does in the explorer, one edit a step, at the
-// default 512 x 320 x 5 bits, through the explorer's own operations
-// (explore/operations.h: what the panels call).
-std::vector<Edit> session() {
+// default 512 x 320 x 5 bits, as the commands the panels give (explore/commands.h).
+std::vector<Step> session() {
     using namespace explore;
-    std::vector<Edit> steps;
+    std::vector<Step> steps;
+    auto material = [](Explorer& e, Material m) { e.commands.push(command::SetMaterial{e.view.selected_object, std::move(m), ""}); };
     for (const ModelSpec& model : model_table().models())
-        steps.push_back([name = model.name](ExplorerState& s) { set_model(s, name); });
-    steps.push_back([](ExplorerState& s) { edit_material(s, Material::of("highlight")); });
+        steps.push_back([name = model.name, material](Explorer& e) { material(e, with_model_named(*selected_material(e), name)); });
+    steps.push_back([material](Explorer& e) { material(e, Material::of("highlight")); });
     for (LightType type : {LightType::point, LightType::spot, LightType::directional}) {
-        steps.push_back([type](ExplorerState& s) {
-            Light light = s.scene.lights[0];
+        steps.push_back([type](Explorer& e) {
+            Light light = e.doc.scene.lights[0];
             light.type = type;
             light.position = {2.0, 2.0, 3.0};
             light.spot_direction = {-2.0, -2.0, -3.0};
-            edit_light(s, 0, light);
+            e.commands.push(command::SetLight{0, light});
         });
     }
     for (LightPreset preset : kAllLightPresets)
-        steps.push_back([preset](ExplorerState& s) { apply_light_preset(s, preset); });
+        steps.push_back([preset](Explorer& e) { e.commands.push(command::ApplyLightPreset{preset}); });
     for (int i = 1; i <= 3; ++i) {
-        steps.push_back([i](ExplorerState& s) {  // "+ add sphere", then its model
-            s.selected_object = 0;
-            add_object(s, Shape::sphere);
-            if (i == 2) edit_material(s, Material::of("translucent"));
-            if (i == 3) edit_material(s, Material::of("metal"));
+        steps.push_back([i, material](Explorer& e) {  // "+ add sphere", then its model
+            e.view.selected_object = 0;
+            run_command(e, command::AddObject{Shape::sphere});
+            if (i == 2) material(e, Material::of("translucent"));
+            if (i == 3) material(e, Material::of("metal"));
         });
     }
     for (int i = 0; i < 50; ++i) {  // a slider dragged: m (eq. 4) from 2 to 100
-        steps.push_back([i](ExplorerState& s) {
-            s.selected_object = 0;
-            Material m = s.scene.objects[0].material;
+        steps.push_back([i, material](Explorer& e) {
+            e.view.selected_object = 0;
+            Material m = e.doc.scene.objects[0].material;
             m.set_number("m", 2.0 + 98.0 * i / 49.0);
-            edit_material(s, m);
+            material(e, m);
         });
     }
     return steps;
@@ -76,28 +77,29 @@ double percentile(std::vector<double> samples, double p) {
 LatencyStats run_session(const GlApi& gl, bool defer) {
     Renderer a(gl), b(gl);  // B stays idle: the session has no A/B split
     if (defer) explore::defer_compiles(a);
-    explore::ExplorerState state;  // as `m3055 explore` starts
-    explore::set_scene(state, default_scene(), "spec example");
-    explore::start_history(state);
+    explore::Explorer explorer;  // as `m3055 explore` starts
+    explore::set_scene(explorer, default_scene(), "spec example");
+    explore::start_history(explorer);
     // Start-up (not a step): the first scene's programs.
-    explore::render_displays(state, a, b);
-    if (defer) explore::render_specialized_when_idle(state, a, b);
+    explore::render_displays(explorer, a, b);
+    if (defer) explore::render_specialized_when_idle(explorer, a, b);
     gl.Finish();
     LatencyStats stats;
     std::vector<double> samples;
-    for (const Edit& edit : session()) {
+    for (const Step& step : session()) {
         const std::size_t programs = a.compiled_programs();
         samples.push_back(time_ms([&]() {
-            edit(state);
-            explore::render_displays(state, a, b);
+            step(explorer);
+            explore::apply_commands(explorer);
+            explore::render_displays(explorer, a, b);
             gl.Finish();
         }));
         stats.compiles_in_steps += int(a.compiled_programs() - programs);
-        explore::commit_edits(state);  // the step ends (untimed: the frame loop does it after drawing)
+        explore::commit_edits(explorer);  // the step ends (untimed: the frame loop does it after drawing)
         if (explore::deferred_programs(a, b) > 0) {
             const std::size_t before = a.compiled_programs();
             const double ms = time_ms([&]() {
-                explore::render_specialized_when_idle(state, a, b);
+                explore::render_specialized_when_idle(explorer, a, b);
                 gl.Finish();
             });
             stats.compiles_when_idle += int(a.compiled_programs() - before);

@@ -8,24 +8,24 @@
 
 namespace m3055::explore {
 
-void CompareView::update(const ExplorerState& state, const Rgb8Image& a, Renderer& b) {
+void CompareView::update(const Explorer& explorer, const Rgb8Image& a, Renderer& b) {
+    const View& view = explorer.view;
     if (!fresh_) {
         b_display_ = b.read_display();
-        difference_ = grading::level_difference(a, b_display_, state.scene.display.bits);
+        difference_ = grading::level_difference(a, b_display_, explorer.doc.scene.display.bits);
         scale_asked_ = -1;  // the pane too
         fresh_ = true;
     }
-    if (!state.compare_diff || scale_asked_ == state.diff_scale) return;
-    scale_asked_ = state.diff_scale;
-    scale_used_ = state.diff_scale > 0 ? state.diff_scale : grading::auto_difference_scale(a, b_display_);
+    if (!view.compare_diff || scale_asked_ == view.diff_scale) return;
+    scale_asked_ = view.diff_scale;
+    scale_used_ = view.diff_scale > 0 ? view.diff_scale : grading::auto_difference_scale(a, b_display_);
     image_ = grading::scaled_difference(a, b_display_, scale_used_);
     upload_pane_texture(gl_, texture_, image_);
 }
 
-std::string CompareView::scale_label(const ExplorerState& state) const {
+std::string CompareView::scale_label(const View& view) const {
     char text[96];
-    std::snprintf(text, sizeof text, "|A - B| x %d (%s)", scale_used_,
-                  state.diff_scale > 0 ? "chosen" : "auto");
+    std::snprintf(text, sizeof text, "|A - B| x %d (%s)", scale_used_, view.diff_scale > 0 ? "chosen" : "auto");
     return text;
 }
 

@@ -1,4 +1,4 @@
-// The A/B split's read-outs in the window (issue 12): B's display readback,
+// The A/B split's read-outs in the window: B's display readback,
 // the count of pixels on another display level, and the third pane |A - B|
 // as a GL texture. The numbers come from grading/ab_compare.h
 // (tested there and against headless renders); this keeps them between
@@ -6,7 +6,7 @@
 #pragma once
 
 #include "grading/ab_compare.h"
-#include "explore/state.h"
+#include "explore/explorer.h"
 #include "gl/gl_api.h"
 #include "gl/gl_object.h"
 #include "frame/renderer.h"
@@ -26,8 +26,8 @@ public:
     void invalidate() { fresh_ = false; }
 
     // Brings the read-outs up to date with A's display and renderer B (the
-    // split is on); the difference pane only when state.compare_diff.
-    void update(const ExplorerState& state, const Rgb8Image& a, Renderer& b);
+    // split is on); the difference pane only when the view asks for it.
+    void update(const Explorer& explorer, const Rgb8Image& a, Renderer& b);
 
     const grading::LevelDifference& difference() const { return difference_; }
     unsigned texture() const { return texture_.id(); }
@@ -35,7 +35,7 @@ public:
     const Rgb8Image& difference_image() const { return image_; }
     const Rgb8Image& b_display() const { return b_display_; }  // B as shown, this render
     // "|A - B| x 4 (auto)": the pane's label.
-    std::string scale_label(const ExplorerState& state) const;
+    std::string scale_label(const View& view) const;
     // "123 of 163840 pixels (0.08 %) on another level": the count's line.
     std::string count_label() const;
     // "123 px on another level": short enough for one line above the pane.
@@ -47,7 +47,7 @@ private:
     Rgb8Image b_display_, image_;
     grading::LevelDifference difference_;
     int scale_used_ = 1;
-    int scale_asked_ = -1;  // the state's diff_scale when image_ was made
+    int scale_asked_ = -1;  // the view's diff_scale when image_ was made
     GlTexture texture_;  // the |A - B| pane
 };
 

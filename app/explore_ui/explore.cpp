@@ -2,49 +2,41 @@
 // example_glfw_opengl3/main.cpp: the starting scene, a window with its GL
 // table, ImGui on it, then a loop that sleeps until something happens and then
 // draws one frame (render on demand: left alone it draws nothing).
+//
+// A frame: new ImGui frame; the keys, the mouse on the display and the
+// widgets give their commands; the commands are applied in order
+// (explore/apply.h); a finished edit becomes an undo step; the displays are
+// drawn if the document changed; the read-outs the commands asked for are
+// answered; the panes and panels are drawn; the window is shown.
 #include "explore_ui/explore.h"
 
-#include "analysis/brdf_views.h"
-#include "analysis/plane_curve_gpu.h"
+#include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore/busy.h"
-#include "explore/display_renderers.h"
-#include "explore/files.h"
+#include "explore/explorer.h"
 #include "explore/keys.h"
+#include "explore/layout.h"
 #include "explore/operations.h"
-#include "explore/practice.h"
-#include "explore/nonfinite_view.h"
-#include "explore/readouts.h"
 #include "explore/script.h"
 #include "explore/start.h"
-#include "explore/state.h"
-#include "explore/undo.h"
-#include "explore_ui/compare_view.h"
+#include "explore_ui/display_panes.h"
 #include "explore_ui/display_view.h"
 #include "explore_ui/glfw_keys.h"
 #include "explore_ui/imgui_layer.h"
 #include "explore_ui/panels.h"
-#include "explore_ui/readout_requests.h"
 #include "explore_ui/window.h"
 #include "gl/gl_api.h"
 #include "image/image.h"
-#include "passes/brdf_grid.h"
-#include "frame/renderer.h"
-#include "gl/program.h"
-#include "scene/load.h"
-#include "scene/presets.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_internal.h>  // ClosePopupsExceptModals, GetTopMostPopupModal (1.86)
 
-#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
-#include <system_error>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -71,40 +63,26 @@ void write_stats(const std::string& path, long frames, long renders, double firs
                             {"render_frame_ms", render_frame_ms}};
     stats["idle"] = nlohmann::json::array();
     if (script) {
-        for (const IdleRecord& r : script->idle_records()) {
-            stats["idle"].push_back({{"seconds", r.seconds}, {"frames", r.frames}});
-        }
+        for (const IdleRecord& r : script->idle_records()) stats["idle"].push_back({{"seconds", r.seconds}, {"frames", r.frames}});
         stats["script_errors"] = script->errors();
     }
     const std::string text = stats.dump(2) + "\n";
     write_file_atomic(path, text.data(), text.size());
 }
 
-// One running explorer: the state, the script, the renderers, and the frame.
-class Explorer {
+// The frame loop of one running explorer: the window's input, the script,
+// the panels and the display panes around the explorer's logic.
+class FrameLoop {
 public:
-    Explorer(const ExploreOptions& options, ExplorerState& state, std::optional<Script>& script, Window& window,
-             ImGuiLayer& imgui, const GlApi& gl, FrameInfo& info)
-        : options_(options), state_(state), script_(script), window_(window), imgui_(imgui), gl_(gl), info_(info) {
+    FrameLoop(const ExploreOptions& options, Explorer& explorer, std::optional<Script>& script, Window& window,
+              ImGuiLayer& imgui, const GlApi& gl, FrameInfo& info)
+        : options_(options), e_(explorer), script_(script), window_(window), imgui_(imgui), gl_(gl), info_(info) {
         try {
-            // One program cache for the context: A, B, the GPU curves, the
-            // BRDF views and the .brdf check compile each program once.
-            programs_ = std::make_unique<ProgramCache>(gl);
-            renderer_a_ = std::make_unique<Renderer>(gl, *programs_);
-            renderer_b_ = std::make_unique<Renderer>(gl, *programs_);
-            compare_ = std::make_unique<CompareView>(gl);
-            // No stall on a new specialization (explore/display_renderers.h).
-            if (!options.compile_at_once) {
-                defer_compiles(*renderer_a_);
-                defer_compiles(*renderer_b_);
-            }
-            // .brdf files: the polar plot's GPU curves and the GLSL check of a (re)loaded file.
-            plane_curves_ = std::make_unique<PlaneCurves>(gl, *programs_);
-            info_.plane_curves = plane_curves_.get();
-            brdf_views_ = std::make_unique<BrdfViews>(gl, *programs_);
-            state_.brdf_compile_check = [this](const Material& m) { return brdf_compile_error(*programs_, m); };
-        } catch (const std::exception& e) {
-            state_.error = e.what();
+            panes_ = std::make_unique<DisplayPanes>(gl, options.compile_at_once);
+            info_.plane_curves = panes_->plane_curves();
+            e_.session.platform.brdf_compile_check = [this](const Material& m) { return panes_->brdf_compile_error(m); };
+        } catch (const std::exception& error) {
+            e_.session.messages.error = error.what();
         }
         // The free area before the first frame, for a script's `display modern`.
         int window_w = 0, window_h = 0;
@@ -114,55 +92,44 @@ public:
         info_.free_height = int(start.display.h);
     }
 
-    ~Explorer() {
-        gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
-        compare_.reset();  // GL objects go while the context is still current
-        reference_.reset();
-        practice_diff_.reset();
-        practice_.reset();
+    ~FrameLoop() {
         info_.plane_curves = nullptr;
-        state_.brdf_compile_check = nullptr;
-        plane_curves_.reset();
-        brdf_views_.reset();
-        renderer_b_.reset();
-        renderer_a_.reset();
-        programs_.reset();
+        e_.session.platform.brdf_compile_check = nullptr;
+        panes_.reset();  // while the context is current
     }
 
-    // --assignment: the reference (a scene one rendered on A, which then
-    // renders the student's scene) and the live grade. False (printed) on a bad reference.
+    DisplayPanes* panes() { return panes_.get(); }
+
+    // --assignment: the reference and the live grade. False (printed) on a bad reference.
     bool practise(grading::Assignment assignment) {
         try {
-            if (!renderer_a_) throw std::runtime_error(state_.error);
-            practice_ = std::make_unique<Practice>(std::move(assignment), renderer_a_.get(), options_.allow_brdf);
-            reference_ = std::make_unique<PaneTexture>(gl_, practice_->reference_image());
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "%s\n", e.what());
-            state_.error = e.what();  // the page shows it (an assignment picked while running)
+            if (!panes_) throw std::runtime_error(e_.session.messages.error);
+            panes_->practise(std::move(assignment), options_.allow_brdf, e_);
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "%s\n", error.what());
+            e_.session.messages.error = error.what();  // the page shows it (an assignment picked while running)
             return false;
         }
-        state_.practice = practice_->start_status();
-        state_.changed();
         return true;
     }
 
     // The window closed, Esc, or (--exit-after-script) the script and any capture are done.
     bool done() {
-        if (state_.quit) return true;
+        if (e_.session.quit) return true;
         if (window_.should_close()) {
-            if (!unsaved(state_)) return true;
+            if (!unsaved(e_.doc)) return true;
             window_.cancel_close();  // ask first (the unsaved-edits dialog)
-            state_.quit_requested = true;
-            window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+            e_.commands.push(command::AskQuit{});
+            owe_frames(1);
         }
         return script_ && script_->finished() && options_.exit_after_script && pending_capture_.empty() &&
                (options_.capture_window.empty() || window_captured_) && !frame_needed();
     }
 
-    // Something to draw: input to settle, a changed scene, a screenshot or a capture.
+    // Something to draw: input to settle, commands to apply, a changed scene, a dialog to open or a capture.
     bool frame_needed() const {
-        return window_.events().frames_owed > 0 || state_.scene_changed || state_.screenshot_requested ||
-               !pending_capture_.empty();
+        return window_.events().frames_owed > 0 || !e_.commands.empty() || e_.session.render_needed ||
+               !e_.display_requests.empty() || e_.view.dialog != Dialog::none || !pending_capture_.empty();
     }
 
     // Sleeps until there is work (an event, or a script's idle time ends), then
@@ -170,92 +137,75 @@ public:
     void wait_for_work() {
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         // Watched .brdf files: wake at least every poll period.
-        const double most = brdf_files_in_use(state_).empty() ? 1e30 : kBrdfPollSeconds;
+        const double most = brdf_files_in_use(e_).empty() ? 1e30 : kBrdfPollSeconds;
+        Practice* practice = panes_ ? panes_->practice() : nullptr;
         if (frame_needed() || script_busy) window_.poll();
-        else if (practice_ && practice_->settle_left(state_.practice, window_.time()) >= 0.0) grade_when_settled();
+        else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
-        else if (deferred_programs() > 0) compile_when_idle();
+        else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
         else window_.wait(most < 1e30 ? most : -1.0);
-        if (poll_brdf_files(state_, window_.time())) window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+        if (poll_brdf_files(e_, window_.time())) owe_frames(1);
         step_script();
     }
 
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
-        const long renders_before = info_.renders;
+        // 1. Input: files dropped on the window, ImGui's new frame with this frame's keys.
         for (const std::string& path : window_.events().dropped) {
-            const bool ok = is_brdf_path(path) ? open_brdf(state_, path) : load_scene(state_, path);
-            if (!ok) state_.show_load_error = true;  // a dialog: the panel may be scrolled away
+            if (is_brdf_path(path)) e_.commands.push(command::OpenBrdf{path});
+            else e_.commands.push(command::LoadScene{path, true});  // a failed drop shows a dialog
         }
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
-        state_.busy = busy_line(state_, deferred_programs());
+        e_.session.busy = busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0);
+
+        // 2. Where everything goes this frame (explore/layout.h).
         const ImGuiIO& io = ImGui::GetIO();
         const float fb_scale = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
-        const int panes = 1 + (state_.compare ? 1 + (state_.compare_diff ? 1 : 0) : 0) + (practice_ ? 1 : 0) +
-                          (shows_practice_difference() ? 1 : 0);
-        Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, state_.show_panels, panes,
-                                         renderer_a_ ? renderer_a_->width() : state_.scene.display.width,
-                                         renderer_a_ ? renderer_a_->height() : state_.scene.display.height, fb_scale,
+        Layout layout = layout_for_panes(io.DisplaySize.x, io.DisplaySize.y, e_.view.show_panels,
+                                         panes_ ? panes_->pane_count(e_) : 1,
+                                         panes_ ? panes_->width() : e_.doc.scene.display.width,
+                                         panes_ ? panes_->height() : e_.doc.scene.display.height, fb_scale,
                                          ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
-        // The plots under the side panel folded (their title bar's arrow);
-        // not where the BRDF views take their place.
-        const bool views_shown = state_.show_brdf_views && brdf_views_;
-        if (state_.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
-        const bool plots_were_folded = state_.plots_folded;
+        // The plots under the side panel folded (their title bar's arrow); not where the BRDF views take their place.
+        const bool views_shown = e_.view.show_brdf_views && panes_;
+        if (e_.view.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
+        const bool plots_were_folded = e_.view.plots_folded;
         note_free_area(layout, fb_scale);
+
+        // 3. The mouse on the display and the side panel's widgets give their commands.
         apply_mouse();
         note_hovered_row();
-        if (state_.show_panels) {
+        if (e_.view.show_panels) {
             info_.side_extra = side_extra_;
-            draw_side_panel(state_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
+            draw_side_panel(e_, info_, layout.side.x, layout.side.y, layout.side.w, layout.side.h);
             follow_side_panel_content(layout);
         }
-        draw_dialogs(state_);
-        // A finished edit (no widget held, no drag on the display) is one undo step.
-        if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(state_);
-        render_if_changed();
-        // A .brdf material's NaN or infinite pixels: one line over the display (read back once a render).
-        nonfinite_line_ = renderer_a_ ? nonfinite_warning(readouts_.nonfinite(state_, *renderer_a_).counts) : "";
-        answer_probes();
-        update_compare();  // the difference pane shows with the panels hidden too
-        answer_grade_print();
-        // After the render: the strip's histogram and timings are this frame's.
-        if (state_.show_panels) {
-            info_.histogram = renderer_a_ ? &readouts_.histogram(state_, *renderer_a_) : nullptr;
-            info_.profile = renderer_a_ ? readouts_.profile(state_, *renderer_a_) : nullptr;
-            info_.profile_b = profile_of_b();
-            // The BRDF views (View menu) docked beside the plots, in the strip's
-            // room: its right part under the display; in place of the plots
-            // where they are a column or a cell (too narrow for both).
-            Rect strip = layout.bottom, views = layout.bottom;
-            const bool row = !layout.plots_in_cell && !layout.plots_beside && !layout.plots_under_side;
-            StripShape shape = row ? StripShape::row : StripShape::column;
-            if (views_shown && row) {
-                views.w = std::min(460.0f, strip.w * 0.5f);
-                strip.w -= views.w;
-                views.x = strip.x + strip.w;
-                if (strip.w < 640.0f) shape = StripShape::column;  // too narrow for three columns: one under another
-            }
-            // Under the side panel with the statistics in the band under the display.
-            if (layout.stats.w > 0.0f) {
-                shape = StripShape::plots;
-                draw_stats_band(state_, info_, layout.stats.x, layout.stats.y, layout.stats.w, layout.stats.h);
-            }
-            if (!views_shown || row) draw_bottom_strip(state_, info_, strip.x, strip.y, strip.w, strip.h, shape);
-            draw_brdf_views(state_, brdf_views_.get(), views.x, views.y, views.w, views.h);
-            // Folded or unfolded: the side panel takes its new height next frame.
-            if (state_.plots_folded != plots_were_folded)
-                window_.events().frames_owed = std::max(window_.events().frames_owed, 2);
+        draw_dialogs(e_);
+
+        // 4. The commands, in order; a finished edit (no widget held, no drag on the display) is one undo step.
+        apply_commands(e_);
+        if (!ImGui::IsAnyItemActive() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) commit_edits(e_);
+
+        // 5. The displays, drawn again when the document changed, and what the commands asked of them.
+        const long renders_before = info_.renders;
+        if (panes_) {
+            const double render_ms = panes_->render_if_needed(e_, window_.time());
+            if (render_ms >= 0.0) info_.render_ms = render_ms, ++info_.renders;
+            nonfinite_line_ = panes_->nonfinite_line(e_);  // a .brdf material's NaN or infinite pixels
+            panes_->answer_requests(e_);
+            panes_->update_read_outs(e_);  // the difference panes show with the panels hidden too
+            info_.compare_count = panes_->compare_count(e_);
         }
-        if (state_.screenshot_requested && renderer_a_) {
-            state_.screenshot_requested = false;
-            take_screenshot(state_, *renderer_a_);
-        }
+
+        // 6. The plots and statistics under the display, then the display panes.
+        if (e_.view.show_panels) draw_plots(layout, views_shown, plots_were_folded);
         draw_displays(layout, fb_scale);
-        window_.set_title("M3055 material explorer - " + title_name(state_));
+        window_.set_title("M3055 material explorer - " + title_name(e_.doc));
+
+        // 7. Show it (and capture it when asked).
         present();
         info_.frame_ms = milliseconds_since(frame_start);
         if (info_.renders != renders_before && info_.render_frame_ms.size() < FrameInfo::kMaxFrameSamples)
@@ -270,91 +220,43 @@ public:
         try {
             write_stats(options_.stats_path, info_.frames, info_.renders, first_frame_ms_, info_.render_frame_ms,
                         script_ ? &*script_ : nullptr);
-        } catch (const std::exception& e) {
-            std::fprintf(stderr, "%s\n", e.what());
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "%s\n", error.what());
             status = 1;
         }
         return status;
     }
 
-    // The display as `m3055 render` writes it: A rendered now with its
-    // specialized program (no deferral), as F12's screenshot is; the window
-    // shows it on the next frame. Throws what the render throws.
-    Rgb8Image render_display_now() {
-        if (!renderer_a_) throw std::runtime_error(state_.error);
-        const bool deferring = renderer_a_->defers_compiles();
-        renderer_a_->set_defer_compiles(false);
-        try {
-            renderer_a_->render(state_.scene);
-        } catch (...) {
-            renderer_a_->set_defer_compiles(deferring);
-            throw;
-        }
-        renderer_a_->set_defer_compiles(deferring);
-        state_.changed();  // the panes, read-outs and practice follow on the next frame
-        return renderer_a_->read_display();
-    }
-
 private:
-    std::size_t deferred_programs() const {
-        return renderer_a_ ? explore::deferred_programs(*renderer_a_, *renderer_b_) : 0;
-    }
+    void owe_frames(int frames) { window_.events().frames_owed = std::max(window_.events().frames_owed, frames); }
 
     // A specialized program waiting: after kIdleBeforeCompile s with no
-    // input, between frames (explore/display_renderers.h).
-    // Then one frame, so that "compiling..." goes without waiting for input
-    // (only when a program was built: a failing compile must not spin).
+    // input, between frames (explore/display_renderers.h). Then one frame,
+    // so that "compiling..." goes without waiting for input (only when a
+    // program was built: a failing compile must not spin).
     void compile_when_idle() {
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
-        const std::size_t before = deferred_programs();
-        try {
-            render_specialized_when_idle(state_, *renderer_a_, *renderer_b_);
-            gl_.Finish();
-        } catch (const std::exception& e) {
-            state_.error = e.what();
-        }
-        if (deferred_programs() < before) window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
+        if (panes_->compile_deferred(e_)) owe_frames(1);
     }
 
     // The edit has settled (kSettleSeconds without a change, no button held):
     // grade_one on A, between frames, off the interaction path; then a frame shows it.
     void grade_when_settled() {
-        const double left = practice_->settle_left(state_.practice, window_.time());
+        const double left = panes_->practice()->settle_left(e_.session.practice, window_.time());
         if (left > 0.0) return window_.wait(left);
         if (ImGui::GetIO().MouseDown[0]) return window_.wait(-1.0);  // a drag held still is not over
-        practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
-        window_.events().frames_owed = std::max(window_.events().frames_owed, 1);
-    }
-
-public:
-    // The grade of the scene as it is now (graded at once if stale); "" outside practice mode.
-    std::string grade_now() {
-        if (!practice_) return "";
-        if (state_.practice.pending) practice_->regrade(state_.practice, state_.scene, state_.scene_file, *renderer_a_);
-        return grade_line(state_.practice);
-    }
-
-private:
-
-    // --script's `print_grade`.
-    void answer_grade_print() {
-        if (!state_.practice.print_requested) return;
-        state_.practice.print_requested = false;
-        if (!practice_) return;
-        std::printf("%s\n", grade_now().c_str());
-        std::fflush(stdout);
+        panes_->regrade(e_);
+        owe_frames(1);
     }
 
     void step_script() {
         if (!script_ || script_->finished()) return;
         const bool was_idle = script_->idling();
-        script_->step(state_, window_.time(), info_.frames, info_.free_width, info_.free_height);
-        WindowEvents& events = window_.events();
+        script_->step(e_, window_.time(), info_.frames, info_.free_width, info_.free_height);
         // A command asks for a frame; so does the end of a script's last idle
         // (else nothing would draw the frame that takes --capture-window and exits).
-        if (!script_->idling() && (!was_idle || script_->finished()))
-            events.frames_owed = std::max(events.frames_owed, 1);
+        if (!script_->idling() && (!was_idle || script_->finished())) owe_frames(1);
         if (!script_->capture_path.empty()) {
             pending_capture_ = script_->capture_path;
             script_->capture_path.clear();
@@ -376,7 +278,7 @@ private:
                 ImGui::ClosePopupsExceptModals();
                 continue;
             }
-            handle_shortcut(state_, key_press_from_glfw(k.key, k.mods), focus);
+            handle_shortcut(e_, key_press_from_glfw(k.key, k.mods), focus);
         }
         window_.events().keys.clear();
     }
@@ -400,13 +302,14 @@ private:
         side_last_overflow_ = overflow;
         if (side_stuck_ || side_extra_ >= kMaxSideExtra) return;
         side_extra_ = std::min(kMaxSideExtra, side_extra_ + std::ceil(overflow));
-        window_.events().frames_owed = std::max(window_.events().frames_owed, 2);
+        owe_frames(2);
     }
 
     // Room for one display (two in compare, with the gap between them), for `display modern`.
     void note_free_area(const Layout& layout, float fb_scale) {
-        const int displays = state_.compare ? 2 : 1;
-        info_.free_width = int((layout.display.w - (state_.compare ? kCompareGap : 0.0f)) * fb_scale) / displays;
+        const bool compare = e_.view.compare;
+        const int displays = compare ? 2 : 1;
+        info_.free_width = int((layout.display.w - (compare ? kCompareGap : 0.0f)) * fb_scale) / displays;
         info_.free_height = int(layout.display.h * fb_scale);
     }
 
@@ -417,56 +320,18 @@ private:
         // A drag orbits the camera; with Shift held it moves the selected object
         // in the view plane, under the mouse (one undo step per drag either way).
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-            if (io.KeyShift) move_object_in_view(state_, io.MouseDelta.x, io.MouseDelta.y, shown_a_.h);
-            else orbit_camera(state_, io.MouseDelta.x, io.MouseDelta.y);
+            if (io.KeyShift) e_.commands.push(command::MoveObjectInView{io.MouseDelta.x, io.MouseDelta.y, shown_a_.h});
+            else e_.commands.push(command::OrbitCamera{io.MouseDelta.x, io.MouseDelta.y});
         }
-        if (io.MouseWheel != 0.0f) zoom_camera(state_, io.MouseWheel);
+        if (io.MouseWheel != 0.0f) e_.commands.push(command::ZoomCamera{io.MouseWheel});
         // A click (no drag) picks the object under it.
         if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !moved_while_down_) {
-            if (const auto pixel = pixel_at(state_.scene.display, shown_a_, io.MousePos.x, io.MousePos.y))
-                readouts_.pick(state_, pixel->first, pixel->second);
+            if (const auto pixel = pixel_at(e_.doc.scene.display, shown_a_, io.MousePos.x, io.MousePos.y))
+                e_.commands.push(DisplayRequest{command::Pick{pixel->first, pixel->second}});
         }
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) moved_while_down_ = false;
         if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
             moved_while_down_ = true;
-    }
-
-    // The A/B read-outs (count, difference pane) of this render, for the strip and the panes.
-    void update_compare() {
-        update_practice_difference();
-        info_.compare_count.clear();
-        if (!renderer_a_ || !state_.compare) return;
-        try {
-            compare_->update(state_, readouts_.display_image(*renderer_a_), *renderer_b_);
-            info_.compare_count = compare_->count_label();
-        } catch (const std::exception& e) {
-            state_.error = e.what();
-        }
-    }
-
-    // Practice mode's third pane: |your scene - reference| per channel at the
-    // A/B split's automatic scale (grading/ab_compare.h), as the report shows it;
-    // made again after a render. Not with the split on (A, B, |A - B| are there).
-    bool shows_practice_difference() const { return practice_ && !state_.compare; }
-    void update_practice_difference() {
-        if (!shows_practice_difference() || !practice_diff_stale_ || !renderer_a_) return;
-        practice_diff_stale_ = false;
-        practice_diff_.reset();
-        const Rgb8Image& mine = readouts_.display_image(*renderer_a_);
-        const Rgb8Image& reference = practice_->reference_image();
-        if (mine.width != reference.width || mine.height != reference.height) return;  // no pane: sizes differ
-        practice_diff_scale_ = grading::auto_difference_scale(mine, reference);
-        practice_diff_count_ = grading::level_difference(mine, reference, state_.scene.display.bits).differing;
-        practice_diff_ = std::make_unique<PaneTexture>(gl_, grading::scaled_difference(mine, reference, practice_diff_scale_));
-    }
-
-    // B's levels on the profile's row, drawn dashed beside A's (the A/B split):
-    // made again after a render or for another row, not every frame.
-    const RowProfile* profile_of_b() {
-        if (!state_.compare || !info_.profile || compare_->b_display().pixels.empty()) return nullptr;
-        if (!profile_b_ || profile_b_->row != info_.profile->row)
-            profile_b_ = row_profile(compare_->b_display(), state_.scene.display.bits, info_.profile->row);
-        return &*profile_b_;
     }
 
     // The scanline profile follows the row under the mouse on A, and keeps the
@@ -474,24 +339,49 @@ private:
     void note_hovered_row() {
         const ImGuiIO& io = ImGui::GetIO();
         if (io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
-        if (const auto pixel = pixel_at(state_.scene.display, shown_a_, io.MousePos.x, io.MousePos.y))
-            state_.profile_row = pixel->second;
+        if (const auto pixel = pixel_at(e_.doc.scene.display, shown_a_, io.MousePos.x, io.MousePos.y))
+            e_.view.profile_row = pixel->second;
     }
 
-    // --script's `probe X Y` and `click X Y`, answered once A is rendered.
-    void answer_probes() {
-        if (!renderer_a_) return;
-        for (const auto& [x, y] : state_.probe_requests) {
-            const PixelProbe probe = readouts_.probe(state_, *renderer_a_, x, y);
-            std::string line = probe.text();
-            for (char& c : line) c = c == '\n' ? '\t' : c;
-            std::printf("probe %s\n", line.c_str());
+    // The polar plot, the profile and the statistics: in the strip under the
+    // display, or beside stacked panes, or under the side panel; the BRDF
+    // views docked beside them (View menu).
+    void draw_plots(const Layout& layout, bool views_shown, bool plots_were_folded) {
+        info_.histogram = panes_ ? panes_->histogram(e_) : nullptr;
+        info_.profile = panes_ ? panes_->profile(e_) : nullptr;
+        info_.profile_b = panes_ ? panes_->profile_of_b(e_) : nullptr;
+        // The BRDF views in the strip's room: its right part under the display;
+        // in place of the plots where they are a column or a cell (too narrow for both).
+        Rect strip = layout.bottom, views = layout.bottom;
+        const bool row = !layout.plots_in_cell && !layout.plots_beside && !layout.plots_under_side;
+        StripShape shape = row ? StripShape::row : StripShape::column;
+        if (views_shown && row) {
+            views.w = std::min(460.0f, strip.w * 0.5f);
+            strip.w -= views.w;
+            views.x = strip.x + strip.w;
+            if (strip.w < 640.0f) shape = StripShape::column;  // too narrow for three columns: one under another
         }
-        for (const auto& [x, y] : state_.pick_requests) readouts_.pick(state_, x, y);
-        answer_readout_requests(state_, readouts_, *renderer_a_, *compare_, *renderer_b_);
-        if (!state_.probe_requests.empty()) std::fflush(stdout);
-        state_.probe_requests.clear();
-        state_.pick_requests.clear();
+        // Under the side panel with the statistics in the band under the display.
+        if (layout.stats.w > 0.0f) {
+            shape = StripShape::plots;
+            draw_stats_band(e_, info_, layout.stats.x, layout.stats.y, layout.stats.w, layout.stats.h);
+        }
+        if (!views_shown || row) draw_bottom_strip(e_, info_, strip.x, strip.y, strip.w, strip.h, shape);
+        draw_brdf_views(e_, panes_ ? panes_->brdf_views() : nullptr, views.x, views.y, views.w, views.h);
+        // Folded or unfolded: the side panel takes its new height next frame.
+        if (e_.view.plots_folded != plots_were_folded) owe_frames(2);
+    }
+
+    void draw_displays(const Layout& layout, float fb_scale) {
+        if (panes_) {
+            info_.scale = draw_display(panes_->panes(e_), panes_->width(), panes_->height(), layout.display, fb_scale,
+                                       &shown_a_);
+            hover_readouts();
+            draw_nonfinite_warning();
+        }
+        const std::string& error = e_.session.messages.error;
+        if (!e_.view.show_panels && !error.empty())
+            ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), error.c_str());
     }
 
     // Over A (not over a panel, not dragging): the probe as a tooltip, and the selection's outline.
@@ -500,20 +390,20 @@ private:
         // Only once the pointer has moved in the window: a pointer parked
         // there (a script's capture under Xvfb) is no one hovering.
         pointer_moved_ |= io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
-        if (!renderer_a_ || !pointer_moved_ || io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
-        const auto pixel = pixel_at(state_.scene.display, shown_a_, io.MousePos.x, io.MousePos.y);
+        if (!pointer_moved_ || io.WantCaptureMouse || ImGui::IsMouseDown(ImGuiMouseButton_Left)) return;
+        const Display& display = e_.doc.scene.display;
+        const auto pixel = pixel_at(display, shown_a_, io.MousePos.x, io.MousePos.y);
         if (!pixel) return;
-        if (const std::vector<int>* ids = readouts_.object_ids(state_.scene, true))
-            draw_selection_outline(*ids, state_.selected_object, state_.scene.display.width,
-                                   state_.scene.display.height, shown_a_);
-        const PixelProbe probe = readouts_.probe(state_, *renderer_a_, pixel->first, pixel->second);
+        if (const std::vector<int>* ids = panes_->object_ids(e_, true))
+            draw_selection_outline(*ids, e_.view.selected_object, display.width, display.height, shown_a_);
+        const PixelProbe probe = panes_->probe(e_, pixel->first, pixel->second);
         ImGui::BeginTooltip();
         const std::string text = probe.text();
         const std::size_t mark = text.find("\nNOT FINITE");
         ImGui::TextUnformatted(text.substr(0, mark).c_str());
         // The probe marks a NaN or infinite pixel in the warning's colour.
         if (mark != std::string::npos) ImGui::TextColored(ImVec4(1.0f, 0.67f, 0.16f, 1.0f), "%s", text.c_str() + mark + 1);
-        ImGui::TextDisabled("light %d; click selects the object", state_.plotted_light);
+        ImGui::TextDisabled("light %d; click selects the object", e_.view.plotted_light);
         ImGui::EndTooltip();
     }
 
@@ -529,49 +419,6 @@ private:
                       nullptr, shown_a_.w - 16.0f);
     }
 
-    // The scene (and B in compare) is rendered only when something changed.
-    void render_if_changed() {
-        if (!state_.scene_changed || !renderer_a_) return;
-        state_.scene_changed = false;
-        const auto start = std::chrono::steady_clock::now();
-        try {
-            render_displays(state_, *renderer_a_, *renderer_b_);
-            readouts_.invalidate();
-            compare_->invalidate();
-            practice_diff_stale_ = true;
-            profile_b_.reset();
-            gl_.Finish();
-            ++info_.renders;
-            if (practice_) practice_->scene_changed(state_.practice, window_.time());
-        } catch (const std::exception& e) {
-            state_.error = e.what();
-        }
-        info_.render_ms = milliseconds_since(start);
-    }
-
-    void draw_displays(const Layout& layout, float fb_scale) {
-        if (renderer_a_) {
-            // A (with --assignment: the student's scene), B and |A - B| in the
-            // A/B split, and the assignment's reference: one size, one magnification.
-            std::vector<Pane> panes = {{renderer_a_->display_texture(),
-                                        practice_ ? "your scene (Ctrl+S saves it)" : "A: the scene (saved, screenshot)"}};
-            if (state_.compare) panes.push_back({renderer_b_->display_texture(), "B: selected object in material B"});
-            if (state_.compare && state_.compare_diff && compare_->texture())
-                panes.push_back({compare_->texture(), compare_->scale_label(state_) + ", " + compare_->pane_count_label()});
-            if (practice_) panes.push_back({reference_->texture(), practice_->reference_label()});
-            if (shows_practice_difference() && practice_diff_)
-                panes.push_back({practice_diff_->texture(), "|yours - reference| x " + std::to_string(practice_diff_scale_) +
-                                                                " (auto), " + std::to_string(practice_diff_count_) +
-                                                                " px on another level"});
-            info_.scale = draw_display(panes, renderer_a_->width(), renderer_a_->height(), layout.display, fb_scale,
-                                       &shown_a_);
-            hover_readouts();
-            draw_nonfinite_warning();
-        }
-        if (!state_.show_panels && !state_.error.empty())
-            ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), state_.error.c_str());
-    }
-
     // Clear the window, draw ImGui (the display is in its background list),
     // write a pending capture of the whole window, show it.
     void present() {
@@ -585,8 +432,8 @@ private:
         if (!pending_capture_.empty()) {
             try {
                 write_png(pending_capture_, read_window(gl_, width, height));
-            } catch (const std::exception& e) {
-                state_.error = e.what();
+            } catch (const std::exception& error) {
+                e_.session.messages.error = error.what();
             }
             pending_capture_.clear();
         }
@@ -603,7 +450,7 @@ private:
     // draw one more frame and capture it.
     void schedule_window_capture() {
         const bool script_done = !script_ || script_->finished();
-        const bool settled = window_.events().frames_owed == 0 && !state_.scene_changed;
+        const bool settled = window_.events().frames_owed == 0 && !e_.session.render_needed;
         if (!script_done || !settled || options_.capture_window.empty() || window_captured_) return;
         pending_capture_ = options_.capture_window;
         window_captured_ = true;
@@ -611,61 +458,49 @@ private:
     }
 
     const ExploreOptions& options_;
-    ExplorerState& state_;
+    Explorer& e_;
     std::optional<Script>& script_;
     Window& window_;
     ImGuiLayer& imgui_;
     const GlApi& gl_;
     FrameInfo& info_;
-    std::unique_ptr<ProgramCache> programs_;             // the context's programs, shared by all below
-    std::unique_ptr<Renderer> renderer_a_, renderer_b_;  // A, and B for the compare split
-    std::unique_ptr<PlaneCurves> plane_curves_;          // the polar plot of .brdf models (GPU)
-    std::unique_ptr<BrdfViews> brdf_views_;              // the "BRDF views" window's numbers (GPU)
-    Readouts readouts_;      // probe, histogram, profile, pick and outline of A
-    std::optional<RowProfile> profile_b_;  // B's levels on the profile's row (reset by each render)
-    std::unique_ptr<CompareView> compare_;  // the A/B count and the |A - B| pane
-    std::unique_ptr<Practice> practice_;  // --assignment
-    std::unique_ptr<PaneTexture> reference_;  // its reference, shown beside A
+    std::unique_ptr<DisplayPanes> panes_;  // null when the renderers could not be made (the error shows)
     static constexpr float kMaxSideExtra = 320.0f;  // a runaway guard: no label is that long
     float side_extra_ = 0.0f;                     // follow_side_panel_content
-    double first_frame_ms_ = 0.0;                 // process start to the first frame shown (--stats)
     float side_last_overflow_ = 0.0f;
     bool side_stuck_ = false;
-    std::unique_ptr<PaneTexture> practice_diff_;  // |A - reference| (update_practice_difference)
-    bool practice_diff_stale_ = true;
-    int practice_diff_scale_ = 1;
-    unsigned long long practice_diff_count_ = 0;
-    Rect shown_a_;           // where A was drawn last (ImGui units)
-    std::string nonfinite_line_;  // "" or the warning over A (explore/nonfinite_view.h)
+    double first_frame_ms_ = 0.0;  // process start to the first frame shown (--stats)
+    Rect shown_a_;                 // where A was drawn last (ImGui units)
+    std::string nonfinite_line_;   // "" or the warning over A (explore/nonfinite_view.h)
     bool moved_while_down_ = false;  // the left button was dragged: no pick on release
     bool pointer_moved_ = false;     // the pointer has moved in the window at least once
-    std::string pending_capture_;  // write the window here after the next frame is drawn
-    bool window_captured_ = false; // --capture-window is taken once
+    std::string pending_capture_;    // write the window here after the next frame is drawn
+    bool window_captured_ = false;   // --capture-window is taken once
 };
 
 }  // namespace
 
 // ---- One explorer: the starting scene, a window with its GL table, ImGui on it ----
 struct ExplorerSession::Parts {
-    ExploreOptions options;  // the Explorer keeps a reference
-    ExplorerState state;
+    ExploreOptions options;  // the frame loop keeps a reference
+    Explorer explorer;
     std::optional<Script> script;
     std::optional<Window> window;
     GlApi gl;
     FrameInfo info;
     std::optional<ImGuiLayer> imgui;
-    std::optional<Explorer> explorer;
+    std::optional<FrameLoop> loop;
 };
 
 std::unique_ptr<ExplorerSession> ExplorerSession::open(const ExploreOptions& options,
-                                                       const std::function<void(ExplorerState&)>& prepare) {
+                                                       const std::function<void(Explorer&)>& prepare) {
     std::unique_ptr<ExplorerSession> session(new ExplorerSession);
     Parts& p = *session->parts_;
     p.options = options;
     // The starting scene and script (before any window, so errors are quick).
     std::optional<grading::Assignment> assignment;
     try {
-        assignment = start_scene(p.state, options.scene_path, options.assignment_path);
+        assignment = start_scene(p.explorer, options.scene_path, options.assignment_path);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return nullptr;
@@ -678,7 +513,7 @@ std::unique_ptr<ExplorerSession> ExplorerSession::open(const ExploreOptions& opt
             return nullptr;
         }
     }
-    if (prepare) prepare(p.state);
+    if (prepare) prepare(p.explorer);
 
     // A window with an OpenGL 3.3 core context (in a browser: WebGL2), and the GL table from it.
     p.window.emplace(options.window_width, options.window_height, "M3055 material explorer");
@@ -695,10 +530,10 @@ std::unique_ptr<ExplorerSession> ExplorerSession::open(const ExploreOptions& opt
     p.info.gl_version = reinterpret_cast<const char*>(p.gl.GetString(GL_VERSION));
     p.info.window_system = glfwGetVersionString();
 
-    // Dear ImGui on the window (its callbacks chain to the window's).
+    // Dear ImGui on the window (its callbacks chain to the window's), then the frame loop.
     p.imgui.emplace(p.window->handle());
-    p.explorer.emplace(p.options, p.state, p.script, *p.window, *p.imgui, p.gl, p.info);
-    if (assignment && !p.explorer->practise(std::move(*assignment))) return nullptr;
+    p.loop.emplace(p.options, p.explorer, p.script, *p.window, *p.imgui, p.gl, p.info);
+    if (assignment && !p.loop->practise(std::move(*assignment))) return nullptr;
     return session;
 }
 
@@ -706,7 +541,7 @@ ExplorerSession::ExplorerSession() : parts_(std::make_unique<Parts>()) {}
 
 ExplorerSession::~ExplorerSession() {
     // In reverse order of making: the GL objects while the context is current.
-    parts_->explorer.reset();
+    parts_->loop.reset();
     parts_->imgui.reset();
     parts_->window.reset();
 }
@@ -715,30 +550,35 @@ ExplorerSession::~ExplorerSession() {
 // return at once, the page calls again on its next animation frame), then
 // draw one frame when one is due.
 bool ExplorerSession::step() {
-    Explorer& explorer = *parts_->explorer;
-    if (explorer.done()) return false;
-    explorer.wait_for_work();
-    if (explorer.frame_needed()) explorer.draw_frame();
+    FrameLoop& loop = *parts_->loop;
+    if (loop.done()) return false;
+    loop.wait_for_work();
+    if (loop.frame_needed()) loop.draw_frame();
     return true;
 }
 
-bool ExplorerSession::idle() const { return !parts_->explorer->frame_needed(); }
+bool ExplorerSession::idle() const { return !parts_->loop->frame_needed(); }
 
-int ExplorerSession::finish() { return parts_->explorer->finish(); }
+int ExplorerSession::finish() { return parts_->loop->finish(); }
 
-ExplorerState& ExplorerSession::state() { return parts_->state; }
+Explorer& ExplorerSession::explorer() { return parts_->explorer; }
 
 long ExplorerSession::renders() const { return parts_->info.renders; }
 
 const std::vector<double>& ExplorerSession::render_frame_ms() const { return parts_->info.render_frame_ms; }
 
-Rgb8Image ExplorerSession::render_display_now() { return parts_->explorer->render_display_now(); }
-
-std::string ExplorerSession::grade_now() { return parts_->explorer->grade_now(); }
-
-bool ExplorerSession::practise(grading::Assignment assignment) {
-    return parts_->explorer->practise(std::move(assignment));
+Rgb8Image ExplorerSession::render_display_now() {
+    DisplayPanes* panes = parts_->loop->panes();
+    if (!panes) throw std::runtime_error(parts_->explorer.session.messages.error);
+    return panes->render_display_now(parts_->explorer);
 }
+
+std::string ExplorerSession::grade_now() {
+    DisplayPanes* panes = parts_->loop->panes();
+    return panes ? panes->grade_now(parts_->explorer) : "";
+}
+
+bool ExplorerSession::practise(grading::Assignment assignment) { return parts_->loop->practise(std::move(assignment)); }
 
 int run_explorer(const ExploreOptions& options) {
     const std::unique_ptr<ExplorerSession> session = ExplorerSession::open(options);

@@ -20,7 +20,7 @@ struct ExploreOptions {
     std::string capture_window;  // --capture-window: PNG of the whole window when the script
                                  // ends (or after the first frames without a script)
     std::string stats_path;      // --stats: JSON with frame counts, written at exit
-    bool compile_at_once = false;  // --compile-at-once: no deferral (the stall before issue 12, to compare)
+    bool compile_at_once = false;  // --compile-at-once: no deferral (compile, then draw: to compare)
     bool allow_brdf = false;     // --allow-brdf: with --assignment, grade .brdf materials as grade --allow-brdf
     // 0 x 0: the monitor's whole work area (1920 x 1080 on such a screen: the
     // room for the display at 2x beside the panels); 1500 x 940 without one.
@@ -29,7 +29,7 @@ struct ExploreOptions {
 };
 
 namespace explore {
-struct ExplorerState;
+struct Explorer;
 }
 
 // One running explorer for a frame loop that someone else owns: the desktop's
@@ -38,9 +38,9 @@ class ExplorerSession {
 public:
     // The starting scene (and script), the window with its GL table, ImGui and
     // the renderers. nullptr, the reason printed (one line), when any fails.
-    // `prepare` sees the state before the window opens (the page's platform hooks).
+    // `prepare` sees the explorer before the window opens (the page's platform hooks).
     static std::unique_ptr<ExplorerSession> open(const ExploreOptions& options,
-                                                 const std::function<void(explore::ExplorerState&)>& prepare = {});
+                                                 const std::function<void(explore::Explorer&)>& prepare = {});
     ~ExplorerSession();
     ExplorerSession(const ExplorerSession&) = delete;
     ExplorerSession& operator=(const ExplorerSession&) = delete;
@@ -53,7 +53,7 @@ public:
     // rendered (the page's m3055.settled()).
     bool idle() const;
     int finish();  // --stats; the exit status
-    explore::ExplorerState& state();
+    explore::Explorer& explorer();
     long renders() const;  // scene renders so far (a changed scene drawn once each)
     // The CPU time of each frame that rendered a changed scene (ms; --stats' render_frame_ms).
     const std::vector<double>& render_frame_ms() const;

@@ -45,10 +45,10 @@ void set_azimuth(Light& light, const dvec3& subject, double azimuth_deg) {
 
 }  // namespace
 
-void light_plot(ExplorerState& state) {
+void light_plot(Explorer& explorer) {
     static int dragged = -1;
-    const auto& lights = state.scene.lights;
-    const dvec3 subject = subject_centre(state.scene);
+    const auto& lights = explorer.doc.scene.lights;
+    const dvec3 subject = subject_centre(explorer.doc.scene);
     const float size = 150.0f, reach = size * 0.5f - 14.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     const ImVec2 centre(corner.x + size * 0.5f, corner.y + size * 0.5f);
@@ -72,7 +72,7 @@ void light_plot(ExplorerState& state) {
         Light turned = lights[std::size_t(dragged)];
         set_azimuth(turned, subject, std::atan2(mouse.x - centre.x, mouse.y - centre.y) / kDegree);
         if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f)
-            edit_light(state, dragged, turned);
+            explorer.commands.push(command::SetLight{dragged, turned});
     }
     if (!ImGui::IsItemActive()) dragged = -1;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
@@ -88,7 +88,7 @@ void light_plot(ExplorerState& state) {
         const std::string label = light.name.empty() ? std::to_string(i) : light.name;
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
-    const KeyFillRatio ratio = key_to_fill_ratio(state.scene);
+    const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene);
     ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
     tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
             "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");

@@ -70,8 +70,8 @@ void check_rows(const PracticeStatus& p) {
 
 }  // namespace
 
-void assignment_section(ExplorerState& state) {
-    const PracticeStatus& p = state.practice;
+void assignment_section(Explorer& explorer) {
+    const PracticeStatus& p = explorer.session.practice;
     ImGui::TextWrapped("%s", p.title.c_str());
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("beside your scene: the reference (%s)", p.reference.c_str());

@@ -5,6 +5,7 @@
 #include "explore_ui/panels.h"
 
 #include "brdf_file/brdf_model.h"
+#include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore_ui/widgets.h"
 
@@ -17,32 +18,31 @@ namespace {
 const ImVec4 kRed(1, 0.43f, 0.43f, 1);
 }
 
-void open_brdf_dialog(ExplorerState& state) {
-    if (state.open_brdf_requested && state.platform.pick_file) {  // the browser's file chooser
-        state.open_brdf_requested = false;
-        state.platform.pick_file();
-        return;
-    }
-    if (state.open_brdf_requested) {
-        state.open_brdf_requested = false;
-        state.brdf_error.clear();
+void open_brdf_dialog(Explorer& explorer) {
+    if (explorer.view.dialog == Dialog::open_brdf) {
+        explorer.view.dialog = Dialog::none;
+        if (explorer.session.platform.pick_file) {  // the browser's file chooser
+            explorer.session.platform.pick_file();
+            return;
+        }
+        explorer.session.messages.brdf_error.clear();
         ImGui::OpenPopup("Open BRDF");
     }
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing,
                             ImVec2(0.5f, 0.5f));
     if (!ImGui::BeginPopupModal("Open BRDF", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::Text("A BRDF Explorer .brdf file for object %d (its sliders come from the file).", state.selected_object);
+    ImGui::Text("A BRDF Explorer .brdf file for object %d (its sliders come from the file).", explorer.view.selected_object);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(420.0f);
-    const bool enter = ImGui::InputText("file", &state.brdf_path, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (!state.brdf_error.empty()) {
+    const bool enter = ImGui::InputText("file", &explorer.view.brdf_path, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (!explorer.session.messages.brdf_error.empty()) {
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
-        ImGui::TextColored(kRed, "%s", state.brdf_error.c_str());
+        ImGui::TextColored(kRed, "%s", explorer.session.messages.brdf_error.c_str());
         ImGui::PopTextWrapPos();
     }
     if (ImGui::Button("Open") || enter) {
-        if (open_brdf(state, state.brdf_path)) ImGui::CloseCurrentPopup();
+        if (run_command(explorer, command::OpenBrdf{explorer.view.brdf_path})) ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     const bool escape = !ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
@@ -50,7 +50,7 @@ void open_brdf_dialog(ExplorerState& state) {
     ImGui::EndPopup();
 }
 
-void brdf_material_note(const ExplorerState& state, const Material& material) {
+void brdf_material_note(const Explorer& explorer, const Material& material) {
     const BrdfModel* model = find_brdf_model(material.model());
     if (model) {
         ImGui::PushTextWrapPos(0.0f);  // a long path wraps instead of running off the panel
@@ -58,14 +58,14 @@ void brdf_material_note(const ExplorerState& state, const Material& material) {
         ImGui::PopTextWrapPos();
         tooltip("Edit the .brdf in any editor and save: it is re-read and recompiled within half a second.");
     }
-    if (state.brdf_error.empty()) return;
+    if (explorer.session.messages.brdf_error.empty()) return;
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kRed, "%s", state.brdf_error.c_str());
+    ImGui::TextColored(kRed, "%s", explorer.session.messages.brdf_error.c_str());
     ImGui::PopTextWrapPos();
     // The error may be about a file another object (or an undone step) uses:
     // say whose it is rather than seem to blame the selected material.
-    if (model && model->path == state.brdf_error_path) ImGui::TextDisabled("(showing the last version that compiled)");
-    else ImGui::TextDisabled("(not the selected object's material: %s)", state.brdf_error_path.c_str());
+    if (model && model->path == explorer.session.messages.brdf_path) ImGui::TextDisabled("(showing the last version that compiled)");
+    else ImGui::TextDisabled("(not the selected object's material: %s)", explorer.session.messages.brdf_path.c_str());
 }
 
 }  // namespace m3055::explore

@@ -121,18 +121,18 @@ void albedo_view(const AlbedoCurve& curve) {
 }
 
 // Orthographic view of the lobe turned by yaw (about N) and pitch (elevation).
-void lobe_view(ExplorerState& state, const Lobe3d& lobe) {
+void lobe_view(Explorer& explorer, const Lobe3d& lobe) {
     const float size = side_of_square() + 40.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("lobe", ImVec2(size, size * 0.8f));
     if (ImGui::IsItemActive()) {  // a drag turns it
-        state.lobe_yaw += ImGui::GetIO().MouseDelta.x * 0.01f;
-        state.lobe_pitch = std::clamp(state.lobe_pitch + ImGui::GetIO().MouseDelta.y * 0.01f, -1.5f, 1.5f);
+        explorer.view.lobe_yaw += ImGui::GetIO().MouseDelta.x * 0.01f;
+        explorer.view.lobe_pitch = std::clamp(explorer.view.lobe_pitch + ImGui::GetIO().MouseDelta.y * 0.01f, -1.5f, 1.5f);
     }
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 centre(corner.x + size * 0.5f, corner.y + size * 0.6f);
-    const double cy = std::cos(state.lobe_yaw), sy = std::sin(state.lobe_yaw);
-    const double cp = std::cos(state.lobe_pitch), sp = std::sin(state.lobe_pitch);
+    const double cy = std::cos(explorer.view.lobe_yaw), sy = std::sin(explorer.view.lobe_yaw);
+    const double cp = std::cos(explorer.view.lobe_pitch), sp = std::sin(explorer.view.lobe_pitch);
     const float scale = size * 0.42f;
     const auto project = [&](const dvec3& p) {
         const double x = p.x * cy - p.y * sy, y = p.x * sy + p.y * cy;
@@ -159,9 +159,9 @@ void lobe_view(ExplorerState& state, const Lobe3d& lobe) {
 
 }  // namespace
 
-void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache, float x, float y, float width, float height) {
-    if (!state.show_brdf_views || !views_cache) return;
-    const Material* material = selected_material(state);
+void draw_brdf_views(Explorer& explorer, BrdfViews* views_cache, float x, float y, float width, float height) {
+    if (!explorer.view.show_brdf_views || !views_cache) return;
+    const Material* material = selected_material(explorer);
     // Docked beside the plots (the strip's room: explore.cpp), opaque, fixed:
     // never over the display.
     ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -169,17 +169,17 @@ void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache, float x, floa
     ImGui::SetNextWindowBgAlpha(1.0f);
     constexpr ImGuiWindowFlags kDocked = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
                                          ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
-    if (!ImGui::Begin("BRDF views", &state.show_brdf_views, kDocked) || !material) {
+    if (!ImGui::Begin("BRDF views", &explorer.view.show_brdf_views, kDocked) || !material) {
         ImGui::End();
         return;
     }
-    ImGui::Text("object %d (%s)", state.selected_object, material->model().label.c_str());
+    ImGui::Text("object %d (%s)", explorer.view.selected_object, material->model().label.c_str());
     try {
         BrdfViews& views = *views_cache;
         if (ImGui::BeginTabBar("views")) {
             if (ImGui::BeginTabItem("theta_h / theta_d")) {
-                ImGui::Checkbox("log colour", &state.views_log);
-                slice_view(views.slice(*material), state.views_log);
+                ImGui::Checkbox("log colour", &explorer.view.views_log);
+                slice_view(views.slice(*material), explorer.view.views_log);
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("albedo")) {
@@ -187,11 +187,11 @@ void draw_brdf_views(ExplorerState& state, BrdfViews* views_cache, float x, floa
                 ImGui::EndTabItem();
             }
             if (ImGui::BeginTabItem("3D lobe")) {
-                const double incidence = state.scene.lights.empty() ? 45.0 : std::min(89.0,
-                    incidence_at_target(state.scene.lights[std::size_t(std::clamp(state.plotted_light, 0,
-                        int(state.scene.lights.size()) - 1))], state.scene.camera));
+                const double incidence = explorer.doc.scene.lights.empty() ? 45.0 : std::min(89.0,
+                    incidence_at_target(explorer.doc.scene.lights[std::size_t(std::clamp(explorer.view.plotted_light, 0,
+                        int(explorer.doc.scene.lights.size()) - 1))], explorer.doc.scene.camera));
                 ImGui::Text("incidence %.1f deg (the polar plot's light)", incidence);
-                lobe_view(state, views.lobe(*material, incidence));
+                lobe_view(explorer, views.lobe(*material, incidence));
                 ImGui::EndTabItem();
             }
             ImGui::EndTabBar();

@@ -23,23 +23,23 @@ constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
 
 // A section's header: open at first when `open_at_start`; a script's
 // `section NAME open|closed` opens or closes it as a click would.
-bool header(const ExplorerState& state, const char* label, bool open_at_start) {
-    const auto request = state.section_requests.find(label);
-    if (request != state.section_requests.end()) ImGui::SetNextItemOpen(request->second, ImGuiCond_Always);
+bool header(const Explorer& explorer, const char* label, bool open_at_start) {
+    const auto request = explorer.view.section_requests.find(label);
+    if (request != explorer.view.section_requests.end()) ImGui::SetNextItemOpen(request->second, ImGuiCond_Always);
     else if (open_at_start) ImGui::SetNextItemOpen(true, ImGuiCond_Once);
     return ImGui::CollapsingHeader(label);
 }
 
-void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, float width,
+void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, float width,
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     ImGui::Begin("M3055 material explorer", nullptr, kFixed | ImGuiWindowFlags_MenuBar);
-    draw_menu_bar(state);
+    draw_menu_bar(explorer);
     // The sections scroll in a region of their own; an error shows under it
     // (never inserted above the controls: they keep their place).
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float error_h = state.error.empty() ? 0.0f : 4.0f * line;
+    const float error_h = explorer.session.messages.error.empty() ? 0.0f : 4.0f * line;
     ImGui::BeginChild("sections", ImVec2(0.0f, -error_h), false);
     // Room for the labels on the right: 110 px, and what the panel grew by
     // (its width follows its content; the widgets keep theirs).
@@ -47,16 +47,16 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
     // Narrower than usual (three panes at 1280 x 720): labels above their widgets.
     set_narrow_panel(width < kSideWidth - 0.5f);
 
-    if (state.practice.active && header(state, "Assignment", true)) assignment_section(state);
-    if (header(state, "Display", true)) display_section(state, info);
-    if (header(state, "Material", true)) material_section(state);
-    if (header(state, "Lights", true)) lights_section(state);
-    if (header(state, "Spectra", false)) spectra_section(state);
-    if (header(state, "Objects and figure presets", false)) objects_section(state);
-    if (header(state, "Camera", false)) camera_section(state);
-    if (header(state, "A/B compare", false)) compare_section(state);
-    if (header(state, "File", true)) file_section(state);
-    state.section_requests.clear();
+    if (explorer.session.practice.active && header(explorer, "Assignment", true)) assignment_section(explorer);
+    if (header(explorer, "Display", true)) display_section(explorer, info);
+    if (header(explorer, "Material", true)) material_section(explorer);
+    if (header(explorer, "Lights", true)) lights_section(explorer);
+    if (header(explorer, "Spectra", false)) spectra_section(explorer);
+    if (header(explorer, "Objects and figure presets", false)) objects_section(explorer);
+    if (header(explorer, "Camera", false)) camera_section(explorer);
+    if (header(explorer, "A/B compare", false)) compare_section(explorer);
+    if (header(explorer, "File", true)) file_section(explorer);
+    explorer.view.section_requests.clear();
     ImGui::PopItemWidth();
     // Text or a label past the region's visible edge (clip_check.h): the
     // frame loop widens the panel by as much.
@@ -64,13 +64,13 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
     info.side_overflow = std::max(0.0f, sections->DC.CursorMaxPos.x - sections->InnerClipRect.Max.x);
     ImGui::EndChild();
 
-    if (!state.error.empty()) {
+    if (!explorer.session.messages.error.empty()) {
         ImGui::BeginChild("error", ImVec2(0.0f, 0.0f), false);
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
-        ImGui::TextWrapped("Error: %s", state.error.c_str());
+        ImGui::TextWrapped("Error: %s", explorer.session.messages.error.c_str());
         ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) state.error.clear();
+        if (ImGui::SmallButton("dismiss")) explorer.session.messages.error.clear();
         tooltip("Hides this message (it changes nothing in the scene).");
         ImGui::EndChild();
     }
@@ -102,8 +102,8 @@ void level_histogram_view(const LevelHistogram& h, int bits) {
 namespace {
 
 // Timings, the display's scale, the A/B count.
-void stats_numbers(const ExplorerState& state, const FrameInfo& info) {
-    const Display& d = state.scene.display;
+void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
+    const Display& d = explorer.doc.scene.display;
     // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
     ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
     ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
@@ -120,8 +120,8 @@ void stats_numbers(const ExplorerState& state, const FrameInfo& info) {
 
 // The last message (saved, screenshot, loaded: with the full path) where it
 // is seen, and the diagnostics.
-void stats_messages(const ExplorerState& state, const FrameInfo& info) {
-    if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+void stats_messages(const Explorer& explorer, const FrameInfo& info) {
+    if (!explorer.session.messages.status.empty()) ImGui::TextWrapped("%s", explorer.session.messages.status.c_str());
     if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
         ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
         ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
@@ -134,24 +134,24 @@ void stats_messages(const ExplorerState& state, const FrameInfo& info) {
 
 // The strip's right column: timings, the display's scale, the A/B count, the
 // level histogram, the last message; scrolls on its own when the strip is low.
-void stats_column(const ExplorerState& state, const FrameInfo& info) {
-    stats_numbers(state, info);
-    if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
-    stats_messages(state, info);
+void stats_column(const Explorer& explorer, const FrameInfo& info) {
+    stats_numbers(explorer, info);
+    if (info.histogram) level_histogram_view(*info.histogram, explorer.doc.scene.display.bits);
+    stats_messages(explorer, info);
 }
 
-void draw_stats_band(const ExplorerState& state, const FrameInfo& info, float x, float y, float width, float height) {
+void draw_stats_band(const Explorer& explorer, const FrameInfo& info, float x, float y, float width, float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     // Scrolls when the diagnostics are open (or a message is long).
     ImGui::Begin("Statistics", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar);
     if (ImGui::BeginTable("statistics", 3, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableNextColumn();
-        stats_numbers(state, info);
+        stats_numbers(explorer, info);
         ImGui::TableNextColumn();
-        if (info.histogram) level_histogram_view(*info.histogram, state.scene.display.bits);
+        if (info.histogram) level_histogram_view(*info.histogram, explorer.doc.scene.display.bits);
         ImGui::TableNextColumn();
-        stats_messages(state, info);
+        stats_messages(explorer, info);
         ImGui::EndTable();
     }
     ImGui::End();
@@ -159,7 +159,7 @@ void draw_stats_band(const ExplorerState& state, const FrameInfo& info, float x,
 
 // Three columns sized from the room there is (1280 x 720 included): the polar
 // plot, the scanline profile, the statistics.
-void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float y,
                        float width, float height, StripShape shape) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
     ImGui::SetNextWindowSize(ImVec2(width, height));
@@ -172,9 +172,9 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     if (shape == StripShape::plots) {
         // Under the side panel: its title bar's arrow folds it (explore.cpp
         // then gives the column to the side panel).
-        ImGui::SetNextWindowCollapsed(state.plots_folded, ImGuiCond_Always);
+        ImGui::SetNextWindowCollapsed(explorer.view.plots_folded, ImGuiCond_Always);
         const bool open = ImGui::Begin(kPlotsTitle, nullptr, (kFixed & ~ImGuiWindowFlags_NoCollapse) | scrolling);
-        state.plots_folded = ImGui::IsWindowCollapsed();
+        explorer.view.plots_folded = ImGui::IsWindowCollapsed();
         if (!open) {
             ImGui::End();
             return;
@@ -189,7 +189,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.7f);
         ImGui::BeginGroup();
-        plot_section(state, info.plane_curves, room.x, plot_h);
+        plot_section(explorer, info.plane_curves, room.x, plot_h);
         ImGui::EndGroup();
         profile_plot(info.profile, info.profile_b, room.x,
                      std::max(40.0f, ImGui::GetContentRegionAvail().y - 1.5f * line));
@@ -200,14 +200,14 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.45f), profile_h = std::max(100.0f, room.y * 0.22f);
         ImGui::BeginGroup();
-        plot_section(state, info.plane_curves, room.x, plot_h);
+        plot_section(explorer, info.plane_curves, room.x, plot_h);
         ImGui::EndGroup();
         profile_plot(info.profile, info.profile_b, room.x, profile_h - 2.0f * line);
         // At least eight lines of statistics: below the window's edge when the
         // column is low, where the column's scrolling reaches them.
         const float stats_h = std::max(ImGui::GetContentRegionAvail().y, 8.0f * line);
         ImGui::BeginChild("stats", ImVec2(0.0f, stats_h));
-        stats_column(state, info);
+        stats_column(explorer, info);
         ImGui::EndChild();
         ImGui::End();
         return;
@@ -216,7 +216,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
     const float plots_w = std::max(200.0f, room.x - stats_w - 2.0f * gap);
 
     ImGui::BeginGroup();  // at least the width of its header's three controls
-    plot_section(state, info.plane_curves, std::max(plots_w * 0.55f, 320.0f), room.y);
+    plot_section(explorer, info.plane_curves, std::max(plots_w * 0.55f, 320.0f), room.y);
     ImGui::EndGroup();
 
     ImGui::SameLine(0.0f, gap);
@@ -227,7 +227,7 @@ void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, flo
 
     ImGui::SameLine(0.0f, gap);
     ImGui::BeginChild("stats", ImVec2(0.0f, room.y));
-    stats_column(state, info);
+    stats_column(explorer, info);
     ImGui::EndChild();
     ImGui::End();
 }

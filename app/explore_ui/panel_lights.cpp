@@ -167,7 +167,7 @@ bool light_editor(Light& light, int index, const Material* material, std::string
 
 }  // namespace
 
-void lights_section(ExplorerState& state) {
+void lights_section(Explorer& explorer) {
     ImGui::TextUnformatted("presets:");
     int column = 0;
     for (LightPreset preset : kAllLightPresets) {
@@ -176,11 +176,11 @@ void lights_section(ExplorerState& state) {
         if (two && column++ % 2) ImGui::SameLine();
         const float width = ImGui::GetContentRegionAvail().x * (two && column % 2 ? 0.49f : 1.0f);
         if (ImGui::Button(preset_label(preset), ImVec2(width, 0))) {
-            apply_light_preset(state, preset);
+            explorer.commands.push(command::ApplyLightPreset{preset});
         }
         tooltip("Replaces all lights with this preset (undoable with Ctrl+Z).");
     }
-    auto& lights = state.scene.lights;
+    auto& lights = explorer.doc.scene.lights;
     for (int i = 0; i < static_cast<int>(lights.size()); ++i) {
         ImGui::PushID(i);
         const std::string title = "light " + std::to_string(i) +
@@ -192,31 +192,31 @@ void lights_section(ExplorerState& state) {
                                   "###light";
         ImGui::SetNextItemOpen(i == 0, ImGuiCond_Once);
         const bool open = ImGui::TreeNode(title.c_str());
-        if (ImGui::IsItemClicked()) state.selected_light = i;
+        if (ImGui::IsItemClicked()) explorer.view.selected_light = i;
         ImGui::SameLine(ImGui::GetContentRegionMax().x - 60);
         const bool removed = ImGui::SmallButton("remove");
         tooltip("Removes this light (undoable).");
         if (open) {
             Light edited = lights[std::size_t(i)];
-            if (!removed && light_editor(edited, i, selected_material(state), state.error)) {
-                edit_light(state, i, edited);
-                state.selected_light = i;
+            if (!removed && light_editor(edited, i, selected_material(explorer), explorer.session.messages.error)) {
+                explorer.commands.push(command::SetLight{i, edited});
+                explorer.view.selected_light = i;
             }
             ImGui::TreePop();
         }
         ImGui::PopID();
         if (removed) {
-            remove_light(state, i);
+            explorer.commands.push(command::RemoveLight{i});
             break;
         }
     }
     ImGui::BeginDisabled(static_cast<int>(lights.size()) >= kMaxExplorerLights);
-    if (ImGui::Button("+ add light")) add_light(state);
+    if (ImGui::Button("+ add light")) explorer.commands.push(command::AddLight{});
     tooltip("Adds a copy of the single-key light, at most 8 (undoable).");
     ImGui::EndDisabled();
     same_line_if_fits(ImGui::CalcTextSize("8 of 8").x);
     ImGui::TextDisabled("%zu of %d", lights.size(), kMaxExplorerLights);
-    if (!lights.empty()) light_plot(state);
+    if (!lights.empty()) light_plot(explorer);
 }
 
 }  // namespace m3055::explore

@@ -23,7 +23,7 @@ namespace m3055::explore {
 namespace {
 
 // "meaning\nrange (citation)" for a parameter's tooltip.
-std::string tooltip(const ParamSpec& param) {
+std::string param_tooltip(const ParamSpec& param) {
     std::string text = param.help;
     if (param.kind == ParamKind::number) text += "\n" + param.range.text();
     if (param.kind == ParamKind::colour) text += "\nRGB, each in [0, 1]";
@@ -32,7 +32,7 @@ std::string tooltip(const ParamSpec& param) {
 }
 
 void show_tooltip(const ParamSpec& param) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip(param).c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", param_tooltip(param).c_str());
 }
 
 // A choice; when a lobe list's form follows it and the key changes, the
@@ -176,18 +176,18 @@ bool material_editor(Material& material, std::string& action) {
     return changed;
 }
 
-void material_section(ExplorerState& state) {
-    Material* material = selected_material(state);
+void material_section(Explorer& explorer) {
+    Material* material = selected_material(explorer);
     if (!material) return;
-    ImGui::TextWrapped("object %d of %zu (choose in Objects)", state.selected_object,
-                state.scene.objects.size());
-    brdf_material_note(state, *material);
+    ImGui::TextWrapped("object %d of %zu (choose in Objects)", explorer.view.selected_object,
+                explorer.doc.scene.objects.size());
+    brdf_material_note(explorer, *material);
     Material edited = *material;
     std::string action;
-    if (material_editor(edited, action)) edit_material(state, edited, action);
+    if (material_editor(edited, action)) explorer.commands.push(command::SetMaterial{explorer.view.selected_object, edited, action});
     else if (material->model().family == Family::metal) {
         // docs/spec.md#72-measured-metals: what assumption 3 costs, side by side.
-        if (ImGui::Button("A/B: F(lambda, 0) vs full eq. 19")) compare_fresnel(state);
+        if (ImGui::Button("A/B: F(lambda, 0) vs full eq. 19")) explorer.commands.push(command::CompareFresnel{});
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The split on: A with the paper's F(lambda, 0) (assumption 3), B with the\n"
                               "full eq. 19 for the metal's complex index (gold if it names no conductor).");

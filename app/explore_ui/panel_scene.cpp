@@ -17,32 +17,32 @@ namespace m3055::explore {
 
 bool material_editor(Material& material, std::string& action);  // panel_material.cpp
 
-void display_section(ExplorerState& state, const FrameInfo& info) {
-    Display display = state.scene.display;  // edited here, taken by edit_display
-    if (ImGui::Button("M3055 (512 x 320, 5 bits)")) set_display_m3055(state);
+void display_section(Explorer& explorer, const FrameInfo& info) {
+    Display display = explorer.doc.scene.display;  // edited here, taken by edit_display
+    if (ImGui::Button("M3055 (512 x 320, 5 bits)")) explorer.commands.push(command::SetDisplay{m3055_display(explorer.doc.scene.display), "display M3055"});
     tooltip("The paper's display: 512 x 320 dots, 5 bits (32 levels) per channel.");
     same_line_if_fits(button_width("Modern (window, 8 bits)"));
-    if (ImGui::Button("Modern (window, 8 bits)")) set_display_modern(state, info.free_width, info.free_height);
+    if (ImGui::Button("Modern (window, 8 bits)")) explorer.commands.push(command::SetDisplay{modern_display(explorer.doc.scene.display, info.free_width, info.free_height), "display modern"});
     tooltip("A display the size of the free area of the window, 8 bits (256 levels) per channel.");
     int size[2] = {display.width, display.height};
     if (ImGui::InputInt2(field("width, height").c_str(), size, ImGuiInputTextFlags_EnterReturnsTrue)) {
         display.width = std::clamp(size[0], 1, kMaxDisplaySize);
         display.height = std::clamp(size[1], 1, kMaxDisplaySize);
-        edit_display(state, display);
+        explorer.commands.push(command::SetDisplay{display, ""});
     }
     tooltip("the display's size in dots, each in [1, 8192] (Enter applies; spec section 2)");
-    if (ImGui::SliderInt(field("bits").c_str(), &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) edit_display(state, display);
+    if (ImGui::SliderInt(field("bits").c_str(), &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) explorer.commands.push(command::SetDisplay{display, ""});
     tooltip("bits per channel, in [1, 8]: the M3055 has 5 (32 levels; spec section 2)");
     if (!narrow_panel()) ImGui::SameLine();  // narrow: the slider has the whole row
     ImGui::TextDisabled("%d levels", 1 << display.bits);
-    if (checkbox("ordered dithering (4x4 Bayer)", &display.dither)) edit_display(state, display);
+    if (checkbox("ordered dithering (4x4 Bayer)", &display.dither)) explorer.commands.push(command::SetDisplay{display, ""});
     tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
-    dvec3 background = state.scene.background;
-    if (color_edit("background", &background)) set_background(state, background);
+    dvec3 background = explorer.doc.scene.background;
+    if (color_edit("background", &background)) explorer.commands.push(command::SetBackground{background});
     tooltip("the colour behind the objects, RGB in [0, 1]; translucent objects blend over it");
 }
 
-void objects_section(ExplorerState& state) {
+void objects_section(Explorer& explorer) {
     ImGui::TextWrapped("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
@@ -51,26 +51,26 @@ void objects_section(ExplorerState& state) {
         // Five a row; on a narrow panel as many as fit.
         const bool row_start = n++ % 5 == 0;
         if (n > 1 && (!row_start || narrow_panel())) same_line_if_fits(button_width(label.c_str()));
-        if (ImGui::Button(label.c_str())) load_figure(state, figure.name);
+        if (ImGui::Button(label.c_str())) explorer.commands.push(command::LoadFigure{figure.name});
         tooltip("Replaces the scene with " + figure.name + ".json (undoable with Ctrl+Z).");
     }
     ImGui::Separator();
-    auto& objects = state.scene.objects;
+    auto& objects = explorer.doc.scene.objects;
     for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
         ImGui::PushID(i);
         const std::string label = std::string(to_string(objects[i].shape)) + " " + std::to_string(i) + ": " +
                                   objects[i].material.shown_name();
-        if (ImGui::Selectable(label.c_str(), state.selected_object == i)) state.selected_object = i;
+        if (ImGui::Selectable(label.c_str(), explorer.view.selected_object == i)) explorer.view.selected_object = i;
         tooltip("Select: the Material panel edits this object (a click on it in the display does the same).");
-        if (state.selected_object == i) {
+        if (explorer.view.selected_object == i) {
             Object edited = objects[std::size_t(i)];
-            if (shape_editor(edited)) edit_object(state, i, edited);  // shape selector and the shape's fields
+            if (shape_editor(edited)) explorer.commands.push(command::SetObject{i, edited});  // shape selector and the shape's fields
             ImGui::BeginDisabled(objects.size() <= 1);
             const bool removed = ImGui::SmallButton("remove this object");
             tooltip("Removes it from the scene (undoable); the last object stays.");
             ImGui::EndDisabled();
             if (removed) {
-                remove_object(state, i);
+                explorer.commands.push(command::RemoveObject{i});
                 ImGui::PopID();
                 break;
             }
@@ -80,106 +80,106 @@ void objects_section(ExplorerState& state) {
     ImGui::TextUnformatted("add:");
     for (const char* name : {"sphere", "plane", "cube", "cylinder", "torus"}) {
         same_line_if_fits(button_width((std::string("+ ") + name).c_str()));
-        if (ImGui::SmallButton((std::string("+ ") + name).c_str())) add_object(state, *parse_shape(name));
+        if (ImGui::SmallButton((std::string("+ ") + name).c_str())) explorer.commands.push(command::AddObject{*parse_shape(name)});
         tooltip(std::string("Adds a ") + name + " beside the others" +
                 (std::string(name) == "plane" ? " (a floor under all)." : "."));
     }
 }
 
-void camera_section(ExplorerState& state) {
-    Camera camera = state.scene.camera;  // edited here, taken by edit_camera
+void camera_section(Explorer& explorer) {
+    Camera camera = explorer.doc.scene.camera;  // edited here, taken by edit_camera
     int projection = static_cast<int>(camera.projection);
     if (ImGui::Combo(field("projection").c_str(), &projection, "perspective\0orthographic\0")) {
         camera.projection = static_cast<Projection>(projection);
-        edit_camera(state, camera);
+        explorer.commands.push(command::SetCamera{camera});
     }
     tooltip("Perspective (a field of view) or orthographic (a view height): spec section 3.");
     if (camera.projection == Projection::perspective) {
-        if (slider_double("fov y", &camera.fov_y_deg, 1.0, 170.0, "%.1f deg")) edit_camera(state, camera);
+        if (slider_double("fov y", &camera.fov_y_deg, 1.0, 170.0, "%.1f deg")) explorer.commands.push(command::SetCamera{camera});
         tooltip("The vertical field of view in degrees, 1 to 170 here (the format allows (0, 180)).");
     } else {
-        if (slider_double("view height", &camera.height, 0.01, 100.0, "%.3f", true)) edit_camera(state, camera);
+        if (slider_double("view height", &camera.height, 0.01, 100.0, "%.3f", true)) explorer.commands.push(command::SetCamera{camera});
         tooltip("The world-space height the view shows, 0.01 to 100 here (> 0 in the format; logarithmic).");
     }
     double p[3] = {camera.position.x, camera.position.y, camera.position.z};
     if (ImGui::DragScalarN(field("position").c_str(), ImGuiDataType_Double, p, 3, 0.05f)) {
         const dvec3 moved(p[0], p[1], p[2]);
         if (moved != camera.target) camera.position = moved;  // docs/spec.md#7-scene-files: position != target
-        edit_camera(state, camera);
+        explorer.commands.push(command::SetCamera{camera});
     }
     tooltip("The eye: x, y, z in scene units; it must differ from the target (drag on the display orbits it).");
     double t[3] = {camera.target.x, camera.target.y, camera.target.z};
     if (ImGui::DragScalarN(field("target").c_str(), ImGuiDataType_Double, t, 3, 0.05f)) {
         const dvec3 moved(t[0], t[1], t[2]);
         if (moved != camera.position) camera.target = moved;
-        edit_camera(state, camera);
+        explorer.commands.push(command::SetCamera{camera});
     }
     tooltip("The point looked at and orbited around: x, y, z in scene units.");
-    if (ImGui::Button("Reset camera (R)")) reset_camera(state);
+    if (ImGui::Button("Reset camera (R)")) explorer.commands.push(command::ResetCamera{});
     tooltip("Back to the camera the scene was loaded with.");
     hint("Drag on the display to orbit around the target; the mouse wheel zooms.");
 }
 
-void compare_section(ExplorerState& state) {
-    bool on = state.compare;
-    if (checkbox("split: A | B side by side", &on)) set_compare(state, on);
+void compare_section(Explorer& explorer) {
+    bool on = explorer.view.compare;
+    if (checkbox("split: A | B side by side", &on)) explorer.commands.push(command::SetCompare{on});
     tooltip("Off/on: show the scene twice, B with the selected object in material B. Both at the largest "
             "whole magnification that fits; B's curve is dashed in the polar plot.");
     hint("A is the scene as edited above; B is the same scene with the selected object "
          "wearing material B (e.g. metal eq. 12 against metal_blinn eq. 15).");
-    ImGui::BeginDisabled(!state.compare);
-    checkbox("difference pane |A - B|", &state.compare_diff);
+    ImGui::BeginDisabled(!explorer.view.compare);
+    checkbox("difference pane |A - B|", &explorer.view.compare_diff);
     tooltip("A third pane: per channel the absolute difference of A's and B's display values (0-255) times "
             "the scale, clamped to 255; its label gives the scale and how many pixels are on another level.");
-    bool automatic = state.diff_scale == 0;
-    if (checkbox("auto scale", &automatic)) state.diff_scale = automatic ? 0 : 8;
+    bool automatic = explorer.view.diff_scale == 0;
+    if (checkbox("auto scale", &automatic)) explorer.view.diff_scale = automatic ? 0 : 8;
     tooltip("Auto: the largest whole scale that keeps the largest difference within 255 (1 when A = B).");
     if (!automatic) {
         if (!narrow_panel()) {
             ImGui::SameLine();
             ImGui::SetNextItemWidth(120.0f);
         }
-        ImGui::SliderInt(field("scale").c_str(), &state.diff_scale, 1, grading::kMaxDifferenceScale, "x %d",
+        ImGui::SliderInt(field("scale").c_str(), &explorer.view.diff_scale, 1, grading::kMaxDifferenceScale, "x %d",
                          ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
         tooltip("Whole factor, 1 to 255: at 5 bits one level is 8 PNG values, so x 4 shows it at 32.");
     }
     ImGui::EndDisabled();
-    if (ImGui::Button("B = copy of A")) copy_a_to_b(state);
+    if (ImGui::Button("B = copy of A")) explorer.commands.push(command::CopyAToB{});
     tooltip("The only thing that copies A into B: switching the split on or off keeps B as it is.");
     ImGui::PushID("material_b");
-    Material edited = state.material_b;
+    Material edited = explorer.doc.material_b;
     std::string action;
-    if (material_editor(edited, action)) edit_material_b(state, edited, action);
+    if (material_editor(edited, action)) explorer.commands.push(command::SetMaterial{kMaterialB, edited, action});
     ImGui::PopID();
 }
 
-void file_section(ExplorerState& state) {
-    ImGui::TextWrapped("scene file: %s", state.scene_file.empty() ? "(none: Ctrl+S asks)" : state.scene_file.c_str());
-    if (ImGui::Button("Save (Ctrl+S)")) save_or_ask(state);
+void file_section(Explorer& explorer) {
+    ImGui::TextWrapped("scene file: %s", explorer.doc.file.empty() ? "(none: Ctrl+S asks)" : explorer.doc.file.c_str());
+    if (ImGui::Button("Save (Ctrl+S)")) explorer.commands.push(command::Save{});
     tooltip("Writes the scene JSON to its own file (asks for one when it has none).");
     same_line_if_fits(button_width("Save as..."));
-    if (ImGui::Button("Save as...")) request_save_as(state);
+    if (ImGui::Button("Save as...")) explorer.commands.push(command::AskSaveAs{});
     tooltip("Writes the scene JSON to a file you name; it becomes the scene's own file.");
-    ImGui::InputText(field("screenshot folder").c_str(), &state.screenshot_dir);
+    ImGui::InputText(field("screenshot folder").c_str(), &explorer.session.files.screenshot_dir);
     tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");
-    if (ImGui::Button("Screenshot PNG + JSON (F12)")) state.screenshot_requested = true;
+    if (ImGui::Button("Screenshot PNG + JSON (F12)")) explorer.commands.push(command::Screenshot{});
     tooltip("Display A at its own resolution, exactly the bytes `m3055 render` writes for the JSON beside it.");
     if (narrow_panel()) {  // a path: wrapped on its own line
         ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
+        ImGui::TextDisabled("next: %s", next_screenshot_path(explorer).c_str());
         ImGui::PopTextWrapPos();
     } else {
         ImGui::SameLine();
-        ImGui::TextDisabled("next: %s", next_screenshot_path(state).c_str());
+        ImGui::TextDisabled("next: %s", next_screenshot_path(explorer).c_str());
     }
-    if (ImGui::InputText(field("load").c_str(), &state.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) load_scene(state, state.load_path);
+    if (ImGui::InputText(field("load").c_str(), &explorer.view.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) explorer.commands.push(command::LoadScene{explorer.view.load_path});
     tooltip("A scene JSON file; Enter or the Load button opens it (undoable with Ctrl+Z).");
     same_line_if_fits(button_width("Load"));
-    if (ImGui::Button("Load")) load_scene(state, state.load_path);
+    if (ImGui::Button("Load")) explorer.commands.push(command::LoadScene{explorer.view.load_path});
     tooltip("Opens the scene file named in the field (undoable with Ctrl+Z).");
-    if (!state.load_error.empty()) {  // here, beside the control the user just used
+    if (!explorer.session.messages.load_error.empty()) {  // here, beside the control the user just used
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
-        ImGui::TextWrapped("Could not load: %s", state.load_error.c_str());
+        ImGui::TextWrapped("Could not load: %s", explorer.session.messages.load_error.c_str());
         ImGui::PopStyleColor();
     }
     hint("Or drop a .json scene file onto the window.");

@@ -84,20 +84,20 @@ void legend(ImU32 colour, const std::string& text, bool disabled = false) {
 
 }  // namespace
 
-void spectra_section(ExplorerState& state) {
-    const auto& lights = state.scene.lights;
+void spectra_section(Explorer& explorer) {
+    const auto& lights = explorer.doc.scene.lights;
     const Light* light = nullptr;
     if (!lights.empty()) {
-        state.selected_light = std::clamp(state.selected_light, 0, static_cast<int>(lights.size()) - 1);
-        if (ImGui::BeginCombo(field("light").c_str(), light_entry(lights, state.selected_light).c_str(), combo_flags())) {
+        explorer.view.selected_light = std::clamp(explorer.view.selected_light, 0, static_cast<int>(lights.size()) - 1);
+        if (ImGui::BeginCombo(field("light").c_str(), light_entry(lights, explorer.view.selected_light).c_str(), combo_flags())) {
             for (int i = 0; i < static_cast<int>(lights.size()); ++i)
-                if (ImGui::Selectable(light_entry(lights, i).c_str(), i == state.selected_light)) state.selected_light = i;
+                if (ImGui::Selectable(light_entry(lights, i).c_str(), i == explorer.view.selected_light)) explorer.view.selected_light = i;
             ImGui::EndCombo();
         }
         tooltip("The light whose spectrum is plotted (also: the light last edited in Lights).");
-        light = &lights[std::size_t(state.selected_light)];
+        light = &lights[std::size_t(explorer.view.selected_light)];
     }
-    const Material* material = selected_material(state);
+    const Material* material = selected_material(explorer);
     SpectrumView view;
     try {
         view = spectrum_view(light, material);
@@ -108,9 +108,9 @@ void spectra_section(ExplorerState& state) {
         return;
     }
     spectra_plot(view, ImGui::GetContentRegionAvail().x, 110.0f);
-    legend(kLightColour, "light " + std::string(light ? std::to_string(state.selected_light) + ": " : "") +
+    legend(kLightColour, "light " + std::string(light ? std::to_string(explorer.view.selected_light) + ": " : "") +
                              view.light_label + " (luminance 1; E = 1)");
-    const std::string object = "object " + std::to_string(state.selected_object) + ": ";
+    const std::string object = "object " + std::to_string(explorer.view.selected_object) + ": ";
     if (view.curves.reflectance.empty()) legend(IM_COL32(120, 120, 120, 255), object + view.no_reflectance, true);
     else legend(kReflectanceColour, object + view.reflectance_label);
 }

@@ -1,13 +1,14 @@
-// The explorer's ImGui windows. Each function draws one part of the UI and
-// edits the scene through explore/operations.h (a widget edits a copy, the
-// operation takes it and names the undo step) and explore/files.h.
+// The explorer's ImGui windows. Each function draws one part of the UI; a
+// widget edits a copy of what it shows and gives the edited value as a
+// command (explore/commands.h), which the frame loop applies after the
+// panels are drawn (explore/apply.h), naming the undo step.
 #pragma once
 
 #include "analysis/pixel_probe.h"
+#include "explore/apply.h"
+#include "explore/explorer.h"
 #include "explore/files.h"
 #include "explore/operations.h"
-#include "explore/state.h"
-#include "explore/undo.h"
 
 #include <string>
 #include <vector>
@@ -47,7 +48,7 @@ struct FrameInfo {
 };
 
 // Left column: display, material, lights, objects and figures, camera, compare, file.
-void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, float width,
+void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, float width,
                      float height);
 // Bottom strip: the polar plot of the selected material and the frame statistics.
 // Its shape (explore/layout.h): three columns under the display, or the three
@@ -56,39 +57,39 @@ void draw_side_panel(ExplorerState& state, FrameInfo& info, float x, float y, fl
 // the profile alone (under the side panel, the statistics in a band of their
 // own under the display: draw_stats_band).
 enum class StripShape { row, column, plots };
-void draw_bottom_strip(ExplorerState& state, const FrameInfo& info, float x, float y,
+void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float y,
                        float width, float height, StripShape shape = StripShape::row);
 // The statistics in three columns side by side (timings and scale, the
 // level histogram, the last message), in the band under the display.
-void draw_stats_band(const ExplorerState& state, const FrameInfo& info, float x, float y, float width, float height);
+void draw_stats_band(const Explorer& explorer, const FrameInfo& info, float x, float y, float width, float height);
 
 // The side panel's menu bar (File, Edit: undo/redo by name) and the modal
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
-void draw_menu_bar(ExplorerState& state);
-void draw_dialogs(ExplorerState& state);
+void draw_menu_bar(Explorer& explorer);
+void draw_dialogs(Explorer& explorer);
 // File > Open BRDF's dialog, and the Material section's note on a .brdf
 // material (its file, the last error in red): panel_brdf.cpp.
-void open_brdf_dialog(ExplorerState& state);
-void brdf_material_note(const ExplorerState& state, const Material& material);
+void open_brdf_dialog(Explorer& explorer);
+void brdf_material_note(const Explorer& explorer, const Material& material);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
-void draw_brdf_views(ExplorerState& state, BrdfViews* views, float x, float y, float width, float height);
+void draw_brdf_views(Explorer& explorer, BrdfViews* views, float x, float y, float width, float height);
 
 // Sections of the side panel (one file each).
-void display_section(ExplorerState& state, const FrameInfo& info);
-void material_section(ExplorerState& state);
-void lights_section(ExplorerState& state);
+void display_section(Explorer& explorer, const FrameInfo& info);
+void material_section(Explorer& explorer);
+void lights_section(Explorer& explorer);
 // The selected light's spectrum and the selected material's R(lambda) (panel_spectra.cpp).
-void spectra_section(ExplorerState& state);
-void objects_section(ExplorerState& state);
-void camera_section(ExplorerState& state);
-void compare_section(ExplorerState& state);
-void file_section(ExplorerState& state);
+void spectra_section(Explorer& explorer);
+void objects_section(Explorer& explorer);
+void camera_section(Explorer& explorer);
+void compare_section(Explorer& explorer);
+void file_section(Explorer& explorer);
 // --assignment: the live score and reasons (panel_assignment.cpp).
-void assignment_section(ExplorerState& state);
+void assignment_section(Explorer& explorer);
 // The Lights panel's top-down light plot and key-to-fill ratio (a drag turns a light: edit_light).
-void light_plot(ExplorerState& state);
+void light_plot(Explorer& explorer);
 // The bottom strip's polar plot with its header (light, radial scale): panel_plot.cpp.
 // `curves`: the GPU's curves (.brdf models need them), else the CPU reference's.
-void plot_section(ExplorerState& state, PlaneCurves* curves, float width, float height);
+void plot_section(Explorer& explorer, PlaneCurves* curves, float width, float height);
 
 }  // namespace m3055::explore

@@ -7,7 +7,7 @@
 #include "app/web/page.h"
 #include "explore/files.h"
 #include "explore/brdf_files.h"
-#include "explore/state.h"
+#include "explore/explorer.h"
 
 #include <emscripten.h>
 #include <emscripten/html5.h>
@@ -61,13 +61,14 @@ int main(int argc, char** argv) {
     options.window_width = canvas_w > 0 ? canvas_w : 1280;
     options.window_height = canvas_h > 0 ? canvas_h : 720;
 
-    auto session = ExplorerSession::open(options, [](explore::ExplorerState& state) {
-        state.platform.can_quit = false;
-        state.platform.file_written = [](const std::string& path) { offer_download(path.c_str()); };
-        state.platform.pick_file = [] { open_file_chooser(); };
-        state.platform.brdf_paths_relative_to = web::kWorkFolder;  // the names the user's files had
-        state.screenshot_dir = "screenshots";  // downloaded as they are taken
-        std::filesystem::create_directories(state.screenshot_dir);
+    auto session = ExplorerSession::open(options, [](explore::Explorer& explorer) {
+        explore::Platform& platform = explorer.session.platform;
+        platform.can_quit = false;
+        platform.file_written = [](const std::string& path) { offer_download(path.c_str()); };
+        platform.pick_file = [] { open_file_chooser(); };
+        platform.brdf_paths_relative_to = web::kWorkFolder;  // the names the user's files had
+        explorer.session.files.screenshot_dir = "screenshots";  // downloaded as they are taken
+        std::filesystem::create_directories(explorer.session.files.screenshot_dir);
     });
     if (!session) {
         report_start_failure();

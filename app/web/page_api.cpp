@@ -2,13 +2,14 @@
 // controls). Each is synchronous here; page.js wraps them in Promises. A
 // returned string lives until the next call of the same function.
 #include "app/web/page.h"
+#include "explore/apply.h"
 #include "explore/brdf_files.h"
+#include "explore/explorer.h"
 #include "explore/files.h"
 #include "explore/practice.h"
-#include "explore/undo.h"
-#include "grading/assignment.h"
 #include "explore/share_link.h"
-#include "explore/state.h"
+#include "explore/start.h"
+#include "grading/assignment.h"
 #include "gl/program.h"
 #include "image/image.h"
 #include "io/message_text.h"
@@ -43,8 +44,9 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_load_scene(const char* path) {
     result.clear();
     ExplorerSession* s = web::session();
     if (!s) return result.assign("m3055: the explorer did not start").c_str();
-    explore::ExplorerState& state = s->state();
-    if (!explore::load_scene(state, path)) return result.assign(text::one_line("m3055: " + state.load_error)).c_str();
+    explore::Explorer& explorer = s->explorer();
+    if (!explore::run_command(explorer, explore::command::LoadScene{path}))
+        return result.assign(text::one_line("m3055: " + explorer.session.messages.load_error)).c_str();
     try {
         s->render_display_now();
     } catch (const std::exception& e) {
@@ -60,13 +62,13 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_open_file(const char* path) {
     result.clear();
     ExplorerSession* s = web::session();
     if (!s) return result.assign("m3055: the explorer did not start").c_str();
-    explore::ExplorerState& state = s->state();
-    const bool ok = explore::is_brdf_path(path) ? explore::open_brdf(state, path) : explore::load_scene(state, path);
-    if (!ok) {
-        state.show_load_error = !explore::is_brdf_path(path);
-        result = explore::is_brdf_path(path) ? state.brdf_error : state.load_error;
-    }
-    state.changed();
+    explore::Explorer& explorer = s->explorer();
+    const bool brdf = explore::is_brdf_path(path);
+    const bool ok = brdf ? explore::run_command(explorer, explore::command::OpenBrdf{path})
+                         : explore::run_command(explorer, explore::command::LoadScene{path, true});
+    const explore::Messages& messages = explorer.session.messages;
+    if (!ok) result = brdf ? messages.brdf_error : messages.load_error;
+    explorer.session.render_needed = true;
     return result.c_str();
 }
 
@@ -81,7 +83,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_display_png(void) {
         const std::vector<std::uint8_t> png = encode_png(s->render_display_now());
         result = "data:image/png;base64," + explore::base64_encode(std::string(png.begin(), png.end()));
     } catch (const std::exception& e) {
-        s->state().error = error_text(e);
+        s->explorer().session.messages.error = error_text(e);
     }
     return result.c_str();
 }
@@ -89,7 +91,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_display_png(void) {
 // The explorer's last error line ("" when none).
 EMSCRIPTEN_KEEPALIVE const char* m3055_last_error(void) {
     ExplorerSession* s = web::session();
-    return s ? s->state().error.c_str() : "";
+    return s ? s->explorer().session.messages.error.c_str() : "";
 }
 
 // The share link's fragment for the scene as it is now: "scene=TOKEN".
@@ -98,9 +100,9 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
     result.clear();
     if (ExplorerSession* s = web::session()) {
         try {
-            result = "scene=" + explore::share_token(s->state().scene, web::kWorkFolder);
+            result = "scene=" + explore::share_token(s->explorer().doc.scene, web::kWorkFolder);
         } catch (const std::exception& e) {
-            s->state().error = e.what();
+            s->explorer().session.messages.error = e.what();
         }
     }
     return result.c_str();
@@ -136,16 +138,16 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_practise(const char* path) {
     result.clear();
     ExplorerSession* s = web::session();
     if (!s) return result.assign("m3055: the explorer did not start").c_str();
-    explore::ExplorerState& state = s->state();
+    explore::Explorer& explorer = s->explorer();
     try {
         grading::load_assignment(path);  // a bad file changes nothing
-        grading::Assignment assignment = explore::open_assignment(state, path, false);
-        explore::start_history(state);
-        if (!s->practise(std::move(assignment))) result = text::one_line(state.error);
+        grading::Assignment assignment = explore::open_assignment(explorer, path, false);
+        explore::start_history(explorer);
+        if (!s->practise(std::move(assignment))) result = text::one_line(explorer.session.messages.error);
     } catch (const std::exception& e) {
         result = text::one_line(e.what());
     }
-    state.changed();
+    explorer.session.render_needed = true;
     return result.c_str();
 }
 

@@ -1,4 +1,4 @@
-#include "explore/state.h"
+#include "explore/explorer.h"
 
 #include "io/message_text.h"
 #include "models/model_table.h"
@@ -7,11 +7,15 @@
 
 namespace m3055::explore {
 
-Material* selected_material(ExplorerState& state) {
-    if (state.scene.objects.empty()) return nullptr;
-    state.selected_object =
-        std::clamp(state.selected_object, 0, static_cast<int>(state.scene.objects.size()) - 1);
-    return &state.scene.objects[state.selected_object].material;
+Material* selected_material(Explorer& explorer) { return material_of(explorer.doc, explorer.view.selected_object); }
+
+Scene compare_scene(const Explorer& explorer) {
+    Scene b = explorer.doc.scene;
+    if (!b.objects.empty()) {
+        const int i = std::clamp(explorer.view.selected_object, 0, static_cast<int>(b.objects.size()) - 1);
+        b.objects[std::size_t(i)].material = explorer.doc.material_b;
+    }
+    return b;
 }
 
 std::vector<const ModelSpec*> all_models() {
@@ -27,15 +31,6 @@ std::string valid_light_name(const std::string& typed) {
     if (kept.size() > 64) kept.resize(64);
     while (!kept.empty() && !text::is_valid_utf8(kept)) kept.pop_back();  // a cut multi-byte character
     return kept;
-}
-
-Scene compare_scene(const ExplorerState& state) {
-    Scene b = state.scene;
-    if (!b.objects.empty()) {
-        const int i = std::clamp(state.selected_object, 0, static_cast<int>(b.objects.size()) - 1);
-        b.objects[i].material = state.material_b;
-    }
-    return b;
 }
 
 }  // namespace m3055::explore
