@@ -131,6 +131,15 @@ std::vector<std::string> brdf_files_in_use(const Explorer& e) {
     return paths;
 }
 
+const std::vector<std::string>& watched_brdf_files(Explorer& e) {
+    BrdfWatch& watch = e.session.brdf_watch;
+    if (watch.in_use_revision != e.doc.revision) {
+        watch.in_use = brdf_files_in_use(e);
+        watch.in_use_revision = e.doc.revision;
+    }
+    return watch.in_use;
+}
+
 bool poll_brdf_files(Explorer& e, double now) {
     BrdfWatch& watch = e.session.brdf_watch;
     // Found by the last poll, shown as "reloading FILE..." since: reload them now.
@@ -141,7 +150,7 @@ bool poll_brdf_files(Explorer& e, double now) {
     }
     if (now < watch.next_poll) return false;
     watch.next_poll = now + kBrdfPollSeconds;
-    for (const std::string& path : brdf_files_in_use(e)) {
+    for (const std::string& path : watched_brdf_files(e)) {
         const std::string current = stamp(path);
         const auto [seen, first_time] = watch.stamps.emplace(path, current);
         if (first_time || seen->second == current) continue;

@@ -26,6 +26,8 @@ bool open_brdf(Explorer& explorer, const std::string& path);
 
 // The .brdf files the scene's materials and the compare's B use, each once.
 std::vector<std::string> brdf_files_in_use(const Explorer& explorer);
+// The same, kept until the document's revision changes (what the frame loop asks every frame).
+const std::vector<std::string>& watched_brdf_files(Explorer& explorer);
 
 // At most every kBrdfPollSeconds (`now` in seconds): each file in use whose
 // mtime or size changed is noted in brdf_watch.reload_pending (a frame shows

@@ -7,6 +7,7 @@
 #include "explore/practice_status.h"
 #include "models/material.h"
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -38,6 +39,10 @@ struct BrdfWatch {
     // Changed files found by the last poll, reloaded by the next one (after a
     // frame has shown "reloading FILE...": explore/busy.h).
     std::vector<std::string> reload_pending;
+    // The files in use, found again only when the document's revision changes
+    // (a frame must not look through 100 000 materials).
+    std::vector<std::string> in_use;
+    std::uint64_t in_use_revision = ~std::uint64_t(0);
 };
 
 // Where the explorer runs. In a browser page (app/web/) nothing quits the

@@ -1,5 +1,5 @@
 // The explorer's undo/redo and its step names, without a window
-// (explore/undo.h, explore/operations.h): what the Edit menu shows is what the
+// (explore/edits.h, explore/operations.h): what the Edit menu shows is what the
 // user did, and undoing back to the saved scene leaves nothing unsaved.
 #include "explore_started.h"
 #include "explore/files.h"

@@ -1,4 +1,5 @@
 #include "bench.h"
+#include "core_cost.h"
 #include "latency.h"
 #include "models/model_table.h"
 
@@ -408,7 +409,7 @@ void run_bench(const BenchOptions& options) {
     }
     if (!options.latency_only) run_figures_bench(options);
     // The explorer latency section (issue 12): its own context, after the rest.
-    const std::string latency = explorer_latency(options.backend).markdown();
+    const std::string latency = explorer_latency(options.backend).markdown() + "\n" + explorer_core_cost().markdown();
     fs::create_directories(options.out);
     write_file_atomic((fs::path(options.out) / "latency.md").string(), latency.data(), latency.size());
     std::cout << "\n" << latency;

@@ -137,7 +137,7 @@ public:
     void wait_for_work() {
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         // Watched .brdf files: wake at least every poll period.
-        const double most = brdf_files_in_use(e_).empty() ? 1e30 : kBrdfPollSeconds;
+        const double most = watched_brdf_files(e_).empty() ? 1e30 : kBrdfPollSeconds;
         Practice* practice = panes_ ? panes_->practice() : nullptr;
         if (frame_needed() || script_busy) window_.poll();
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();

@@ -13,6 +13,8 @@
 
 #include <imgui.h>
 
+#include <cstdint>
+
 #include <cmath>
 #include <string>
 
@@ -48,7 +50,13 @@ void set_azimuth(Light& light, const dvec3& subject, double azimuth_deg) {
 void light_plot(Explorer& explorer) {
     static int dragged = -1;
     const auto& lights = explorer.doc.scene.lights;
-    const dvec3 subject = subject_centre(explorer.doc.scene);
+    // The subject's centre averages every object: found again only when the document changes.
+    static std::uint64_t subject_revision = ~std::uint64_t(0);
+    static dvec3 subject;
+    if (subject_revision != explorer.doc.revision) {
+        subject = subject_centre(explorer.doc.scene);
+        subject_revision = explorer.doc.revision;
+    }
     const float size = 150.0f, reach = size * 0.5f - 14.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     const ImVec2 centre(corner.x + size * 0.5f, corner.y + size * 0.5f);
@@ -88,7 +96,7 @@ void light_plot(Explorer& explorer) {
         const std::string label = light.name.empty() ? std::to_string(i) : light.name;
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
-    const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene);
+    const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene, subject);
     ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
     tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
             "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");

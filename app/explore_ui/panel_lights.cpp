@@ -22,7 +22,7 @@ namespace {
 const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term); "
                                    "logarithmic, 0.001 ... 10 (0 at the left end); Shift drags finely, Ctrl+click types";
 
-// The scene format's light "name": what is typed is kept to what the format allows (state.h).
+// The scene format's light "name": what is typed is kept to what the format allows (explore/explorer.h).
 bool name_field(Light& light) {
     std::string name = light.name;
     if (!ImGui::InputText(field("name").c_str(), &name)) return false;
