@@ -1,14 +1,17 @@
-// No lost keystrokes: the window's key, character and mouse-button events
-// wait in one queue and are handed to Dear ImGui a few at a time, so that
-// within one frame no key or button changes state twice (Dear ImGui 1.86
+// No lost keystrokes: the window's key, character, mouse-button and pointer
+// events wait in one queue and are handed to Dear ImGui a few at a time, so
+// that within one frame no key or button changes state twice (Dear ImGui 1.86
 // keeps only a key's state at the frame's start: a press and release inside
 // one frame would be lost) and no character follows a key press (a text field
 // handles the frame's characters before its keys: "<BackSpace>a" would become
 // "a<BackSpace>"). Buttons share the queue so that a click keeps its place
 // among the keys: a Ctrl+click is never seen as a plain click because the
-// Ctrl press still waited behind earlier keys. What 1.87's input queue does;
-// the window (explore_ui/imgui_layer.cpp) feeds the events. No GLFW here:
-// keys and buttons are the window's codes, as they come.
+// Ctrl press still waited behind earlier keys. The pointer's moves share it
+// too, and a button's change and a move are never fed in one frame: a drag
+// that arrived whole while a frame was busy (a shader compiling) is still a
+// press, moves with the button held, and a release, not a click at its end.
+// What 1.87's input queue does; the window (explore_ui/imgui_layer.cpp) feeds
+// the events. No GLFW here: keys and buttons are the window's codes, as they come.
 #pragma once
 
 #include <cstddef>
@@ -17,12 +20,12 @@
 namespace m3055::explore {
 
 struct InputEvent {
-    enum class Kind { key, character, mouse_button };
+    enum class Kind { key, character, mouse_button, pointer };
     Kind kind = Kind::key;
     // Kind::key and Kind::mouse_button (key = the button): as the window reports them
     int key = 0, scancode = 0, action = 0, mods = 0;
     unsigned codepoint = 0;                           // Kind::character
-    double x = 0, y = 0;                              // Kind::mouse_button: the pointer then, in window coordinates
+    double x = 0, y = 0;  // Kind::mouse_button and Kind::pointer: the pointer then, in window coordinates
     bool press = false;     // a press (not a release or a repeat)
     // A key a text field acts on (BackSpace, Delete, Enter, Tab, arrows, Home,
     // End; not a printable key nor a modifier): no character after its press in one frame.
@@ -30,9 +33,11 @@ struct InputEvent {
 };
 
 // How many events from the front of `queue` go to Dear ImGui this frame: all
-// of them up to the first that would change a key or button fed this frame already, or
-// that is a character after an edit key's press fed this frame. At
-// least one when the queue is not empty.
+// of them up to the first that would change a key or button fed this frame
+// already, that is a character after an edit key's press fed this frame, or
+// that is a button's change after a move or a move after a button's change
+// fed this frame (moves in a row go together: the last one counts). At least
+// one when the queue is not empty.
 std::size_t events_for_this_frame(const std::deque<InputEvent>& queue);
 
 }  // namespace m3055::explore

@@ -32,6 +32,13 @@ InputEvent button(int code, bool down) {
     return e;
 }
 
+InputEvent pointer(double x, double y) {
+    InputEvent e;
+    e.kind = InputEvent::Kind::pointer;
+    e.x = x, e.y = y;
+    return e;
+}
+
 InputEvent character(unsigned c) {
     InputEvent e;
     e.kind = InputEvent::Kind::character;
@@ -50,6 +57,7 @@ std::string frames(std::deque<InputEvent> queue) {
         for (std::size_t i = 0; i < n; ++i) {
             const InputEvent& e = queue.front();
             if (e.kind == InputEvent::Kind::character) out += "'" + std::string(1, char(e.codepoint)) + "'";
+            else if (e.kind == InputEvent::Kind::pointer) out += "P";
             else if (e.kind == InputEvent::Kind::mouse_button) out += "M" + std::string(e.press ? "+" : "-");
             else out += (e.key == kBackspace ? "B" : e.key == kShift ? "S" : e.key == kCtrl ? "C" : "K") +
                         std::string(e.press ? "+" : "-");
@@ -93,6 +101,21 @@ TEST(ExploreInputQueue, AClickBetweenTwoFramesIsAPressAndAReleaseAFrameEach) {
     std::deque<InputEvent> queue = {button(kLeftButton, true), button(kLeftButton, false), button(kLeftButton, true),
                                     button(kLeftButton, false)};
     EXPECT_EQ(frames(queue), "M+|M-|M+|M-") << "a double click: two clicks, none lost";
+}
+
+// A drag made while a frame was busy (a program compiling) arrives whole:
+// it is still the press where it began, the moves with the button held, and
+// the release where it ended, never a click at its end.
+TEST(ExploreInputQueue, ADragThatArrivedWholeIsPressMovesAndRelease) {
+    std::deque<InputEvent> queue = {pointer(10, 10), button(kLeftButton, true), pointer(20, 10), pointer(40, 12),
+                                    button(kLeftButton, false), pointer(41, 12)};
+    EXPECT_EQ(frames(queue), "P|M+|PP|M-|P");
+}
+
+TEST(ExploreInputQueue, MovesAndKeysShareAFrameButNotAButtonsChange) {
+    std::deque<InputEvent> queue = {key(kCtrl, true), pointer(5, 5), pointer(6, 5), button(kLeftButton, true),
+                                    key(kCtrl, false), button(kLeftButton, false)};
+    EXPECT_EQ(frames(queue), "C+PP|M+C-|M-");
 }
 
 TEST(ExploreInputQueue, AnEmptyQueueFeedsNothing) { EXPECT_EQ(events_for_this_frame({}), 0u); }

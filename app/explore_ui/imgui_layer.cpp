@@ -9,6 +9,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <cfloat>
 #include <cstdio>
 #include <deque>
 #include <iterator>
@@ -55,7 +56,8 @@ void queue_char(GLFWwindow* window, unsigned codepoint) {
 }
 
 // A click waits in the same queue, behind the keys before it (a Ctrl press
-// still queued must reach ImGui first).
+// still queued must reach ImGui first), where the pointer was then: at the
+// last move queued before it (the window system's pointer may be elsewhere by now).
 void queue_mouse_button(GLFWwindow* window, int button, int action, int mods) {
     InputEvent event;
     event.kind = InputEvent::Kind::mouse_button;
@@ -63,10 +65,27 @@ void queue_mouse_button(GLFWwindow* window, int button, int action, int mods) {
     event.action = action;
     event.mods = mods;
     event.press = action == GLFW_PRESS;
-    glfwGetCursorPos(window, &event.x, &event.y);
     WindowEvents& events = events_of(window);
+    if (button >= 0 && button < 32) events.buttons_held = (events.buttons_held & ~(1u << button)) | (unsigned(event.press) << button);
+    if (events.pointer_known) event.x = events.pointer_x, event.y = events.pointer_y;
+    else glfwGetCursorPos(window, &event.x, &event.y);
     events.input.push_back(event);
     events.frames_owed = kFramesAfterInput;
+}
+
+// The pointer's moves wait in the queue while a button is held or events
+// wait before them, so a drag is fed as it was made; others (hovering, the
+// window moving under a parked pointer) the backend reads as before.
+void queue_pointer(GLFWwindow* window, double x, double y) {
+    WindowEvents& events = events_of(window);
+    events.pointer_known = true;
+    events.pointer_x = x, events.pointer_y = y;
+    events.frames_owed = kFramesAfterInput;
+    if (events.buttons_held == 0 && events.input.empty()) return;
+    InputEvent event;
+    event.kind = InputEvent::Kind::pointer;
+    event.x = x, event.y = y;
+    events.input.push_back(event);
 }
 
 bool button_queued(const std::deque<InputEvent>& queue, int button) {
@@ -111,6 +130,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)
     glfwSetCharCallback(window, queue_char);
     glfwSetMouseButtonCallback(window, queue_mouse_button);
+    glfwSetCursorPosCallback(window, queue_pointer);
 #ifdef __EMSCRIPTEN__
     glfwSetScrollCallback(window, nullptr);  // GLFW's wheel off (its units are wrong: on_wheel) ...
     emscripten_set_wheel_callback("#canvas", window, EM_TRUE, on_wheel);  // ... the page's on
@@ -131,17 +151,18 @@ ImGuiLayer::~ImGuiLayer() {
 
 void ImGuiLayer::new_frame() {
     std::deque<InputEvent>& queue = events_of(window_).input;
-    bool click_fed = false;
-    double click_x = 0, click_y = 0;
+    bool pointer_fed = false, button_fed = false;
     for (std::size_t n = events_for_this_frame(queue); n > 0; --n) {
         const InputEvent event = queue.front();
         queue.pop_front();
         if (event.kind == InputEvent::Kind::character) {
             ImGui_ImplGlfw_CharCallback(window_, event.codepoint);
+        } else if (event.kind == InputEvent::Kind::pointer) {
+            pointer_fed = pointer_known_ = true, pointer_x_ = event.x, pointer_y_ = event.y;
         } else if (event.kind == InputEvent::Kind::mouse_button) {
             ImGui_ImplGlfw_MouseButtonCallback(window_, event.key, event.action, event.mods);
             if (event.key >= 0 && event.key < int(std::size(buttons_down_))) buttons_down_[event.key] = event.press;
-            click_fed = true, click_x = event.x, click_y = event.y;
+            button_fed = pointer_known_ = true, pointer_x_ = event.x, pointer_y_ = event.y;
         } else {
             ImGui_ImplGlfw_KeyCallback(window_, event.key, event.scancode, event.action, event.mods);
         }
@@ -159,7 +180,13 @@ void ImGuiLayer::new_frame() {
             buttons_down_[button] = false;
         io.MouseDown[button] = buttons_down_[button];
     }
-    if (click_fed) io.MousePos = ImVec2(float(click_x), float(click_y));  // where the click was, not where the mouse is now
+    // Where the fed events left the pointer, not where it is now (while events
+    // wait, it is ahead of them): a click's place always; a move's only while
+    // the backend says the pointer is the window's (it knows when the pointer
+    // left, or was never in an unfocused window: no one hovers then).
+    const bool pointer_in_window = io.MousePos.x > -FLT_MAX;
+    if (button_fed || ((pointer_fed || !queue.empty()) && pointer_known_ && pointer_in_window))
+        io.MousePos = ImVec2(float(pointer_x_), float(pointer_y_));
     // Dear ImGui 1.86 asserts on a zero time step; two frames in one tick of
     // the clock happen in a browser (its timers are coarse on purpose).
     if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1e-4f;

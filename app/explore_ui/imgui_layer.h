@@ -25,6 +25,8 @@ private:
     // Each button as the queue has fed it (ImGui 1.86's GLFW backend reads the
     // buttons' live state at NewFrame, which may be ahead of the queue).
     bool buttons_down_[5] = {};
+    bool pointer_known_ = false;  // the queue has fed a move or a click
+    double pointer_x_ = 0.0, pointer_y_ = 0.0;  // the pointer as the queue has fed it
 };
 
 }  // namespace m3055::explore

@@ -23,7 +23,12 @@ struct WindowEvents {
         int key, mods;
     };
     std::vector<Key> keys;  // key presses, in order (as fed to ImGui)
-    std::deque<InputEvent> input;  // key and character events not yet fed to ImGui (imgui_layer.cpp)
+    std::deque<InputEvent> input;  // key, character, button and pointer events not yet fed to ImGui (imgui_layer.cpp)
+    // The pointer at its last move (a button's press or release happened there),
+    // and the buttons held, as the window system reported them (bit i: button i).
+    bool pointer_known = false;
+    double pointer_x = 0.0, pointer_y = 0.0;
+    unsigned buttons_held = 0;
 };
 
 class Window {
