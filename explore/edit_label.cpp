@@ -137,9 +137,12 @@ FieldChange light_change(const Light& before, const Light& after, int index) {
     first.lobes("lobes", LobeList(before.lobes), LobeList(after.lobes), lobe_value_key(after.lobe_kind));
     FieldChange change = first.take();
     if (change.empty()) return change;
-    // A rename is named after the light's new name ("light key name fill -> key" reads oddly).
-    const std::string& name = change.what == "name" ? before.name : after.name;
-    change.what = "light " + (name.empty() ? std::to_string(index) : name) + " " + change.what;
+    if (change.what == "name") {  // "rename light key -> fill" (a name added or removed: "rename light 2")
+        change.what = "rename light";
+        if (before.name.empty() || after.name.empty()) change.what += " " + std::to_string(index);
+        return change;
+    }
+    change.what = "light " + (after.name.empty() ? std::to_string(index) : after.name) + " " + change.what;
     return change;
 }
 

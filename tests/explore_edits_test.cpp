@@ -132,7 +132,9 @@ TEST(ExploreEdits, FieldsAreNamedByTheirSceneFileKeys) {
     after = before;
     after.name = "";
     after.direction = {1, 0, 0};
-    EXPECT_EQ(light_change(before, after, 2).label(), "light fill name") << "a rename is named after the old name";
+    EXPECT_EQ(light_change(before, after, 2).label(), "rename light 2") << "a name removed";
+    after.name = "key";
+    EXPECT_EQ(light_change(before, after, 2).label(), "rename light fill -> key");
     Object plane;
     plane.shape = Shape::plane;
     Object tilted = plane;

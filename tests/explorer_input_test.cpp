@@ -553,6 +553,114 @@ TEST_F(ExplorerInput, ADragRightAfterAFigurePresetAlwaysOrbits) {
     EXPECT_TRUE(app_->running());
 }
 
+// Widget positions at 1280 x 720 with the spec example (the side panel's
+// rows under the default sections, labels beside their widgets).
+constexpr int kSmallWidthFieldX = 80, kSmallWidthFieldY = 110;      // Display: width
+constexpr int kSmallWSliderX = 150, kSmallWSliderY = 329;          // Material: w (highlight), linear
+constexpr int kSmallMSliderX = 150, kSmallMSliderY = 354;          // Material: m (size), logarithmic
+constexpr int kSmallNameFieldX = 170, kSmallNameFieldY = 517;      // Lights: light 0's name
+constexpr int kSmallIntensityX = 230, kSmallIntensityY = 617;      // Lights: light 0's intensity, logarithmic
+constexpr int kSmallRestX = 1270, kSmallRestY = 20;                // the empty band above the display
+
+// The spec example as a file of the test's own, so Ctrl+S writes there.
+std::string own_spec_example(const TempDir& dir) {
+    const std::string file = dir.file("mine.json");
+    std::filesystem::copy_file(test::source_path("scenes/spec_example.json"), file,
+                               std::filesystem::copy_options::overwrite_existing);
+    return file;
+}
+
+// A click where nothing is (so no field keeps the keyboard), Ctrl+S, then
+// the file as saved (once it changed from `before`).
+nlohmann::json saved_scene(RunningExplorer& app, const std::string& file, const std::string& before) {
+    app.click(kSmallRestX, kSmallRestY);
+    sleep_ms(300);
+    app.xdo("key ctrl+s");
+    std::string text;
+    for (int i = 0; i < 120; ++i) {
+        sleep_ms(250);
+        text = test::read_text(file);
+        if (text != before && !text.empty()) break;
+    }
+    return nlohmann::json::parse(text, nullptr, false);
+}
+
+// A value typed after Ctrl+click (a logarithmic slider too) or into a field is
+// applied by Tab and by a click elsewhere, as by Enter.
+TEST_F(ExplorerInput, ATypedValueIsAppliedByTabOrAClickElsewhereAsByEnter) {
+    const std::string file = own_spec_example(dir_);
+    ASSERT_TRUE(start_with(1280, 720, {"--scene", file}));
+    const Rgb8Image original = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, original).scale > 0; });
+    app_->move(kSmallMSliderX, kSmallMSliderY);
+    sleep_ms(150);
+    app_->xdo("keydown ctrl click 1 keyup ctrl");
+    sleep_ms(400);
+    app_->xdo("type --delay 100 40");
+    app_->xdo("key Tab");  // m = 40
+    sleep_ms(300);
+    app_->move(kSmallIntensityX, kSmallIntensityY);
+    sleep_ms(150);
+    app_->xdo("keydown ctrl click 1 keyup ctrl");
+    sleep_ms(400);
+    app_->xdo("type --delay 100 0.5");
+    app_->click(kSmallRestX, kSmallRestY);  // a click elsewhere: intensity 0.5
+    sleep_ms(300);
+    app_->click(kSmallWidthFieldX, kSmallWidthFieldY);
+    sleep_ms(300);
+    app_->xdo("key ctrl+a");
+    app_->xdo("type --delay 100 256");
+    app_->xdo("key Tab");  // width 256
+    sleep_ms(300);
+    app_->move(kSmallRestX, kSmallRestY);
+    const nlohmann::json saved = saved_scene(*app_, file, test::read_text(file));
+    ASSERT_FALSE(saved.is_discarded());
+    EXPECT_EQ(saved["objects"][0]["material"]["m"], 40) << "typed on the logarithmic slider, then Tab";
+    EXPECT_EQ(saved["lights"][0]["intensity"], 0.5) << "typed on the intensity, then a click elsewhere";
+    EXPECT_EQ(saved["display"]["width"], 256) << "typed into the width, then Tab";
+}
+
+// Tab from a typed slider goes on to the next field of the panel (the next
+// slider, logarithmic too), never to a light's name; a name changes only on
+// Enter (Tab and a click elsewhere leave it as it was).
+TEST_F(ExplorerInput, TabGoesToTheNextSliderAndNeverRenamesALight) {
+    const std::string file = own_spec_example(dir_);
+    ASSERT_TRUE(start_with(1280, 720, {"--scene", file}));
+    const Rgb8Image original = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, original).scale > 0; });
+    app_->move(kSmallWSliderX, kSmallWSliderY);
+    sleep_ms(150);
+    app_->xdo("keydown ctrl click 1 keyup ctrl");
+    sleep_ms(400);
+    app_->xdo("type --delay 100 0.5");
+    app_->xdo("key Tab");
+    sleep_ms(400);
+    app_->xdo("type --delay 100 7");
+    app_->xdo("key Return");
+    sleep_ms(300);
+    app_->click(kSmallNameFieldX, kSmallNameFieldY);
+    sleep_ms(300);
+    app_->xdo("type --delay 100 fill");
+    app_->xdo("key Tab");  // not applied: a name changes on Enter only
+    sleep_ms(300);
+    app_->move(kSmallRestX, kSmallRestY);
+    nlohmann::json saved = saved_scene(*app_, file, test::read_text(file));
+    ASSERT_FALSE(saved.is_discarded());
+    EXPECT_EQ(saved["objects"][0]["material"]["w"], 0.5);
+    EXPECT_EQ(saved["objects"][0]["material"]["m"], 7) << "the 7 went to m, the field after w";
+    EXPECT_FALSE(saved["lights"][0].contains("name")) << "no light renamed: " << saved["lights"][0].dump();
+
+    app_->click(kSmallNameFieldX, kSmallNameFieldY);
+    sleep_ms(300);
+    app_->xdo("type --delay 100 fill");
+    app_->xdo("key Return");
+    sleep_ms(300);
+    app_->move(kSmallRestX, kSmallRestY);
+    saved = saved_scene(*app_, file, test::read_text(file));
+    ASSERT_FALSE(saved.is_discarded());
+    EXPECT_EQ(saved["lights"][0]["name"], "fill") << "Enter applies the name";
+}
+
 TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
     ASSERT_TRUE(start(1280, 720));
     const Rgb8Image expected = headless(dir_);

@@ -22,11 +22,15 @@ namespace {
 const char* const kIntensityHelp = "a_l, the light's intensity, in [0, 10] (spec section 3: a_l multiplies its term); "
                                    "logarithmic, 0.001 ... 10 (0 at the left end); Shift drags finely, Ctrl+click types";
 
-// The scene format's light "name": what is typed is kept to what the format allows (explore/explorer.h).
+// The scene format's light "name": what is typed is kept to what the format
+// allows (explore/explorer.h), and applied on Enter only (grading rules find
+// lights by name: a Tab or a stray click must not rename one); Esc restores it.
 bool name_field(Light& light) {
-    std::string name = light.name;
-    if (!ImGui::InputText(field("name").c_str(), &name)) return false;
-    light.name = valid_light_name(name);
+    std::string name;
+    if (!typed_field(field("name").c_str(), light.name, &name, true)) return false;
+    name = valid_light_name(name);
+    if (name == light.name) return false;
+    light.name = name;
     return true;
 }
 
@@ -99,7 +103,8 @@ bool colour_editor(Light& light, std::string& error) {
 bool light_editor(Light& light, int index, const Material* material, std::string& error) {
     bool changed = name_field(light);
     tooltip("Optional: \"key\", \"fill\", \"back\" (as the three-point presets name them; the key-to-fill "
-            "ratio uses them) or any text up to 64 bytes. Saved with the scene.");
+            "ratio and grading rules use them) or any text up to 64 bytes. Enter applies it, Esc restores it. "
+            "Saved with the scene.");
     changed |= checkbox("enabled", &light.enabled);
     tooltip("Off: the light adds nothing but stays in the scene (saved as \"enabled\": false).");
     int type = static_cast<int>(light.type);

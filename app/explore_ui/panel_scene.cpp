@@ -25,12 +25,13 @@ void display_section(Explorer& explorer, const FrameInfo& info) {
     if (ImGui::Button("Modern (window, 8 bits)")) explorer.commands.push(command::SetDisplay{modern_display(explorer.doc.scene.display, info.free_width, info.free_height), "display modern"});
     tooltip("A display the size of the free area of the window, 8 bits (256 levels) per channel.");
     int size[2] = {display.width, display.height};
-    if (ImGui::InputInt2(field("width, height").c_str(), size, ImGuiInputTextFlags_EnterReturnsTrue)) {
-        display.width = std::clamp(size[0], 1, kMaxDisplaySize);
-        display.height = std::clamp(size[1], 1, kMaxDisplaySize);
+    if (typed_ints(field("width, height").c_str(), size, 2, 1, kMaxDisplaySize)) {
+        display.width = size[0];
+        display.height = size[1];
         explorer.commands.push(command::SetDisplay{display, ""});
     }
-    tooltip("the display's size in dots, each in [1, 8192] (Enter applies; spec section 2)");
+    tooltip("the display's size in dots, each in [1, 8192] (Enter, Tab or a click elsewhere applies; Esc restores; "
+            "spec section 2)");
     if (ImGui::SliderInt(field("bits").c_str(), &display.bits, 1, 8, "%d bits", ImGuiSliderFlags_AlwaysClamp)) explorer.commands.push(command::SetDisplay{display, ""});
     tooltip("bits per channel, in [1, 8]: the M3055 has 5 (32 levels; spec section 2)");
     if (!narrow_panel()) ImGui::SameLine();  // narrow: the slider has the whole row

@@ -4,8 +4,11 @@
 #include "explore_ui/narrow_panel.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ItemAdd, ImGuiItemFlags_Inputable: Tab reaches the logarithmic sliders (1.86)
+#include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -31,10 +34,31 @@ std::string literal_format(const std::string& text) {
     return out;
 }
 
-// Ctrl+click on a logarithmic slider types the value itself (not the slider's
-// position): the item being typed into, if any.
+// Ctrl+click on a logarithmic slider, or Tab reaching it, types the value
+// itself (not the slider's position): the item being typed into, if any.
 ImGuiID typing_id = 0;
 bool typing_focus = false;  // give the field the keyboard in its first frame
+
+// The field being typed into (typed_field): its text lives here while it is active.
+ImGuiID editing_id = 0;
+std::string editing_text;
+
+// The slider just drawn takes part in Tab's order: it is NoInput (ImGui's
+// own typing would edit its position), so an item of its own at its place
+// receives the focus, and true says Tab has just reached it. The slider stays
+// the last item (its hover and tooltip).
+bool tab_reached(const char* label) {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiLastItemData slider = g.LastItemData;
+    ImGui::PushID(label);
+    const ImGuiID tab_id = ImGui::GetID("##tab");
+    ImGui::PopID();
+    // Tab's request found this item last frame and activates it now (1.86's tabbing is a nav move).
+    const bool reached = ImGui::ItemAdd(slider.Rect, tab_id, nullptr, ImGuiItemFlags_Inputable) &&
+                         (g.NavActivateInputId == tab_id || g.NavActivateId == tab_id);
+    g.LastItemData = slider;
+    return reached;
+}
 
 // Shift held on a held slider: the slider's last item moves a tenth as fast
 // as the mouse from where it was when Shift went down (slider_scale.h's
@@ -65,13 +89,18 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
     if (typing_id == id) {
         if (typing_focus) ImGui::SetKeyboardFocusHere();
         typing_focus = false;
-        double typed = *value;
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%.6g", *value);
         const std::string field = std::string(label) + "##typed";  // an ID of its own, the same label
-        const bool entered = ImGui::InputDouble(field.c_str(), &typed, 0.0, 0.0, "%.6g",
-                                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
-        if (entered || ImGui::IsItemDeactivated()) typing_id = 0;
-        if (!entered) return false;
-        *value = std::clamp(typed, lo, hi);
+        std::string typed;
+        const bool left = typed_field(field.c_str(), shown, &typed);
+        if (left || ImGui::IsItemDeactivated()) typing_id = 0;
+        char* end = nullptr;
+        const double number = std::strtod(typed.c_str(), &end);
+        if (!left || end == typed.c_str() || !std::isfinite(number)) return false;
+        const double clamped = std::clamp(number, lo, hi);
+        if (clamped == *value) return false;
+        *value = clamped;
         return true;
     }
     const auto [before, after] = around_conversion(format);
@@ -80,6 +109,11 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
     float position = static_cast<float>(at);
     bool moved = ImGui::SliderFloat(label, &position, 0.0f, 1.0f, shown.c_str(),
                                     ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput);
+    if (tab_reached(label)) {
+        typing_id = id;
+        typing_focus = true;
+        return false;
+    }
     double fine = at;
     if (fine_drag(id, at, &fine)) {
         if (fine == at) return false;
@@ -97,6 +131,55 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
 }
 
 }  // namespace
+
+bool typed_field(const char* label, const std::string& shown, std::string* typed, bool enter_only) {
+    const ImGuiID id = ImGui::GetID(label);
+    std::string local = shown;
+    std::string& text = editing_id == id ? editing_text : local;
+    const bool enter = ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    if (ImGui::IsItemActivated()) {
+        editing_id = id;
+        editing_text = text;
+    }
+    if (!ImGui::IsItemDeactivated() || editing_id != id) return false;
+    // Left: by Enter, by Tab or a click elsewhere, or by Esc (ImGui has then
+    // put the text it started with back: applying it changes nothing).
+    editing_id = 0;
+    if (enter_only && !enter) return false;
+    *typed = std::move(editing_text);
+    return true;
+}
+
+bool typed_ints(const char* label, int* values, int count, int lo, int hi) {
+    bool changed = false;
+    ImGui::PushID(label);
+    ImGui::BeginGroup();
+    const float width = (ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x * float(count - 1)) / float(count);
+    for (int i = 0; i < count; ++i) {
+        ImGui::PushID(i);
+        if (i > 0) ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::SetNextItemWidth(width);
+        std::string typed;
+        if (typed_field("##value", std::to_string(values[i]), &typed)) {
+            char* end = nullptr;
+            const long number = std::strtol(typed.c_str(), &end, 10);
+            if (end != typed.c_str() && std::clamp<long>(number, lo, hi) != values[i]) {
+                values[i] = int(std::clamp<long>(number, lo, hi));
+                changed = true;
+            }
+        }
+        ImGui::PopID();
+    }
+    const std::string shown = label;
+    const std::size_t hidden = shown.find("##");
+    if (hidden != 0) {
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted(shown.substr(0, hidden).c_str());
+    }
+    ImGui::EndGroup();
+    ImGui::PopID();
+    return changed;
+}
 
 bool slider_double(const char* label, double* value, double lo, double hi, const char* format,
                    bool logarithmic, double decades) {

@@ -19,6 +19,15 @@ namespace m3055::explore {
 bool slider_double(const char* label, double* value, double lo, double hi,
                    const char* format = "%.3f", bool logarithmic = false, double decades = kLogSliderDecades);
 
+// A field to type a value into. It shows `shown` until it is typed into;
+// what was typed is given back (true, *typed) when the field is left by
+// Enter, Tab or a click elsewhere (with `enter_only`, by Enter alone: a
+// name), never a half-typed value while typing; Esc restores `shown`.
+bool typed_field(const char* label, const std::string& shown, std::string* typed, bool enter_only = false);
+// Whole numbers in [lo, hi], one field each on a row (the display's width and
+// height), applied as typed_field applies; a text that is not a number changes nothing.
+bool typed_ints(const char* label, int* values, int count, int lo, int hi);
+
 // Colour picker for a [0,1]^3 colour.
 bool color_edit(const char* label, dvec3* color);
 
