@@ -1011,5 +1011,26 @@ TEST_F(ExplorerInput, ARegradeDoesNotMoveTheSidePanelsControls) {
     EXPECT_EQ(differing_pixels(rows_before, rows_after), 0) << "the controls below it moved";
 }
 
+// The score line keeps one line whatever the score: a passing "Score 100 /
+// 100  PASS (pass at 60)" wrapped on the narrow panel (three panes at 1280 x
+// 720) where a failing one did not, moving every control below it.
+TEST_F(ExplorerInput, APassingScoreDoesNotMoveTheSidePanelsControls) {
+    if (kSanitized) GTEST_SKIP() << "paced by wall-clock sleeps: Release suite only (see kSanitized)";
+    test::write_text(dir_.file("mine.json"),
+                     test::read_text(test::source_path("assignments/three-point/reference.json")));
+    test::write_text(dir_.file("fail.txt"), "idle 5\nset objects[0].material.d 0.9\n");
+    ASSERT_TRUE(start_with(1280, 720, {"--assignment", test::source_path("assignments/three-point/assignment.json"),
+                                       "--script", dir_.file("fail.txt"), dir_.file("mine.json")}));
+    sleep_ms(2500);
+    const Rgb8Image passing = app_->screen(dir_.path());  // the reference itself: 100, PASS
+    sleep_ms(6000);  // an edit that fails it, regraded once it settles
+    const Rgb8Image failing = app_->screen(dir_.path());
+    ASSERT_EQ(passing.width, 1280);
+    EXPECT_GT(differing_pixels(crop(passing, 0, 100, 230, 300), crop(failing, 0, 100, 230, 300)), 100)
+        << "the regrade changed the Assignment section";
+    EXPECT_EQ(differing_pixels(crop(passing, 0, 470, 230, 200), crop(failing, 0, 470, 230, 200)), 0)
+        << "the controls below it moved";
+}
+
 }  // namespace
 }  // namespace m3055

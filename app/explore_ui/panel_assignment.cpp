@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace m3055::explore {
@@ -25,9 +26,15 @@ void score_line(const PracticeStatus& p) {
         return;
     }
     const ImVec4 colour = p.pending ? kStale : p.passed ? kGood : kBad;
-    ImGui::PushStyleColor(ImGuiCol_Text, colour);  // wrapped: the panel may be narrow (narrow_panel.h)
-    ImGui::TextWrapped("Score %g / %g  %s (pass at %g)", p.score, p.max, p.passed ? "PASS" : "FAIL", p.pass_score);
-    ImGui::PopStyleColor();
+    // One line whatever the score: a shorter wording where the panel is narrow
+    // (narrow_panel.h), the whole one in its tooltip.
+    char full[96], brief[64];
+    std::snprintf(full, sizeof full, "Score %g / %g  %s (pass at %g)", p.score, p.max, p.passed ? "PASS" : "FAIL",
+                  p.pass_score);
+    std::snprintf(brief, sizeof brief, "%g/%g %s (pass %g)", p.score, p.max, p.passed ? "PASS" : "FAIL", p.pass_score);
+    const bool fits = ImGui::CalcTextSize(full).x <= ImGui::GetContentRegionAvail().x;
+    ImGui::TextColored(colour, "%s", fits ? full : brief);
+    if (!fits) tooltip(full);
     // One line on the narrow panel too (three panes at 1280 x 720), so the
     // two lines stay two: the longer wording goes in the tooltip there.
     const bool narrow = narrow_panel();
