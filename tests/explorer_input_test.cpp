@@ -1011,6 +1011,34 @@ TEST_F(ExplorerInput, ARegradeDoesNotMoveTheSidePanelsControls) {
     EXPECT_EQ(differing_pixels(rows_before, rows_after), 0) << "the controls below it moved";
 }
 
+// A click on the display whose mouse moves a pixel or two between press and
+// release (a hand, a loaded machine) selects the object under it; it is not
+// a small orbit of the camera.
+TEST_F(ExplorerInput, AClickThatJittersAPixelSelectsAndDoesNotOrbit) {
+    test::write_text(dir_.file("state.txt"), "idle 8\nprint_state\n");
+    ASSERT_TRUE(start_with(1280, 720, {"--scene", test::source_path("scenes/fig10.json"), "--script",
+                                       dir_.file("state.txt")}));
+    const auto render = test::run_m3055({"render", "--scene", test::source_path("scenes/fig10.json"), "--out",
+                                         dir_.file("fig10.png")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const Rgb8Image fig10 = read_png(dir_.file("fig10.png"));
+    Place at;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, fig10)).scale > 0; });
+    ASSERT_GT(at.scale, 0);
+    // Fig. 10's right-hand sphere (object 2), at five sixths of the display's width.
+    const int x = at.x + fig10.width * at.scale * 5 / 6, y = at.y + fig10.height * at.scale / 2;
+    app_->move(x, y);
+    sleep_ms(200);
+    app_->xdo("mousedown 1 mousemove_relative -- 2 1 mouseup 1");
+    std::string log;
+    for (int i = 0; i < 120 && log.find("state title=") == std::string::npos; ++i) {
+        sleep_ms(250);
+        log = test::read_text(dir_.file("explore.log"));
+    }
+    EXPECT_NE(log.find("selected=2"), std::string::npos) << log;
+    EXPECT_EQ(log.find("unsaved"), std::string::npos) << "no orbit: " << log;
+}
+
 // The score line keeps one line whatever the score: a passing "Score 100 /
 // 100  PASS (pass at 60)" wrapped on the narrow panel (three panes at 1280 x
 // 720) where a failing one did not, moving every control below it.

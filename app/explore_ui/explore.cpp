@@ -319,9 +319,17 @@ private:
         if (io.WantCaptureMouse) return;
         // A drag orbits the camera; with Shift held it moves the selected object
         // in the view plane, under the mouse (one undo step per drag either way).
-        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-            if (io.KeyShift) e_.commands.push(command::MoveObjectInView{io.MouseDelta.x, io.MouseDelta.y, shown_a_.h});
-            else e_.commands.push(command::OrbitCamera{io.MouseDelta.x, io.MouseDelta.y});
+        // It starts once the mouse has moved more than ImGui's drag threshold
+        // (6 px) with the button down, taking the whole way from the press:
+        // a click that jitters by a pixel or two is a click.
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+            ImVec2 delta = io.MouseDelta;
+            if (!moved_while_down_) delta = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left);  // the drag's first frame
+            moved_while_down_ = true;
+            if (delta.x != 0.0f || delta.y != 0.0f) {
+                if (io.KeyShift) e_.commands.push(command::MoveObjectInView{delta.x, delta.y, shown_a_.h});
+                else e_.commands.push(command::OrbitCamera{delta.x, delta.y});
+            }
         }
         if (io.MouseWheel != 0.0f) e_.commands.push(command::ZoomCamera{io.MouseWheel});
         // A click (no drag) picks the object under it.
@@ -330,8 +338,6 @@ private:
                 e_.commands.push(DisplayRequest{command::Pick{pixel->first, pixel->second}});
         }
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) moved_while_down_ = false;
-        if (ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-            moved_while_down_ = true;
     }
 
     // The scanline profile follows the row under the mouse on A, and keeps the
@@ -472,7 +478,7 @@ private:
     double first_frame_ms_ = 0.0;  // process start to the first frame shown (--stats)
     Rect shown_a_;                 // where A was drawn last (ImGui units)
     std::string nonfinite_line_;   // "" or the warning over A (explore/nonfinite_view.h)
-    bool moved_while_down_ = false;  // the left button was dragged: no pick on release
+    bool moved_while_down_ = false;  // the left button was dragged past the threshold: no pick on release
     bool pointer_moved_ = false;     // the pointer has moved in the window at least once
     std::string pending_capture_;    // write the window here after the next frame is drawn
     bool window_captured_ = false;   // --capture-window is taken once
