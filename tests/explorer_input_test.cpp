@@ -1039,6 +1039,32 @@ TEST_F(ExplorerInput, AClickThatJittersAPixelSelectsAndDoesNotOrbit) {
     EXPECT_EQ(log.find("unsaved"), std::string::npos) << "no orbit: " << log;
 }
 
+// A slider's tooltip shows while the mouse rests on it, and hides while the
+// slider is dragged (it covered the rows below and the values moving there).
+TEST_F(ExplorerInput, ASlidersTooltipHidesWhileItIsDragged) {
+    const std::string file = own_spec_example(dir_);
+    ASSERT_TRUE(start_with(1280, 720, {"--scene", file}));
+    const Rgb8Image original = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, original).scale > 0; });
+    const int x0 = 40, x1 = x0 + 40;  // the m slider's left part: dragging right raises m
+    auto below = [](const Rgb8Image& s) { return crop(s, 0, kSmallMSliderY + 14, 430, 110); };
+    app_->move(kSmallRestX, kSmallRestY);
+    const Rgb8Image plain = below(app_->screen(dir_.path()));
+    app_->move(x0, kSmallMSliderY);
+    sleep_ms(1500);
+    const Rgb8Image hovered = below(app_->screen(dir_.path()));
+    ASSERT_GT(differing_pixels(hovered, plain), 500) << "resting on the slider shows its tooltip under it";
+    app_->xdo("mousedown 1");
+    for (int i = 1; i <= 4; ++i) {
+        sleep_ms(80);
+        app_->move(x0 + (x1 - x0) * i / 4, kSmallMSliderY);
+    }
+    sleep_ms(1500);  // held still: longer than a tooltip's delay
+    const Rgb8Image dragging = below(app_->screen(dir_.path()));
+    app_->xdo("mouseup 1");
+    EXPECT_EQ(differing_pixels(dragging, plain), 0) << "no tooltip over the rows below while dragging";
+}
+
 // The score line keeps one line whatever the score: a passing "Score 100 /
 // 100  PASS (pass at 60)" wrapped on the narrow panel (three panes at 1280 x
 // 720) where a failing one did not, moving every control below it.

@@ -51,7 +51,7 @@ bool light_sphere_widget(const char* id, dvec3* direction, float radius) {
     const bool front = direction->z >= 0.0;
     draw->AddCircleFilled(dot, 5.0f, front ? IM_COL32(255, 230, 80, 255) : IM_COL32(255, 140, 40, 255));
     draw->AddCircle(dot, 5.0f, IM_COL32(0, 0, 0, 255));
-    if (ImGui::IsItemHovered()) {
+    if (tooltip_due()) {
         ImGui::SetTooltip("Drag: the light's direction as seen from the camera.\n"
                           "Inner disc = in front of the object, outer ring = behind it.");
     }

@@ -32,7 +32,7 @@ std::string param_tooltip(const ParamSpec& param) {
 }
 
 void show_tooltip(const ParamSpec& param) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", param_tooltip(param).c_str());
+    if (tooltip_due()) ImGui::SetTooltip("%s", param_tooltip(param).c_str());
 }
 
 // A choice; when a lobe list's form follows it and the key changes, the

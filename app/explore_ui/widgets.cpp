@@ -233,12 +233,12 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
         // decades (slider_scale.h) get about 40 px each.
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 40.0f);
         changed |= slider_double("##w", &lobe.w, form.weight.lo, form.weight.hi, "w %.4f", true);
-        if (ImGui::IsItemHovered())
+        if (tooltip_due())
             ImGui::SetTooltip("lobe weight w_%d, %s (logarithmic; Ctrl+click to type)", j + 1,
                               form.weight.text().c_str());
         ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 40.0f);
         changed |= slider_double("##value", &lobe.m, form.value.lo, form.value.hi, value_format.c_str(), true);
-        if (ImGui::IsItemHovered() && !form.value_help.empty())
+        if (tooltip_due() && !form.value_help.empty())
             ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
         // The remove button only where a lobe may go (else "+ lobe" would
         // join this row, past the panel's edge: issue 20's "+ lob").
@@ -266,8 +266,10 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
     return changed;
 }
 
+bool tooltip_due() { return ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && !ImGui::IsItemActive(); }
+
 void tooltip(const std::string& text) {
-    if (text.empty() || !ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    if (text.empty() || !tooltip_due()) return;
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
     ImGui::TextUnformatted(text.c_str());

@@ -36,8 +36,11 @@ bool color_edit(const char* label, dvec3* color);
 // `min_lobes` = 1 for a material (docs/spec.md#7-scene-files: 1 to 4), 0 for a light's own lobes.
 bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form, int min_lobes);
 
-// A tooltip for the last widget, shown while the mouse is over it.
+// A tooltip for the last widget, shown while the mouse is over it and it is
+// not being used (a slider's tooltip hides while it is dragged).
 void tooltip(const std::string& text);
+// Whether the last widget's tooltip may show now (hovered, not held).
+bool tooltip_due();
 
 // Grey explanatory text that wraps.
 void hint(const char* text);
