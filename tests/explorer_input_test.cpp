@@ -1065,6 +1065,31 @@ TEST_F(ExplorerInput, ASlidersTooltipHidesWhileItIsDragged) {
     EXPECT_EQ(differing_pixels(dragging, plain), 0) << "no tooltip over the rows below while dragging";
 }
 
+// B switched to a model with fewer parameters under a scrolled panel: the
+// panel stays where it was (the content shrinking pulled the scroll back and
+// moved every control under the mouse).
+TEST_F(ExplorerInput, ChangingBsModelDoesNotScrollThePanel) {
+    const std::string file = own_spec_example(dir_);
+    test::write_text(dir_.file("b.txt"), "section A/B compare open\ncompare on\ncompare_model metal\n");
+    ASSERT_TRUE(start_with(1280, 720, {"--script", dir_.file("b.txt"), file}));
+    const Rgb8Image original = headless(dir_);
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return find_magnified(s, original).scale > 0; });
+    app_->move(200, 400);
+    for (int i = 0; i < 30; ++i) app_->xdo("click 5");  // the wheel: to the panel's end
+    app_->move(kSmallRestX, kSmallRestY);
+    const Rgb8Image before = app_->screen(dir_.path());
+    // At the end of the panel B's model selector is at y = 256 (the A/B header at 82).
+    app_->click(150, 256);
+    sleep_ms(600);
+    app_->click(100, 282);  // the list's first entry: highlight (eq. 4), four parameters fewer
+    app_->move(kSmallRestX, kSmallRestY);
+    const Rgb8Image after = app_->screen(dir_.path());
+    EXPECT_GT(differing_pixels(crop(before, 0, 240, 430, 300), crop(after, 0, 240, 430, 300)), 1000)
+        << "B's parameters changed";
+    EXPECT_EQ(differing_pixels(crop(before, 0, 45, 430, 190), crop(after, 0, 45, 430, 190)), 0)
+        << "the rows above B's selector stayed in place";
+}
+
 // The score line keeps one line whatever the score: a passing "Score 100 /
 // 100  PASS (pass at 60)" wrapped on the narrow panel (three panes at 1280 x
 // 720) where a failing one did not, moving every control below it.

@@ -73,6 +73,19 @@ TEST(ModelTable, EveryParameterHasHelpAndALabel) {
         }
 }
 
+// The explorer shows a choice by its label where the table gives one: the
+// measured metals' F switch reads as the spec names its two ways.
+TEST(ModelTable, ChoiceLabelsNameEveryChoiceAndTheFSwitchReadsAsTheSpec) {
+    for (const ModelSpec& model : model_table().models())
+        for (const ParamSpec& param : model.params)
+            if (!param.choice_labels.empty())
+                EXPECT_EQ(param.choice_labels.size(), param.choices.size()) << model.name << "." << param.name;
+    const ParamSpec& f = model_table().find("metal")->param("fresnel");
+    ASSERT_EQ(f.choice_labels.size(), 2u);
+    EXPECT_EQ(f.choice_labels[0].rfind("F(\u03bb, 0)", 0), 0u) << f.choice_labels[0];
+    EXPECT_NE(f.choice_labels[1].find("eq. 19"), std::string::npos) << f.choice_labels[1];
+}
+
 TEST(ModelTable, ParametersOfTheSameNameAgreeAcrossModels) {
     // One GLSL field, one range and one set of choices per name: a value carried
     // from one model to another (with_model) stays valid.

@@ -124,7 +124,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     // A readable font where the system has one; ImGui's built-in one otherwise.
     if (std::FILE* f = std::fopen(kFont, "rb")) {
         std::fclose(f);
-        io.Fonts->AddFontFromFileTTF(kFont, 15.0f);
+        // Latin and Greek (F(\u03bb, 0), \u03c3, \u03b1): DejaVu has both; ImGui 1.86 names no Greek range.
+        static const ImWchar kLatinAndGreek[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0};
+        io.Fonts->AddFontFromFileTTF(kFont, 15.0f, nullptr, kLatinAndGreek);
     }
     ImGui_ImplGlfw_InitForOpenGL(window, true);  // its key and char callbacks chain to the window's
     glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)

@@ -30,6 +30,19 @@ bool header(const Explorer& explorer, const char* label, bool open_at_start) {
     return ImGui::CollapsingHeader(label);
 }
 
+// Content that shrinks under a scrolled panel (B switched to a model with
+// fewer parameters) would pull the scroll back and every control with it,
+// under the mouse: the region keeps the room it showed until scrolled up.
+void keep_scrolled_room() {
+    const float scroll = ImGui::GetScrollY();
+    if (scroll <= 0.0f) return;
+    const ImGuiWindow* region = ImGui::GetCurrentWindow();
+    // (The region's own padding: a child window without a border has none.)
+    const float needed = scroll + region->InnerRect.GetHeight() - region->WindowPadding.y;
+    const float bottom = ImGui::GetCursorPosY();
+    if (bottom < needed) ImGui::Dummy(ImVec2(1.0f, needed - bottom));
+}
+
 void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, float width,
                      float height) {
     ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -58,6 +71,7 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
     if (header(explorer, "File", true)) file_section(explorer);
     explorer.view.section_requests.clear();
     ImGui::PopItemWidth();
+    keep_scrolled_room();
     // Text or a label past the region's visible edge (clip_check.h): the
     // frame loop widens the panel by as much.
     const ImGuiWindow* sections = ImGui::GetCurrentWindow();

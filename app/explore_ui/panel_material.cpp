@@ -37,15 +37,21 @@ void show_tooltip(const ParamSpec& param) {
 
 // A choice; when a lobe list's form follows it and the key changes, the
 // lobes start again from the new form's defaults (m and n mean different things).
+// The words the UI shows for choice i: its label in the table, else the choice itself.
+const std::string& choice_label(const ParamSpec& param, int i) {
+    const std::size_t at = std::size_t(i);
+    return at < param.choice_labels.size() && !param.choice_labels[at].empty() ? param.choice_labels[at] : param.choices[at];
+}
+
 bool choice_widget(Material& material, const ParamSpec& param) {
     int index = material.choice(param.name);
-    if (!ImGui::BeginCombo(field(param.label).c_str(), param.choices[std::size_t(index)].c_str(), combo_flags())) {
+    if (!ImGui::BeginCombo(field(param.label).c_str(), choice_label(param, index).c_str(), combo_flags())) {
         show_tooltip(param);
         return false;
     }
     bool changed = false;
     for (int i = 0; i < static_cast<int>(param.choices.size()); ++i) {
-        if (!ImGui::Selectable(param.choices[std::size_t(i)].c_str(), i == index)) continue;
+        if (!ImGui::Selectable(choice_label(param, i).c_str(), i == index)) continue;
         const Material before = material;
         material.set_choice(param.name, i);
         carry_replaced_colour(before, material, param);
@@ -187,7 +193,7 @@ void material_section(Explorer& explorer) {
     if (material_editor(edited, action)) explorer.commands.push(command::SetMaterial{explorer.view.selected_object, edited, action});
     else if (material->model().family == Family::metal) {
         // docs/spec.md#72-measured-metals: what assumption 3 costs, side by side.
-        if (ImGui::Button("A/B: F(lambda, 0) vs full eq. 19")) explorer.commands.push(command::CompareFresnel{});
+        if (ImGui::Button("A/B: F(\u03bb, 0) vs full eq. 19")) explorer.commands.push(command::CompareFresnel{});
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("The split on: A with the paper's F(lambda, 0) (assumption 3), B with the\n"
                               "full eq. 19 for the metal's complex index (gold if it names no conductor).");

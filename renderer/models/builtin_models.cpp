@@ -128,6 +128,7 @@ ParamSpec conductor_choice(std::string replaces) {
 ParamSpec conductor_fresnel() {
     ParamSpec p;
     p.name = "fresnel", p.label = "F", p.kind = ParamKind::choice, p.choices = {"normal", "full"};
+    p.choice_labels = {"F(\u03bb, 0) (normal)", "full eq. 19 (full)"};  // as docs/spec.md#72-measured-metals names them
     p.fallback = {0.0};
     p.help = "a conductor's F: normal incidence (the paper's assumption 3), or eq. 19 at every angle";
     p.cite = "eq. 19";

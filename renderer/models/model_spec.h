@@ -55,6 +55,7 @@ struct ParamSpec {
     bool log_slider = false;         // the UI slider is logarithmic (values spanning decades)
     std::string format = "%.3f";     // the UI's printf format
     std::vector<std::string> choices;  // choice
+    std::vector<std::string> choice_labels;  // choice: the UI's words for each, when not the choice itself
     std::vector<LobeForm> forms;       // lobes: one form, or one per choice of `form_from`
     std::string form_from;             // lobes: the choice parameter that picks the form
     std::string default_from;          // absent: copy this (earlier) parameter ("ka" <- "kd")
