@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 namespace m3055 {
@@ -145,6 +146,7 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
     const std::vector<Light> lights = test::stress_lights(batch);
     long nonfinite_gpu = 0, nonfinite_ref = 0, compared = 0, beyond = 0;
     double worst = 0.0;
+    std::map<std::string, std::pair<long, double>> by_model;  // compared, worst
     for (int i = 0; i < count; ++i) {
         const dvec3 ref = test::evaluate_reference(batch.inputs[i], lights).color;
         const dvec3 got = gpu[i].color;
@@ -157,6 +159,9 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
         double scaled = 0.0;
         for (int c = 0; c < 3; ++c) scaled = std::max(scaled, std::abs(got[c] - ref[c]) / std::max(1.0, std::abs(ref[c])));
         worst = std::max(worst, scaled);
+        auto& [model_compared, model_worst] = by_model[batch.inputs[i].material.model_name()];
+        ++model_compared;
+        model_worst = std::max(model_worst, scaled);
         if (scaled > 1e-3) {
             ++beyond;
             if (beyond <= 5)
@@ -166,6 +171,8 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
     }
     std::printf("[ result   ] %ld inputs compared, worst scaled difference %.3g; non-finite gpu %ld ref %ld\n",
                 compared, worst, nonfinite_gpu, nonfinite_ref);
+    for (const auto& [model, measured] : by_model)
+        std::printf("[ result   ]   %s: %ld compared, worst %.3g\n", model.c_str(), measured.first, measured.second);
     EXPECT_EQ(nonfinite_gpu, 0);
     EXPECT_EQ(nonfinite_ref, 0);
     EXPECT_GT(compared, 5000);
