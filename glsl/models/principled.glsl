@@ -60,9 +60,10 @@ float principled_gtr2_aniso(float HoT, float HoB, float NoH, float ax, float ay)
 // Burley 2012, GTR with gamma = 1 (Berry's distribution; eq. 4 as revised), the
 // clear coat's, for alpha in [0.001, 0.1] (clearcoat_gloss 1 ... 0):
 //   D = (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2 theta_h)).
-// The bracket is written sin^2 + a^2 cos^2: 1 - cos^2 in float loses all digits
-// at the peak, where it must resolve a^2 = 1e-6 (disney.brdf's form is off by
-// up to 6 % within ~0.3 degrees of the gloss peak).
+// The bracket is written sin^2 + a^2 cos^2 with sin^2 from |N x h|^2: near the
+// peak cos theta_h holds only ~6e-8 in float, and any 1 - cos^2 form must
+// resolve a^2 = 1e-6 there (disney.brdf's 1 + (a^2 - 1) cos^2 is off by up to
+// ~10 % within a fraction of a degree of the gloss-1 peak; this form, 2.4e-4).
 float principled_gtr1(float sin2_h, float cos2_h, float alpha) {
     float a2 = alpha * alpha;
     return (a2 - 1.0) / (PI * log(a2) * (sin2_h + a2 * cos2_h));
