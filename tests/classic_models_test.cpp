@@ -515,9 +515,9 @@ TEST(Principled, AnisotropicZeroIsIsotropic) {
         EXPECT_LE(relative_difference(classic_brdf(principled(iso, {0.5, 0.25, 0.75}, {0, 1, 0}), kN, L, V),
                                       classic_brdf(principled(iso, {0.5, 0.25, 0.75}, {1, 0.3, 0.2}), kN, L, V)),
                   1e-12);
-        anisotropic_change = std::max(
-            anisotropic_change, relative_difference(classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {0, 1, 0}), kN, L, V),
-                                                    classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {1, 0.3, 0.2}), kN, L, V)));
+        const dvec3 up = classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {0, 1, 0}), kN, L, V);
+        const dvec3 tilted = classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {1, 0.3, 0.2}), kN, L, V);
+        anisotropic_change = std::max(anisotropic_change, relative_difference(up, tilted));
     }
     EXPECT_GT(anisotropic_change, 0.5);
 }

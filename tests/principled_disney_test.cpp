@@ -1,5 +1,5 @@
-// Burley's principled BRDF (docs/models.md#principled) against its reference
-// implementation, BRDF Explorer's src/brdfs/disney.brdf, read as a .brdf
+// Burley's principled BRDF (docs/models.md#principled-burleys-principled-brdf)
+// against its reference implementation, BRDF Explorer's src/brdfs/disney.brdf, read as a .brdf
 // material: {"model": "brdf", "file": ".../disney.brdf", "params": {...}},
 // shaded on the classic models' scale like `principled` (pi f (N.L)+ a c).
 // disney.brdf is third-party and not in this repository: set
@@ -177,7 +177,16 @@ struct Measured {
     }
 };
 
-// `a` against `b` (a raw image or the reference, rows top to bottom) on the
+// Channel c of pixel (x, y), y from the top: of a raw image (stored bottom to
+// top) and of the reference.
+double raw_at(const RgbFloatImage& image, int x, int y, int c) {
+    return image.pixels[(std::size_t(image.height - 1 - y) * image.width + std::size_t(x)) * 3 + std::size_t(c)];
+}
+double ref_at(const ref::ReferenceImage& image, int x, int y, int c) {
+    return image.rgb[(std::size_t(y) * image.width + std::size_t(x)) * 3 + std::size_t(c)];
+}
+
+// `a` against `b` (b(x, y, c): a raw image or the reference) on the
 // reference's interior pixels.
 template <typename At>
 Measured measure(const RgbFloatImage& a, At b, const ref::ReferenceImage& reference, int bits, long* interior) {
@@ -191,7 +200,7 @@ Measured measure(const RgbFloatImage& a, At b, const ref::ReferenceImage& refere
             ++count;
             bool on_level = true;
             for (int c = 0; c < 3; ++c) {
-                const double got = a.pixels[(std::size_t(a.height - 1 - y) * a.width + x) * 3 + c];
+                const double got = raw_at(a, x, y, c);
                 const double expected = b(x, y, c);
                 const double diff = std::abs(got - expected);
                 m.max_abs = std::max(m.max_abs, diff);
@@ -221,15 +230,11 @@ TEST(PrincipledVsDisneyBrdf, RendersOnTheSameDisplayLevels) {
                 const RgbFloatImage ours_raw = render(ours), theirs_raw = render(theirs);
                 const int bits = ours.display.bits;
                 long interior = 0;
-                const Measured g = measure(
-                    ours_raw,
-                    [&](int x, int y, int c) {
-                        return double(theirs_raw.pixels[(std::size_t(theirs_raw.height - 1 - y) * theirs_raw.width + x) * 3 + c]);
-                    },
-                    reference, bits, &interior);
-                auto ref_at = [&](int x, int y, int c) { return reference.rgb[(std::size_t(y) * reference.width + x) * 3 + c]; };
-                const Measured f = measure(theirs_raw, ref_at, reference, bits, &interior);
-                const Measured o = measure(ours_raw, ref_at, reference, bits, &interior);
+                auto theirs_at = [&](int x, int y, int c) { return raw_at(theirs_raw, x, y, c); };
+                auto reference_at = [&](int x, int y, int c) { return ref_at(reference, x, y, c); };
+                const Measured g = measure(ours_raw, theirs_at, reference, bits, &interior);
+                const Measured f = measure(theirs_raw, reference_at, reference, bits, &interior);
+                const Measured o = measure(ours_raw, reference_at, reference, bits, &interior);
                 EXPECT_GT(interior, 1000);
                 EXPECT_EQ(g.nonfinite + f.nonfinite, 0);
                 EXPECT_GE(g.same_share, kSameLevelShare);
@@ -286,7 +291,8 @@ TEST(PrincipledVsDisneyBrdf, TheFilesBrdfIsTheReferences) {
         EXPECT_EQ(compared, 177 * 177);
         EXPECT_LE(theirs, s.name == "clearcoat_gloss1" ? kGlossyCoatTolerance : kTolerance) << s.name;
         EXPECT_LE(ours, kTolerance) << s.name;
-        std::printf("[ result   ] %-18s f on the grid vs the reference (%ld pairs): disney.brdf %.2g, principled %.2g\n",
+        std::printf("[ result   ] %-18s f on the grid vs the reference (%ld pairs): disney.brdf %.2g, "
+                    "principled %.2g\n",
                     s.name.c_str(), compared, theirs, ours);
         worst_file = std::max(worst_file, theirs), worst_ours = std::max(worst_ours, ours);
     }
@@ -306,9 +312,8 @@ TEST(PrincipledVsDisneyBrdf, TheComparisonSeesTheGammaOfTheBaseColour) {
     const ref::ReferenceImage reference = ref::render_reference(ours);
     long interior = 0;
     const RgbFloatImage theirs = render(scene_with(wrong, lights, false));
-    const Measured m = measure(
-        theirs, [&](int x, int y, int c) { return reference.rgb[(std::size_t(y) * reference.width + x) * 3 + c]; },
-        reference, ours.display.bits, &interior);
+    auto reference_at = [&](int x, int y, int c) { return ref_at(reference, x, y, c); };
+    const Measured m = measure(theirs, reference_at, reference, ours.display.bits, &interior);
     EXPECT_LT(m.same_share, 0.8);  // measured 0.70: the lit pixels differ
     EXPECT_GE(m.max_levels, 8);    // measured 12
 }

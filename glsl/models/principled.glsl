@@ -1,7 +1,7 @@
 // Burley's principled BRDF: B. Burley, "Physically-Based Shading at Disney",
 // SIGGRAPH 2012 course notes (Practical Physically-Based Shading in Film and
 // Game Production), and its reference implementation, BRDF Explorer's
-// src/brdfs/disney.brdf (github.com/wdas/brdf). docs/models.md#principled.
+// src/brdfs/disney.brdf (github.com/wdas/brdf). docs/models.md#principled-burleys-principled-brdf.
 //
 // In the classic family (models/classic.glsl), on its scale: a light adds
 // pi f (N.L) a c. diffuse_principled is the factor of K_diff, which for this
@@ -63,7 +63,8 @@ float principled_gtr2_aniso(float HoT, float HoB, float NoH, float ax, float ay)
 // The bracket is written sin^2 + a^2 cos^2 with sin^2 from |N x h|^2: near the
 // peak cos theta_h holds only ~6e-8 in float, and any 1 - cos^2 form must
 // resolve a^2 = 1e-6 there (disney.brdf's 1 + (a^2 - 1) cos^2 is off by up to
-// ~10 % within a fraction of a degree of the gloss-1 peak; this form, 2.4e-4).
+// ~10 % within a fraction of a degree of the gloss-1 peak; this form stays
+// within 2.4e-4 of the double reference).
 float principled_gtr1(float sin2_h, float cos2_h, float alpha) {
     float a2 = alpha * alpha;
     return (a2 - 1.0) / (PI * log(a2) * (sin2_h + a2 * cos2_h));

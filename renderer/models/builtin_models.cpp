@@ -330,7 +330,7 @@ ModelSpec heidrich_seidel() {
     return s;
 }
 
-// ---- Burley's principled BRDF (docs/models.md#principled) -----------------------------
+// ---- Burley's principled BRDF (docs/models.md#principled-burleys-principled-brdf) ---------
 
 // A number of disney.brdf's parameter block: range [0, 1], its default.
 ParamSpec principled_number(std::string name, std::string label, double fallback, std::string help) {
@@ -390,7 +390,8 @@ ModelSpec principled() {
                                          "aspect of the specular: alpha_x = r^2 / aspect along T, alpha_y = r^2 "
                                          "aspect, aspect = sqrt(1 - 0.9 anisotropic)"));
     s.params.push_back(principled_number("sheen", "sheen", 0.0, "a grazing Fresnel lobe for cloth"));
-    s.params.push_back(principled_number("sheen_tint", "sheen tint", 0.5, "tints the sheen towards the base colour's hue"));
+    s.params.push_back(
+        principled_number("sheen_tint", "sheen tint", 0.5, "tints the sheen towards the base colour's hue"));
     s.params.push_back(principled_number("clearcoat", "clear coat", 0.0,
                                          "a second, white specular lobe (GTR1, F0 0.04) of weight 0.25 clearcoat"));
     s.params.push_back(principled_number("clearcoat_gloss", "clear coat gloss", 1.0,

@@ -1,6 +1,6 @@
-// Burley's principled BRDF in double (docs/models.md#principled), term by term
-// as glsl/models/principled.glsl, with the same names; the formulas and the
-// reasons for their forms are in the GLSL's comments.
+// Burley's principled BRDF in double, term by term as glsl/models/principled.glsl,
+// with the same names (docs/models.md#principled-burleys-principled-brdf); the
+// formulas and the reasons for their forms are in the GLSL's comments.
 #include "reference/principled.h"
 
 #include "numeric/angles.h"

@@ -1,7 +1,7 @@
 // The double-precision twin of glsl/models/principled.glsl: Burley's principled
 // BRDF (Burley 2012, "Physically-Based Shading at Disney"; BRDF Explorer's
 // src/brdfs/disney.brdf), one function per term with the GLSL's names, and the
-// model's two classic hooks. docs/models.md#principled.
+// model's two classic hooks. docs/models.md#principled-burleys-principled-brdf.
 #pragma once
 
 #include "reference/reference.h"
