@@ -115,7 +115,7 @@ vec3 specular_principled(Material mat, vec3 N, vec3 L, vec3 V, float NoL, float 
     tangent_frame(mat.axis, N, T, B);
     vec3 H = L + V;
     float LoH = 0.5 * length(H);
-    H = dot(H, H) > 0.0 ? normalize(H) : N;  // L = -V: no half vector (as ref::half_vector)
+    H = dot(H, H) > 0.0 ? normalize(H) : N;  // L = -V: no half vector; N, as the other models
     float NoH = dot(N, H);
     vec3 NxH = cross(N, H);
     float FH = principled_schlick_weight(LoH);
