@@ -90,6 +90,17 @@ Material minnaert(double k) {
     return material;
 }
 
+// Burley's principled BRDF with `numbers` set (the rest at disney.brdf's defaults).
+Material principled(std::vector<std::pair<const char*, double>> numbers, dvec3 base = {0.7, 0.3, 0.2},
+                    dvec3 axis = {0, 1, 0}) {
+    Material material = Material::of("principled");
+    material.set_vec3("base_color", base);
+    material.set_vec3("ka", base);
+    material.set_vec3("axis", glm::normalize(axis));
+    for (const auto& [name, value] : numbers) material.set_number(name, value);
+    return material;
+}
+
 std::vector<std::pair<std::string, Material>> materials() {
     Material glowing = classic("blinn_phong");
     glowing.set_vec3("emission", {0.1, 0.05, 0.0});
@@ -130,6 +141,25 @@ std::vector<std::pair<std::string, Material>> materials() {
         {"heidrich_seidel", heidrich_seidel(32)},
         {"heidrich_seidel_n10000", heidrich_seidel(10000)},
         {"heidrich_seidel_tilted_axis", heidrich_seidel(20, {1, 1, 1})},
+        {"principled", principled({})},
+        {"principled_r1", principled({{"roughness", 1}})},
+        {"principled_metallic", principled({{"metallic", 1}, {"roughness", 0.3}}, {0.9, 0.6, 0.2})},
+        {"principled_anisotropic_tilted_axis", principled({{"anisotropic", 1}, {"roughness", 0.5}}, {0.3, 0.3, 0.8},
+                                                          {0, 1, 1})},
+        {"principled_clearcoat_gloss05", principled({{"clearcoat", 1}, {"clearcoat_gloss", 0.5}}, {0.1, 0.2, 0.6})},
+        // Its narrowest lobes at full weight hold the main bound (measured worst 4.0e-4, roughness 0):
+        // GTR2 and GTR1 are written without 1 - cos^2 (glsl/models/principled.glsl).
+        {"principled_r0", principled({{"roughness", 0}})},  // GTR2 alpha 0.001
+        {"principled_r0_anisotropic", principled({{"roughness", 0}, {"anisotropic", 1}})},
+        {"principled_clearcoat_gloss1", principled({{"clearcoat", 1}, {"clearcoat_gloss", 1}})},  // GTR1 alpha 0.001
+        {"principled_sheen_tinted", principled({{"sheen", 1}, {"sheen_tint", 1}, {"roughness", 0.9}}, {0.5, 0.1, 0.1})},
+        {"principled_subsurface", principled({{"subsurface", 1}, {"roughness", 1}})},
+        {"principled_specular_tint", principled({{"specular", 1}, {"specular_tint", 1}, {"roughness", 0.25}},
+                                                {0.2, 0.5, 0.8})},
+        {"principled_black_all_on", principled({{"subsurface", 0.5}, {"metallic", 0.5}, {"specular_tint", 0.5},
+                                                {"roughness", 0.4}, {"anisotropic", 0.5}, {"sheen", 0.7},
+                                                {"clearcoat", 0.5}, {"clearcoat_gloss", 0.3}},
+                                               {0, 0, 0}, {1, 1, 0})},
     };
 }
 

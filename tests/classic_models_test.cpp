@@ -7,6 +7,7 @@
 #include "reference/hooks.h"
 #include "numeric/normalization.h"
 #include "reference/classic.h"
+#include "reference/principled.h"
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,18 @@ Material with_shininess(const char* model, double n) {
     return material;
 }
 
+// Burley's principled BRDF with `numbers` set, the rest at disney.brdf's
+// defaults; colours exact in float (the GPU record's K_diff is a float).
+Material principled(std::vector<std::pair<const char*, double>> numbers = {}, dvec3 base = {0.5, 0.25, 0.75},
+                    dvec3 axis = {0, 1, 0}) {
+    Material material = Material::of("principled");
+    material.set_vec3("base_color", base);
+    material.set_vec3("ka", base);
+    material.set_vec3("axis", glm::normalize(axis));
+    for (const auto& [name, value] : numbers) material.set_number(name, value);
+    return material;
+}
+
 double relative_difference(const dvec3& a, const dvec3& b) {
     const dvec3 d = glm::abs(a - b);
     const double scale = std::max({1e-300, std::abs(a.x), std::abs(a.y), std::abs(a.z)});
@@ -128,6 +141,18 @@ TEST(Reciprocity, PhysicalBrdfsAreSymmetricInLAndV) {
     materials.push_back({"microfacet ggx mixture", mixture});
     materials.push_back({"ward 0.1 x 0.4", ward(0.1, 0.4)});
     materials.push_back({"ward 0.3 x 0.05, tilted axis", ward(0.3, 0.05, {1, 2, 0.5})});
+    // Burley's: every lobe is symmetric (F_L F_V, cos theta_d, F_H, D(h), G1(L) G1(V)).
+    materials.push_back({"principled", principled()});
+    materials.push_back({"principled subsurface", principled({{"subsurface", 1}, {"roughness", 0.8}})});
+    materials.push_back({"principled sheen", principled({{"sheen", 1}, {"sheen_tint", 0.5}})});
+    materials.push_back({"principled clear coat", principled({{"clearcoat", 1}, {"clearcoat_gloss", 0.7}})});
+    materials.push_back({"principled metallic", principled({{"metallic", 1}, {"roughness", 0.2}})});
+    materials.push_back({"principled anisotropic, tilted axis",
+                         principled({{"anisotropic", 0.8}, {"roughness", 0.4}}, {0.5, 0.25, 0.75}, {1, 2, 0.5})});
+    materials.push_back({"principled all", principled({{"subsurface", 0.3}, {"metallic", 0.4}, {"specular", 0.8},
+                                                       {"specular_tint", 0.6}, {"roughness", 0.35},
+                                                       {"anisotropic", 0.5}, {"sheen", 0.9}, {"sheen_tint", 0.2},
+                                                       {"clearcoat", 0.7}, {"clearcoat_gloss", 0.4}})});
     for (const auto& [name, material] : materials)
         EXPECT_LE(worst_reciprocity_error(material), 1e-12) << name;
 }
@@ -409,6 +434,153 @@ TEST(HeidrichSeidel, BrightestOnTheReflectionConeAroundTheTangent) {
     EXPECT_NEAR(classic_specular(hs, kN, L, V).x, std::pow(direct, 500.0), 1e-9);
     const dvec3 V_on_cone = glm::normalize(dvec3(-0.5, 0.0, std::sqrt(1.0 - 0.25)));
     EXPECT_NEAR(classic_specular(hs, kN, glm::normalize(dvec3(0.5, 0.0, std::sqrt(0.75))), V_on_cone).x, 1.0, 1e-9);
+}
+
+// ---- Burley's principled BRDF (disney.brdf) ------------------------------------------------
+
+// At L = V = N every Schlick weight is 0 and Burley's constants stand alone:
+//   f = (1 - metallic) C / pi mix(1, 0.625, subsurface)       (F_d = 1; ss = 1.25 (1/2 - 1/2 + 1/2))
+//     + C_spec0 / (4 pi ax ay)                                (D = 1/(pi ax ay), G1/(2 N.v) = 1/2 each)
+//     + 0.25 clearcoat 0.04 / 4 (a^2 - 1) / (pi ln(a^2) a^2)  (GTR1 at its peak, alpha_g 0.25 gives 1/2 each)
+TEST(Principled, NormalIncidenceIsBurleysConstants) {
+    const dvec3 C{0.5, 0.25, 0.75};
+    const double lum = 0.3 * C.r + 0.6 * C.g + 0.1 * C.b;
+    auto f = [](const Material& m) { return classic_brdf(m, kN, kN, kN); };
+    auto spec = [](dvec3 spec0, double r, double anisotropic) {
+        const double aspect = std::sqrt(1.0 - 0.9 * anisotropic);
+        return spec0 / (4.0 * kPi * std::max(0.001, r * r / aspect) * std::max(0.001, r * r * aspect));
+    };
+    auto coat = [](double gloss) {
+        const double a = 0.1 + (0.001 - 0.1) * gloss, a2 = a * a;
+        return 0.25 * 0.04 / 4.0 * (a2 - 1.0) / (kPi * std::log(a2) * a2);
+    };
+    // Defaults: specular 0.5 is F0 = 0.04, glass's (index 1.5).
+    EXPECT_LE(relative_difference(f(principled()), C / kPi + spec(dvec3(0.04), 0.5, 0.0)), 1e-14);
+    EXPECT_LE(relative_difference(f(principled({{"subsurface", 1}})), 0.625 * C / kPi + spec(dvec3(0.04), 0.5, 0.0)),
+              1e-14);
+    EXPECT_LE(relative_difference(f(principled({{"metallic", 1}, {"roughness", 0.3}})), spec(C, 0.3, 0.0)), 1e-14);
+    EXPECT_LE(relative_difference(f(principled({{"specular", 1}, {"specular_tint", 1}, {"roughness", 0.2}})),
+                                  C / kPi + spec(0.08 * C / lum, 0.2, 0.0)),
+              1e-14);
+    EXPECT_LE(relative_difference(f(principled({{"anisotropic", 1}, {"roughness", 0.6}})),
+                                  C / kPi + spec(dvec3(0.04), 0.6, 1.0)),
+              1e-14);
+    for (double gloss : {0.0, 0.5, 1.0})
+        EXPECT_LE(relative_difference(f(principled({{"clearcoat", 1}, {"clearcoat_gloss", gloss}})),
+                                      C / kPi + spec(dvec3(0.04), 0.5, 0.0) + dvec3(coat(gloss))),
+                  1e-13)
+            << gloss;
+    // Sheen is F_H-weighted: nothing at normal incidence.
+    EXPECT_EQ(f(principled({{"sheen", 1}})), f(principled()));
+}
+
+// Retro-reflection at L = V (cos theta_d = 1): F_D90 = 0.5 + 2 r, so
+// F_d = (1 + (F_D90 - 1)(1 - c)^5)^2; and the subsurface lobe at r = 1 has
+// F_ss = 1, ss = 1.25 / (2 c): ss (N.L) = 0.625 at every c, flat.
+TEST(Principled, DiffuseRetroReflectionAndSubsurface) {
+    for (double c : {0.05, 0.3, 0.7, 1.0})
+        for (double r : {0.0, 0.5, 1.0}) {
+            const Material m = principled({{"roughness", r}});
+            const double w = std::pow(1.0 - c, 5.0), fd = 1.0 + (0.5 + 2.0 * r - 1.0) * w;
+            EXPECT_NEAR(diffuse_principled(m, c, c, 1.0), fd * fd * c, 1e-14) << c << " " << r;
+        }
+    const Material flat = principled({{"subsurface", 1}, {"roughness", 1}});
+    for (double c : {0.02, 0.3, 0.7, 1.0}) EXPECT_NEAR(diffuse_principled(flat, c, c, 1.0), 0.625, 1e-14) << c;
+    // Smooth: grazing light and view darken the diffuse to a quarter (F_D90 = 0.5 twice).
+    EXPECT_NEAR(diffuse_principled(principled({{"roughness", 0}}), 1e-9, 0.0, -1.0) / 1e-9, 0.25, 1e-6);
+    EXPECT_EQ(diffuse_principled(principled(), -0.1, 0.5, 0.0), 0.0);  // below the horizon
+}
+
+TEST(Principled, MetallicOneHasNoDiffuseAndNoSheen) {
+    const Material metal = principled({{"metallic", 1}, {"roughness", 0.4}});
+    const Material velvet_metal = principled({{"metallic", 1}, {"roughness", 0.4}, {"subsurface", 1}, {"sheen", 1}});
+    std::mt19937 rng(17);
+    for (int i = 0; i < 1000; ++i) {
+        const dvec3 L = random_upper(rng), V = random_upper(rng);
+        EXPECT_EQ(diffuse_principled(velvet_metal, L.z, V.z, glm::dot(L, V)), 0.0);
+        EXPECT_EQ(classic_brdf(velvet_metal, kN, L, V), classic_brdf(metal, kN, L, V));
+    }
+}
+
+// anisotropic = 0: ax = ay, and D and G depend on h and v only through
+// (h.T)^2 + (h.B)^2 = 1 - (N.h)^2: the tangent axis does not matter.
+// Anisotropic, it does (the check can fail).
+TEST(Principled, AnisotropicZeroIsIsotropic) {
+    std::mt19937 rng(19);
+    double anisotropic_change = 0.0;
+    for (int i = 0; i < 1000; ++i) {
+        const dvec3 L = random_upper(rng), V = random_upper(rng);
+        const std::vector<std::pair<const char*, double>> iso = {{"roughness", 0.3}, {"clearcoat", 1}};
+        const std::vector<std::pair<const char*, double>> aniso = {{"roughness", 0.3}, {"anisotropic", 1}};
+        EXPECT_LE(relative_difference(classic_brdf(principled(iso, {0.5, 0.25, 0.75}, {0, 1, 0}), kN, L, V),
+                                      classic_brdf(principled(iso, {0.5, 0.25, 0.75}, {1, 0.3, 0.2}), kN, L, V)),
+                  1e-12);
+        const dvec3 up = classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {0, 1, 0}), kN, L, V);
+        const dvec3 tilted = classic_brdf(principled(aniso, {0.5, 0.25, 0.75}, {1, 0.3, 0.2}), kN, L, V);
+        anisotropic_change = std::max(anisotropic_change, relative_difference(up, tilted));
+    }
+    EXPECT_GT(anisotropic_change, 0.5);
+}
+
+TEST(Principled, ClearcoatZeroRemovesTheCoat) {
+    std::mt19937 rng(23);
+    for (int i = 0; i < 1000; ++i) {
+        const dvec3 L = random_upper(rng), V = random_upper(rng);
+        const dvec3 plain = classic_brdf(principled(), kN, L, V);
+        EXPECT_EQ(classic_brdf(principled({{"clearcoat_gloss", 0}}), kN, L, V), plain);
+        EXPECT_EQ(classic_brdf(principled({{"clearcoat", 0}, {"clearcoat_gloss", 0.3}}), kN, L, V), plain);
+        const dvec3 coated = classic_brdf(principled({{"clearcoat", 1}}), kN, L, V);
+        EXPECT_GT(coated.x, plain.x);
+        // The coat is white: it adds the same to every channel.
+        EXPECT_NEAR(coated.x - plain.x, coated.z - plain.z, 1e-12 * std::max(1.0, coated.x));
+    }
+}
+
+// integral D (N.h) dw_h over the hemisphere, theta_h = (pi/2) u^2 (samples near N).
+double integrate_principled_D(double ax, double ay, bool gtr1) {
+    const int nu = gtr1 ? 200000 : 4000, nphi = gtr1 ? 1 : 720;
+    double sum = 0.0;
+    for (int i = 0; i < nu; ++i) {
+        const double u = (i + 0.5) / nu, theta = 0.5 * kPi * u * u, dtheta = kPi * u / nu;
+        const double c = std::cos(theta), s = std::sin(theta);
+        for (int j = 0; j < nphi; ++j) {
+            const double phi = (j + 0.5) * 2.0 * kPi / nphi;
+            const double D = gtr1 ? principled_gtr1(s * s, c * c, ax)
+                                  : principled_gtr2_aniso(s * std::cos(phi), s * std::sin(phi), c, ax, ay);
+            sum += D * c * s * dtheta * (2.0 * kPi / nphi);
+        }
+    }
+    return sum;
+}
+
+TEST(Principled, GtrDistributionsAreNormalized) {
+    for (const auto& [ax, ay] : std::vector<std::pair<double, double>>{
+             {0.001, 0.001}, {0.05, 0.05}, {0.3, 0.03}, {0.16, 0.5}, {1.0, 1.0}})
+        EXPECT_NEAR(integrate_principled_D(ax, ay, false), 1.0, 1e-3) << "GTR2 " << ax << " x " << ay;
+    for (double alpha : {0.001, 0.01, 0.05, 0.1})  // clearcoat_gloss 1 ... 0
+        EXPECT_NEAR(integrate_principled_D(alpha, alpha, true), 1.0, 1e-3) << "GTR1 " << alpha;
+    // GTR1 as written (sin^2 + a^2 cos^2) is Burley's 1 + (a^2 - 1) cos^2.
+    for (double t : {0.0, 0.01, 0.3, 1.2}) {
+        const double a = 0.05, a2 = a * a, c2 = std::cos(t) * std::cos(t);
+        EXPECT_NEAR(principled_gtr1(std::sin(t) * std::sin(t), c2, a),
+                    (a2 - 1.0) / (kPi * std::log(a2) * (1.0 + (a2 - 1.0) * c2)), 1e-12 * principled_gtr1(0.0, 1.0, a));
+    }
+}
+
+// A white metal (no diffuse, no sheen, no coat): GTR2 with the separable Smith
+// G keeps rho <= 1 at every view and roughness, anisotropic or not; smooth and
+// head on it reflects nearly everything.
+TEST(WhiteFurnace, PrincipledWhiteMetalStaysAtOrBelowOne) {
+    for (double r : {0.2, 0.5, 1.0})
+        for (double anisotropic : {0.0, 1.0})
+            for (double view : {0.0, 30.0, 60.0, 80.0, 89.0}) {
+                const double rho =
+                    albedo(principled({{"metallic", 1}, {"roughness", r}, {"anisotropic", anisotropic}}, dvec3(1.0)),
+                           view);
+                EXPECT_LE(rho, 1.0 + 2e-3) << r << " anisotropic " << anisotropic << " at " << view;
+                EXPECT_GT(rho, 0.0);
+            }
+    EXPECT_NEAR(albedo(principled({{"metallic", 1}, {"roughness", 0.2}}, dvec3(1.0)), 0.0), 1.0, 1e-2);
 }
 
 // ---- The lecture's shading equation ---------------------------------------------------

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace m3055 {
@@ -44,13 +46,16 @@ void expect_vec(const dvec3& a, const dvec3& b) {
 
 TEST(ClassicScene, EveryModelNameLoads) {
     const std::vector<std::string> names = test::builtin_models_of(Family::classic);
-    ASSERT_GE(names.size(), 11u);  // lambert ... heidrich_seidel, minnaert
+    ASSERT_GE(names.size(), 12u);  // lambert ... heidrich_seidel, minnaert, principled
     for (const std::string& name : names) {
-        const Material m = load_material({{"model", name}, {"kd", {0.5, 0.25, 0.125}}});
+        // The diffuse colour: kd, or principled's base_color; ka defaults to it (seed 001).
+        const std::string colour = Material::of(name).model().param("ka").default_from;
+        ASSERT_TRUE(colour == "kd" || colour == "base_color") << name;
+        const Material m = load_material({{"model", name}, {colour, {0.5, 0.25, 0.125}}});
         EXPECT_EQ(m.model_name(), name);
         EXPECT_EQ(m.model().family, Family::classic);
-        expect_vec(m.vec3("kd"), {0.5, 0.25, 0.125});
-        expect_vec(m.vec3("ka"), {0.5, 0.25, 0.125});  // ka defaults to kd (seed 001)
+        expect_vec(m.vec3(colour), {0.5, 0.25, 0.125});
+        expect_vec(m.vec3("ka"), {0.5, 0.25, 0.125});
         expect_vec(m.vec3("emission"), {0, 0, 0});
     }
 }
@@ -103,6 +108,35 @@ TEST(ClassicScene, Defaults) {
     const Material hs = load_material({{"model", "heidrich_seidel"}, {"kd", {0, 0, 0}}});
     EXPECT_EQ(hs.number("shininess"), 32.0);
     expect_vec(hs.vec3("axis"), {0, 1, 0});
+}
+
+// disney.brdf's parameter block: every number in [0, 1], its defaults; the base
+// colour its default baseColor (.82, .67, .16) through mon2lin (x^2.2): ours is linear.
+TEST(ClassicScene, PrincipledTakesDisneyBrdfsRangesAndDefaults) {
+    const Material m = load_material({{"model", "principled"}});
+    expect_vec(m.vec3("base_color"), {std::pow(0.82, 2.2), std::pow(0.67, 2.2), std::pow(0.16, 2.2)});
+    expect_vec(m.vec3("ka"), m.vec3("base_color"));
+    expect_vec(m.vec3("emission"), {0, 0, 0});
+    const std::pair<const char*, double> defaults[] = {
+        {"subsurface", 0.0}, {"metallic", 0.0},  {"specular", 0.5}, {"specular_tint", 0.0},
+        {"roughness", 0.5},  {"anisotropic", 0.0}, {"sheen", 0.0},  {"sheen_tint", 0.5},
+        {"clearcoat", 0.0},  {"clearcoat_gloss", 1.0}};
+    for (const auto& [name, value] : defaults) {
+        EXPECT_EQ(m.number(name), value) << name;
+        const ParamSpec& spec = m.model().param(name);
+        EXPECT_EQ(spec.range.lo, 0.0) << name;
+        EXPECT_EQ(spec.range.hi, 1.0) << name;
+    }
+    expect_vec(m.vec3("axis"), {0, 1, 0});
+    const Material given = load_material({{"model", "principled"}, {"base_color", {0.2, 0.4, 0.6}}});
+    expect_vec(given.vec3("ka"), {0.2, 0.4, 0.6});  // the ambient colour follows the base colour
+    const std::string at = "scene.json: objects[0].material.";
+    EXPECT_EQ(material_error({{"model", "principled"}, {"kd", {1, 1, 1}}}),
+              at + "kd: not a parameter of model principled (its base colour is \"base_color\")");
+    EXPECT_EQ(material_error({{"model", "principled"}, {"color", {1, 1, 1}}}),
+              at + "color: not a parameter of model principled (its base colour is \"base_color\")");
+    EXPECT_EQ(material_error({{"model", "principled"}, {"roughness", 1.5}}), at + "roughness: must be in [0, 1], got 1.5");
+    EXPECT_EQ(material_error({{"model", "principled"}, {"ks", {1, 1, 1}}}), at + "ks: not a parameter of model principled");
 }
 
 TEST(ClassicScene, LectureAmbientFields) {
@@ -173,6 +207,11 @@ TEST(ClassicScene, RoundTripIsExact) {
         {{"model", "half_lambert_clamped"}, {"kd", {0.5, 0.5, 0.5}}},
         {{"model", "blinn_phong"}, {"kd", {0.5, 0.5, 0.5}}, {"shininess", 1e4}},
         {{"model", "microfacet"}, {"kd", {0, 0, 0}}, {"distribution", "blinn_phong"}, {"lobes", {{{"w", 1}, {"n", 3}}}}},
+        {{"model", "principled"}, {"base_color", {0.1, 0.7, 0.30000000000000004}}, {"subsurface", 0.25},
+         {"metallic", 0.125}, {"specular", 0.75}, {"specular_tint", 0.3}, {"roughness", 0.123456789},
+         {"anisotropic", 0.9}, {"sheen", 1}, {"sheen_tint", 0}, {"clearcoat", 0.6}, {"clearcoat_gloss", 0.05},
+         {"axis", {1, 0, 0}}, {"emission", {0, 0.01, 0}}},
+        {{"model", "principled"}},
     };
     for (const json& material : others) {
         more["material"] = material;

@@ -2,7 +2,8 @@
 // one input per pixel, the real GLSL (glsl/passes/stress.frag, general
 // program) against the double reference on the same float inputs.
 //   - Hostile inputs (grazing and exactly opposite L and V, N at the tangent
-//     axis's pole, exponents 0 and 10000, roughness 0.001 and 2, IOR 1 and 5):
+//     axis's pole, exponents 0 and 10000, roughness 0.001 and 2, IOR 1 and 5,
+//     principled's numbers at 0 and 1):
 //     never NaN or Inf, on the GPU or in the reference.
 //   - Inputs away from the edges (N.L, N.V >= 0.02, lobe widths >= 0.02,
 //     exponents <= 1000): |gpu - ref| <= 1e-3 max(1, |ref|), the GPU test's bound.
@@ -15,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 namespace m3055 {
@@ -62,10 +64,16 @@ Generated random_material(std::mt19937& rng, bool hostile) {
     std::vector<Lobe> lobes;
     for (int j = 0; j < count; ++j)
         lobes.push_back({u(rng), exponent ? pick({0.0, 10000.0}, 0.0, 1000.0) : pick({0.001, 2.0}, 0.02, 2.0)});
+    // principled: every number in [0, 1], hostile at its ends.
+    const char* principled_numbers[] = {"subsurface", "metallic", "specular", "specular_tint", "roughness",
+                                        "anisotropic", "sheen", "sheen_tint", "clearcoat", "clearcoat_gloss"};
+    double principled[10];
+    for (double& value : principled) value = pick({0.0, 1.0}, 0.0, 1.0);
     bool ok = shininess <= 1000.0 && alpha_x >= 0.02 && alpha_y >= 0.02;
     for (const Lobe& lobe : lobes) ok = ok && (exponent ? lobe.m <= 1000.0 : lobe.m >= 0.02);
 
-    m.set_vec3("kd", kd);
+    // The diffuse colour: kd, or principled's base_color (what ka defaults to).
+    m.set_vec3(m.model().param("ka").default_from, kd);
     m.set_vec3("ka", ka);
     m.set_vec3("emission", emission);
     if (m.has("ks")) m.set_vec3("ks", ks);
@@ -74,6 +82,14 @@ Generated random_material(std::mt19937& rng, bool hostile) {
     if (m.has("ior")) m.set_number("ior", ior);
     if (m.has("alpha_x")) m.set_number("alpha_x", alpha_x), m.set_number("alpha_y", alpha_y);
     if (m.has("axis")) m.set_vec3("axis", axis);
+    if (m.has("roughness")) {
+        for (int k = 0; k < 10; ++k) m.set_number(principled_numbers[k], principled[k]);
+        // Lobe widths >= 0.02 as above: the specular's alpha_y = r^2 sqrt(1 - 0.9 anisotropic),
+        // and the clear coat's alpha = mix(0.1, 0.001, gloss) where it shows.
+        const double r2 = principled[4] * principled[4];
+        const double coat_alpha = 0.1 + (0.001 - 0.1) * principled[9];
+        ok = r2 * std::sqrt(1.0 - 0.9 * principled[5]) >= 0.02 && (principled[8] == 0.0 || coat_alpha >= 0.02);
+    }
     if (m.has("distribution")) {
         m.set_choice("distribution", int(distribution));
         m.set_choice("fresnel", int(fresnel));
@@ -130,6 +146,7 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
     const std::vector<Light> lights = test::stress_lights(batch);
     long nonfinite_gpu = 0, nonfinite_ref = 0, compared = 0, beyond = 0;
     double worst = 0.0;
+    std::map<std::string, std::pair<long, double>> by_model;  // compared, worst
     for (int i = 0; i < count; ++i) {
         const dvec3 ref = test::evaluate_reference(batch.inputs[i], lights).color;
         const dvec3 got = gpu[i].color;
@@ -142,6 +159,9 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
         double scaled = 0.0;
         for (int c = 0; c < 3; ++c) scaled = std::max(scaled, std::abs(got[c] - ref[c]) / std::max(1.0, std::abs(ref[c])));
         worst = std::max(worst, scaled);
+        auto& [model_compared, model_worst] = by_model[batch.inputs[i].material.model_name()];
+        ++model_compared;
+        model_worst = std::max(model_worst, scaled);
         if (scaled > 1e-3) {
             ++beyond;
             if (beyond <= 5)
@@ -151,6 +171,8 @@ TEST(ClassicStress, FiniteEverywhereAndAccurateAwayFromTheEdges) {
     }
     std::printf("[ result   ] %ld inputs compared, worst scaled difference %.3g; non-finite gpu %ld ref %ld\n",
                 compared, worst, nonfinite_gpu, nonfinite_ref);
+    for (const auto& [model, measured] : by_model)
+        std::printf("[ result   ]   %s: %ld compared, worst %.3g\n", model.c_str(), measured.first, measured.second);
     EXPECT_EQ(nonfinite_gpu, 0);
     EXPECT_EQ(nonfinite_ref, 0);
     EXPECT_GT(compared, 5000);

@@ -313,15 +313,31 @@ TEST(ModelTable, SwitchingModelsKeepsValuesOfTheSameMeaning) {
     EXPECT_EQ(metal.lobes().to_vector()[0].m, Material::of("metal").lobes()[0].m);  // n_j are not m_j
     // From another family, the metals' d is their own default (eq. 14 with their lobes).
     EXPECT_EQ(with_model(Material::of("highlight"), model_table().get("metal")).number("d"), 0.05);
+
+    // principled: kd becomes the base colour; ka, emission and a ward's axis stay.
+    Material ward = Material::of("ward");
+    ward.set_vec3("kd", {0.1, 0.2, 0.3});
+    ward.set_vec3("ka", {0.3, 0.2, 0.1});
+    ward.set_vec3("emission", {0.01, 0.02, 0.03});
+    ward.set_vec3("axis", {0.0, 0.0, 1.0});
+    const Material principled = with_model(ward, model_table().get("principled"));
+    EXPECT_EQ(principled.vec3("base_color"), dvec3(0.1, 0.2, 0.3));
+    EXPECT_EQ(principled.vec3("ka"), dvec3(0.3, 0.2, 0.1));
+    EXPECT_EQ(principled.vec3("emission"), dvec3(0.01, 0.02, 0.03));
+    EXPECT_EQ(principled.vec3("axis"), dvec3(0.0, 0.0, 1.0));
+    EXPECT_EQ(principled.number("roughness"), 0.5);  // its own default
+    EXPECT_EQ(with_model(principled, model_table().get("lambert")).vec3("kd"), dvec3(0.1, 0.2, 0.3));
 }
 
 // Issue 20, item 10: a model switch keeps the object's colour between every
 // two built-in models (C0 "color" of the paper's models, "kd" of the classic
-// ones: carry_from in builtin_models.cpp), never the new model's default red.
+// ones, principled's "base_color": carry_from in builtin_models.cpp), never the
+// new model's default red.
 TEST(ModelTable, EverySwitchBetweenBuiltInModelsKeepsTheColour) {
     auto colour_param = [](const ModelSpec& m) -> const char* {
         if (m.find("color")) return "color";
         if (m.find("kd")) return "kd";
+        if (m.find("base_color")) return "base_color";
         return nullptr;
     };
     int pairs = 0;

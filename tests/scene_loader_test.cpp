@@ -408,7 +408,7 @@ TEST(SceneLoader, EveryErrorClassGivesItsExactOneLineMessage) {
          "scene.json: objects[0].material.model: must be \"highlight\", \"translucent\", \"metal\", "
          "\"metal_blinn\", \"metal_phong\", \"lambert\", \"half_lambert\", \"half_lambert_clamped\", "
          "\"half_lambert_normalized\", \"oren_nayar\", \"minnaert\", \"phong\", \"blinn_phong\", \"microfacet\", "
-         "\"ward\", \"heidrich_seidel\" or \"brdf\", got \"plastic\""},
+         "\"ward\", \"heidrich_seidel\", \"principled\" or \"brdf\", got \"plastic\""},
         {"key of another model", [](json& d) { d["objects"][0]["material"]["t_n"] = 0.5; },
          "scene.json: objects[0].material.t_n: not a parameter of model highlight"},
         {"lobes on highlight", [](json& d) { d["objects"][0]["material"]["lobes"] = json::array(); },

@@ -9,6 +9,8 @@
 #include "numeric/normalization.h"
 #include "spectral/conductor.h"
 
+#include <cmath>
+
 namespace m3055 {
 
 namespace {
@@ -63,7 +65,7 @@ void no_spectral_table(const Material&, float* out) { out[0] = -1.0f; }
 
 ParamSpec paper_colour() {
     ParamSpec p = required(colour("color", "colour C0", {0.8, 0.2, 0.2}, "the object's colour C0", "eq. 3"));
-    p.carry_from = {"kd"};
+    p.carry_from = {"kd", "base_color"};
     p.spectrum_key = "color_spectrum";
     return p;
 }
@@ -197,13 +199,13 @@ ModelSpec classic(std::string name, std::string label, std::string citation, std
     s.summary = std::move(summary);
     s.family = Family::classic;
     ParamSpec kd = required(colour("kd", "K_diff", {0.8, 0.2, 0.2}, "diffuse colour", "seed 003"));
-    kd.carry_from = {"color"};
+    kd.carry_from = {"color", "base_color"};
     // K_diff as a reflectance spectrum, one colour per light (docs/spec.md#73-spectral-colours).
     kd.spectrum_key = "kd_spectrum";
     ParamSpec ka = colour("ka", "K_amb", {0.8, 0.2, 0.2}, "ambient colour (the diffuse colour unless given)",
                           "seed 001, 003");
     ka.default_from = "kd";
-    ka.carry_from = {"color"};
+    ka.carry_from = {"color", "base_color"};
     s.params = {kd, ka, colour("emission", "emission", {0, 0, 0}, "emitted light L_emi, added as is", "seed 003")};
     if (specular) s.params.push_back(colour("ks", "K_spec", {1, 1, 1}, "specular colour", "seed 003"));
     s.misplaced_hints = {{"color", "its diffuse colour is \"kd\""}};
@@ -329,12 +331,89 @@ ModelSpec heidrich_seidel() {
     return s;
 }
 
+// ---- Burley's principled BRDF (docs/models.md#principled-burleys-principled-brdf) ---------
+
+// A number of disney.brdf's parameter block: range [0, 1], its default.
+ParamSpec principled_number(std::string name, std::string label, double fallback, std::string help) {
+    return number(std::move(name), std::move(label), closed(0.0, 1.0), fallback, std::move(help),
+                  "Burley 2012; disney.brdf");
+}
+
+// K_diff of the classic family's composer (mat.kd in glsl/models/classic.glsl,
+// reference/classic_models.cpp): the diffuse hook's factor multiplies the base
+// colour, as Burley's diffuse lobe is baseColor / pi times its retro-reflection.
+void principled_kd(const Material& material, float* out) {
+    const dvec3 c = material.vec3("base_color");
+    out[0] = float(c.r), out[1] = float(c.g), out[2] = float(c.b);
+}
+
+// Burley 2012, as BRDF Explorer's disney.brdf implements it. The classic family
+// with ka and emission (ambient, emission, spot and attenuation as every classic
+// model); the diffuse hook is the Disney diffuse (with subsurface) times
+// (1 - metallic), the specular hook the sheen, the GTR2 specular and the GTR1
+// clear coat. Ranges and defaults are disney.brdf's parameter block.
+ModelSpec principled() {
+    ModelSpec s;
+    s.name = "principled", s.label = "principled (Disney)";
+    s.citation = "Burley 2012, Physically-Based Shading at Disney (BRDF Explorer's disney.brdf)";
+    s.summary = "Disney's principled BRDF: base colour, subsurface, metallic, specular, roughness, anisotropy, "
+                "sheen, clear coat";
+    s.family = Family::classic;
+    // disney.brdf's default baseColor (.82, .67, .16) is a monitor value that its
+    // mon2lin (x^2.2) linearizes; here colours are linear (the M3055 has no gamma,
+    // docs/spec.md#2-display), so the default is that colour linearized.
+    const dvec3 base_default = {std::pow(0.82, 2.2), std::pow(0.67, 2.2), std::pow(0.16, 2.2)};
+    ParamSpec base = colour("base_color", "base colour", base_default,
+                            "surface colour, linear (disney.brdf's baseColor after its mon2lin): the diffuse "
+                            "colour, and the specular colour as metallic goes to 1",
+                            "Burley 2012");
+    base.carry_from = {"kd", "color"};
+    ParamSpec ka = colour("ka", "K_amb", base_default, "ambient colour (the base colour unless given)",
+                          "seed 001, 003");
+    ka.default_from = "base_color";
+    ka.carry_from = {"color"};
+    s.params = {base, ka, colour("emission", "emission", {0, 0, 0}, "emitted light L_emi, added as is", "seed 003")};
+    s.params.push_back(principled_number("subsurface", "subsurface", 0.0,
+                                         "blends the diffuse towards Hanrahan-Krueger's subsurface approximation: "
+                                         "flatter, darker at the rim"));
+    s.params.push_back(principled_number("metallic", "metallic", 0.0,
+                                         "0 dielectric, 1 metal: no diffuse or sheen, the specular takes the base "
+                                         "colour"));
+    s.params.push_back(principled_number("specular", "specular", 0.5,
+                                         "dielectric reflectance at normal incidence, 0.08 x specular (0.5: 4 %, "
+                                         "an index of 1.5)"));
+    s.params.push_back(principled_number("specular_tint", "specular tint", 0.0,
+                                         "tints the dielectric specular towards the base colour's hue"));
+    s.params.push_back(principled_number("roughness", "roughness", 0.5,
+                                         "perceptual roughness r: GGX alpha = r^2 (at least 0.001); also the "
+                                         "diffuse retro-reflection"));
+    s.params.push_back(principled_number("anisotropic", "anisotropic", 0.0,
+                                         "aspect of the specular: alpha_x = r^2 / aspect along T, alpha_y = r^2 "
+                                         "aspect, aspect = sqrt(1 - 0.9 anisotropic)"));
+    s.params.push_back(principled_number("sheen", "sheen", 0.0, "a grazing Fresnel lobe for cloth"));
+    s.params.push_back(
+        principled_number("sheen_tint", "sheen tint", 0.5, "tints the sheen towards the base colour's hue"));
+    s.params.push_back(principled_number("clearcoat", "clear coat", 0.0,
+                                         "a second, white specular lobe (GTR1, F0 0.04) of weight 0.25 clearcoat"));
+    s.params.push_back(principled_number("clearcoat_gloss", "clear coat gloss", 1.0,
+                                         "the clear coat's GTR1 alpha from 0.1 (0: satin) to 0.001 (1: gloss)"));
+    s.params.push_back(tangent_axis());
+    s.misplaced_hints = {{"kd", "its base colour is \"base_color\""}, {"color", "its base colour is \"base_color\""}};
+    s.glsl_file = "models/principled.glsl";
+    s.glsl_hook = "diffuse_principled";
+    s.glsl_specular = "specular_principled";
+    // kd: K_diff for the composer; spectral_table: read by the composer, -1 (no spectra here).
+    s.derived = {{"kd", 3, principled_kd}, {"spectral_table", 1, no_spectral_table}};
+    return s;
+}
+
 }  // namespace
 
 std::vector<ModelSpec> builtin_models() {
     std::vector<ModelSpec> out = {highlight(), translucent(), metal(), metal_blinn(), metal_phong()};
     for (ModelSpec& s : diffuse_models()) out.push_back(std::move(s));
     for (ModelSpec s : {phong(), blinn_phong(), microfacet(), ward(), heidrich_seidel()}) out.push_back(std::move(s));
+    out.push_back(principled());
     return out;
 }
 

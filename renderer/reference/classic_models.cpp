@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace m3055::ref {
 
@@ -122,12 +123,26 @@ dvec3 specular_heidrich_seidel(const Material& material, const dvec3& N, const d
 
 // ---- The family and its views ---------------------------------------------------------------
 
+// K_diff, the colour the diffuse hook's factor multiplies: kd, or for a model
+// whose diffuse colour has a name of its own, its derived value "kd", which the
+// GLSL composer reads as mat.kd (principled: its base_color; models/builtin_models.cpp).
+static dvec3 diffuse_colour(const Material& material) {
+    if (material.has("kd")) return material.vec3("kd");
+    for (const DerivedValue& value : material.model().derived)
+        if (value.name == "kd" && value.floats == 3) {
+            float kd[3];
+            value.fill(material, kd);
+            return dvec3(kd[0], kd[1], kd[2]);
+        }
+    throw std::logic_error("classic model " + material.model_name() + " has no kd");
+}
+
 // I_diff + I_spec for unit light scale: the two hooks of the material's model.
 static dvec3 classic_reflect(const Material& material, const dvec3& N, const dvec3& L, const dvec3& V, double NoL,
                              double NoV) {
     const ReferenceHooks& hooks = reference_hooks(material.model());
     const double diffuse = hooks.classic_diffuse(material, NoL, NoV, glm::dot(L, V));
-    dvec3 I = diffuse * material.vec3("kd");
+    dvec3 I = diffuse * diffuse_colour(material);
     if (hooks.classic_specular) I += hooks.classic_specular(material, N, L, V, NoL, NoV);
     return I;
 }

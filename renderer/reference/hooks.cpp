@@ -2,6 +2,7 @@
 
 #include "models/model_spec.h"
 #include "reference/classic.h"
+#include "reference/principled.h"
 
 #include <map>
 #include <memory>
@@ -29,12 +30,14 @@ const ByName<ClassicDiffuseFn> kDiffuse = {{"diffuse_lambert", diffuse_lambert},
                                            {"diffuse_half_lambert_clamped", diffuse_half_lambert_clamped},
                                            {"diffuse_half_lambert_normalized", diffuse_half_lambert_normalized},
                                            {"diffuse_oren_nayar", diffuse_oren_nayar},
-                                           {"diffuse_minnaert", diffuse_minnaert}};
+                                           {"diffuse_minnaert", diffuse_minnaert},
+                                           {"diffuse_principled", diffuse_principled}};
 const ByName<ClassicSpecularFn> kSpecular = {{"specular_phong", specular_phong},
                                              {"specular_blinn_phong", specular_blinn_phong},
                                              {"specular_microfacet", specular_microfacet},
                                              {"specular_ward", specular_ward},
-                                             {"specular_heidrich_seidel", specular_heidrich_seidel}};
+                                             {"specular_heidrich_seidel", specular_heidrich_seidel},
+                                             {"specular_principled", specular_principled}};
 
 template <typename Fn>
 Fn* find(const ByName<Fn>& hooks, const std::string& name) {
