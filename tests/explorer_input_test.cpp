@@ -701,14 +701,15 @@ TEST_F(ExplorerInput, At1920x1080FoldingThePlotsGivesTheColumnToTheSidePanel) {
     constexpr int kTitleH = 21, kArrowX = 12;  // ImGui's frame height at the explorer's 15-px font
     const int side_w = int(kBig.side.w) - 20;  // without the scrollbar, which shrinks as the panel grows
     const int controls_h = int(kBig.side.h) - 60;  // under the menu bar, above the panel's old foot
+    const int was_plot_y = int(kBig.bottom.y) + 40, was_plot_h = std::min(300, 1080 - was_plot_y);
     app_->click(kArrowX, int(kBig.bottom.y) + kTitleH / 2);
     app_->move(kRestX, kRestY);
     const Rgb8Image folded = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
-        return differing_pixels(crop(s, 0, int(kBig.bottom.y) + 40, side_w, 300),
-                                crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)) > 5000;
+        return differing_pixels(crop(s, 0, was_plot_y, side_w, was_plot_h),
+                                crop(open, 0, was_plot_y, side_w, was_plot_h)) > 5000;
     });
-    ASSERT_GT(differing_pixels(crop(folded, 0, int(kBig.bottom.y) + 40, side_w, 300),
-                               crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)),
+    ASSERT_GT(differing_pixels(crop(folded, 0, was_plot_y, side_w, was_plot_h),
+                               crop(open, 0, was_plot_y, side_w, was_plot_h)),
               5000)
         << "the side panel's sections where the polar plot was";
     EXPECT_EQ(differing_pixels(crop(folded, 0, 45, side_w, controls_h), crop(open, 0, 45, side_w, controls_h)), 0)

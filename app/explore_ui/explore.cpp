@@ -367,10 +367,12 @@ private:
             views.x = strip.x + strip.w;
             if (strip.w < 640.0f) shape = StripShape::column;  // too narrow for three columns: one under another
         }
-        // Under the side panel with the statistics in the band under the display.
+        // Under the side panel with the statistics (and the profile) in the band under the display.
         if (layout.stats.w > 0.0f) {
-            shape = StripShape::plots;
+            shape = layout.profile.w > 0.0f ? StripShape::polar : StripShape::plots;
             draw_stats_band(e_, info_, layout.stats.x, layout.stats.y, layout.stats.w, layout.stats.h);
+            if (layout.profile.w > 0.0f)
+                draw_profile_band(info_, layout.profile.x, layout.profile.y, layout.profile.w, layout.profile.h);
         }
         if (!views_shown || row) draw_bottom_strip(e_, info_, strip.x, strip.y, strip.w, strip.h, shape);
         draw_brdf_views(e_, panes_ ? panes_->brdf_views() : nullptr, views.x, views.y, views.w, views.h);
