@@ -311,6 +311,15 @@ void brdf_views(Call& c) {
     const std::string how = c.word();
     if (how != "on" && how != "off") throw std::runtime_error("brdf_views: on|off");
     c.view().show_brdf_views = how == "on";
+    if (how == "on") c.view().show_spectra = false;  // one docked view at a time
+}
+
+// View > Spectra.
+void spectra(Call& c) {
+    const std::string how = c.word();
+    if (how != "on" && how != "off") throw std::runtime_error("spectra: on|off");
+    c.view().show_spectra = how == "on";
+    if (how == "on") c.view().show_brdf_views = false;
 }
 
 // One line: the Material section's .brdf error and the status strip.
@@ -391,7 +400,7 @@ const std::map<std::string, Handler>& commands() {
         {"print_profile", print_profile}, {"save_difference", save_difference},
         {"open_brdf", open_brdf_command},
         {"replace_file", replace_file}, {"print_brdf", print_brdf},
-        {"brdf_views", brdf_views},
+        {"brdf_views", brdf_views},  {"spectra", spectra},
         {"print_grade", print_grade},
     };
     return table;

@@ -19,6 +19,7 @@
 //   open_brdf PATH          File > Open BRDF: PATH on the selected object (errors show in the window)
 //   replace_file SRC DST    an editor saving DST with SRC's bytes (for the .brdf watcher)
 //   brdf_views on|off       View > BRDF views (the slice, albedo and 3D lobe window)
+//   spectra on|off          View > Spectra (the light's and the material's spectra, larger)
 //   print_brdf              print "brdf error=TEXT<TAB>status=TEXT<TAB>error=TEXT" (the Material
 //                           section's .brdf error, the status strip, the panel's general error)
 //   display m3055|modern    the Display panel's two preset buttons

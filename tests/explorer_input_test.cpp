@@ -846,6 +846,7 @@ TEST_F(ExplorerInput, NoTextIsClippedAt1280x720Or1920x1080) {
     // The BRDF views docked beside the plots show whole: the slice, its axes and colour bar.
     EXPECT_EQ(clipped_lines(1280, 720, "brdf_views on\n"), "") << "1280 x 720, BRDF views";
     EXPECT_EQ(clipped_lines(1920, 1080, "brdf_views on\n"), "") << "1920 x 1080, BRDF views";
+    EXPECT_EQ(clipped_lines(1280, 720, "spectra on\n"), "") << "1280 x 720, the spectra's window";
     // A 900 px window leaves the panel no room to grow: a light's long name in
     // its header stays cut, and is reported.
     EXPECT_NE(clipped_lines(1280, 720, "light_name 0 " + std::string(80, 'k') + "\n", {"--window-size", "900", "720"})

@@ -170,7 +170,7 @@ public:
                                          panes_ ? panes_->height() : e_.doc.scene.display.height, fb_scale,
                                          ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
         // The plots under the side panel folded (their title bar's arrow); not where the BRDF views take their place.
-        const bool views_shown = e_.view.show_brdf_views && panes_;
+        const bool views_shown = (e_.view.show_brdf_views && panes_) || e_.view.show_spectra;
         if (e_.view.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
         const bool plots_were_folded = e_.view.plots_folded;
         note_free_area(layout, fb_scale);
@@ -376,6 +376,7 @@ private:
         }
         if (!views_shown || row) draw_bottom_strip(e_, info_, strip.x, strip.y, strip.w, strip.h, shape);
         draw_brdf_views(e_, panes_ ? panes_->brdf_views() : nullptr, views.x, views.y, views.w, views.h);
+        draw_spectra(e_, views.x, views.y, views.w, views.h);
         // Folded or unfolded: the side panel takes its new height next frame.
         if (e_.view.plots_folded != plots_were_folded) owe_frames(2);
     }
