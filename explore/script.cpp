@@ -2,6 +2,7 @@
 
 #include "explore/apply.h"
 #include "explore/brdf_files.h"
+#include "explore/busy.h"
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
@@ -325,7 +326,8 @@ void spectra(Call& c) {
 // One line: the Material section's .brdf error and the status strip.
 void print_brdf(Call& c) {
     const Messages& m = c.explorer.session.messages;
-    std::printf("brdf error=%s\tstatus=%s\terror=%s\n", m.brdf_error.c_str(), m.status.c_str(), m.error.c_str());
+    std::printf("brdf error=%s\tstatus=%s\terror=%s\tbusy=%s\n", m.brdf_error.c_str(), m.status.c_str(), m.error.c_str(),
+                busy_line(c.explorer.session.brdf_watch, 0).c_str());
     std::fflush(stdout);
 }
 

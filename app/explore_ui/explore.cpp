@@ -141,6 +141,7 @@ public:
         Practice* practice = panes_ ? panes_->practice() : nullptr;
         if (frame_needed() || script_busy) window_.poll();
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
+        else if (!e_.session.brdf_watch.reload_pending.empty()) reload_when_idle();  // a script's idle time too
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
@@ -238,6 +239,17 @@ private:
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
         if (panes_->compile_deferred(e_)) owe_frames(1);
+    }
+
+    // A changed .brdf file, after kIdleBeforeCompile s with no input, between
+    // frames: re-read and checked, its programs compiled and the displays
+    // drawn with them (seconds on llvmpipe); the frames before kept drawing
+    // the last version, "reloading FILE..." beside the menu. Then one frame.
+    void reload_when_idle() {
+        window_.wait(kIdleBeforeCompile);
+        if (frame_needed()) return;  // input came: that frame first
+        if (reload_changed_brdf_files(e_) && panes_) panes_->compile_for_new_table(e_, window_.time());
+        owe_frames(1);
     }
 
     // The edit has settled (kSettleSeconds without a change, no button held):
