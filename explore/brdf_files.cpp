@@ -140,15 +140,17 @@ const std::vector<std::string>& watched_brdf_files(Explorer& e) {
     return watch.in_use;
 }
 
+bool reload_changed_brdf_files(Explorer& e) {
+    BrdfWatch& watch = e.session.brdf_watch;
+    if (watch.reload_pending.empty()) return false;
+    for (const std::string& path : watch.reload_pending) reload(e, path);
+    watch.reload_pending.clear();
+    return true;
+}
+
 bool poll_brdf_files(Explorer& e, double now) {
     BrdfWatch& watch = e.session.brdf_watch;
-    // Found by the last poll, shown as "reloading FILE..." since: reload them now.
-    if (!watch.reload_pending.empty()) {
-        for (const std::string& path : watch.reload_pending) reload(e, path);
-        watch.reload_pending.clear();
-        return true;
-    }
-    if (now < watch.next_poll) return false;
+    if (!watch.reload_pending.empty() || now < watch.next_poll) return false;  // found already: waiting for idle time
     watch.next_poll = now + kBrdfPollSeconds;
     for (const std::string& path : watched_brdf_files(e)) {
         const std::string current = stamp(path);

@@ -30,10 +30,16 @@ std::vector<std::string> brdf_files_in_use(const Explorer& explorer);
 const std::vector<std::string>& watched_brdf_files(Explorer& explorer);
 
 // At most every kBrdfPollSeconds (`now` in seconds): each file in use whose
-// mtime or size changed is noted in brdf_watch.reload_pending (a frame shows
-// "reloading FILE..."); the next call re-reads and checks them, and on success
-// every material using one is reloaded (reload_brdf_material: values kept) and
-// the status says "reloaded FILE". Returns true when there is something new to show.
+// mtime or size changed is noted in brdf_watch.reload_pending (frames show
+// "reloading FILE..." and keep drawing the last version). Returns true when
+// one was found.
 bool poll_brdf_files(Explorer& explorer, double now);
+// Re-reads and checks the files noted (the frame loop calls it when it has
+// been idle a while, as it compiles a waiting specialization: the check and
+// the new programs take seconds on llvmpipe, and no frame waits for them); on
+// success every material using one is reloaded (reload_brdf_material: values
+// kept; one undo step) and the status says "reloaded FILE"; on an error the
+// last version that compiled stays. Returns whether there were any.
+bool reload_changed_brdf_files(Explorer& explorer);
 
 }  // namespace m3055::explore

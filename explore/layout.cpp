@@ -89,12 +89,17 @@ Layout column_layout(float width, float height, int panes, int w, int h, float f
     const Extent e = grid_extent(g, panes, w, h, fb_scale, label_h);
     l.display = {0, 0, std::min(widest.w, e.w + kCompareGap), std::min(height, e.h + kCompareGap)};
     l.display.x = width - l.display.w;
-    if (height - l.display.h < kMinStatsHeight) l.display.h = height;  // the statistics stay in the column
-    else l.stats = {l.display.x, l.display.h, l.display.w, height - l.display.h};
+    if (height - l.display.h < kMinStatsHeight) {
+        l.display.h = height;  // the profile and the statistics stay in the column
+    } else {  // the band: the profile at its left (as wide as the column), the statistics beside it
+        const float band_y = l.display.h, band_h = height - l.display.h;
+        l.profile = {l.display.x, band_y, std::min(l.display.x, l.display.w * 0.5f), band_h};
+        l.stats = {l.profile.x + l.profile.w, band_y, l.display.w - l.profile.w, band_h};
+    }
     if (best_grid(panes, w, h, l.display, fb_scale, label_h).scale != g.scale) return Layout{};
     const float column_w = l.display.x;
-    const float plots_h =
-        std::min(height * 0.5f, kPlotsUnderSideHeight + (l.stats.w > 0.0f ? 0.0f : 8.0f * label_h));
+    const float plots_h = std::min(height * 0.5f, l.stats.w > 0.0f ? kPolarUnderSideHeight
+                                                                   : kPlotsUnderSideHeight + 8.0f * label_h);
     l.side = {0, 0, column_w, height - plots_h};
     l.bottom = {0, l.side.h, column_w, plots_h};
     l.plots_under_side = column_w >= kMinNarrowSideWidth;

@@ -25,12 +25,15 @@ struct Rect {
 // narrowed to what is left of the window.
 // plots_under_side: the panes one whole magnification larger than beside the
 // usual panel (one pane at 3x at 1920 x 1080) at the right; the side panel
-// (its narrow form) over the polar plot and the profile (`bottom`) in the
-// column left of them; the statistics in the band under the panes (`stats`;
-// w == 0: too low for them, they stay under the plots in the column).
+// (its narrow form) over the polar plot (`bottom`) in the column left of
+// them; the scanline profile (`profile`) and the statistics (`stats`) in the
+// band under the panes, a wide low room that suits them, so the controls
+// get the column's height (stats.w == 0: the band is too low, both stay
+// under the polar plot in the column).
 struct Layout {
     Rect side, bottom, display;
-    Rect stats;  // the statistics apart from the plots (plots_under_side only)
+    Rect stats;    // the statistics apart from the plots (plots_under_side only)
+    Rect profile;  // the scanline profile apart from the polar plot (plots_under_side only; w == 0: under it)
     bool plots_beside = false;
     bool plots_in_cell = false;
     bool plots_under_side = false;
@@ -62,6 +65,8 @@ inline constexpr float kMinNarrowSideWidth = 236.0f;   // the narrowest side pan
 // plots_under_side: the plots' part of the column (polar plot, profile; the
 // statistics too when the band under the panes is lower than kMinStatsHeight).
 inline constexpr float kPlotsUnderSideHeight = 430.0f;
+// ... and the polar plot's alone, where the profile is in the band.
+inline constexpr float kPolarUnderSideHeight = 300.0f;
 inline constexpr float kMinStatsHeight = 100.0f;  // five lines: timings, scale, levels used, a message
 
 // plots_under_side with the plots folded to their title bar (title_h high):

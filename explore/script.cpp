@@ -2,6 +2,7 @@
 
 #include "explore/apply.h"
 #include "explore/brdf_files.h"
+#include "explore/busy.h"
 #include "explore/files.h"
 #include "explore/keys.h"
 #include "explore/operations.h"
@@ -311,12 +312,22 @@ void brdf_views(Call& c) {
     const std::string how = c.word();
     if (how != "on" && how != "off") throw std::runtime_error("brdf_views: on|off");
     c.view().show_brdf_views = how == "on";
+    if (how == "on") c.view().show_spectra = false;  // one docked view at a time
+}
+
+// View > Spectra.
+void spectra(Call& c) {
+    const std::string how = c.word();
+    if (how != "on" && how != "off") throw std::runtime_error("spectra: on|off");
+    c.view().show_spectra = how == "on";
+    if (how == "on") c.view().show_brdf_views = false;
 }
 
 // One line: the Material section's .brdf error and the status strip.
 void print_brdf(Call& c) {
     const Messages& m = c.explorer.session.messages;
-    std::printf("brdf error=%s\tstatus=%s\terror=%s\n", m.brdf_error.c_str(), m.status.c_str(), m.error.c_str());
+    std::printf("brdf error=%s\tstatus=%s\terror=%s\tbusy=%s\n", m.brdf_error.c_str(), m.status.c_str(), m.error.c_str(),
+                busy_line(c.explorer.session.brdf_watch, 0).c_str());
     std::fflush(stdout);
 }
 
@@ -391,7 +402,7 @@ const std::map<std::string, Handler>& commands() {
         {"print_profile", print_profile}, {"save_difference", save_difference},
         {"open_brdf", open_brdf_command},
         {"replace_file", replace_file}, {"print_brdf", print_brdf},
-        {"brdf_views", brdf_views},
+        {"brdf_views", brdf_views},  {"spectra", spectra},
         {"print_grade", print_grade},
     };
     return table;

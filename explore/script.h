@@ -19,8 +19,10 @@
 //   open_brdf PATH          File > Open BRDF: PATH on the selected object (errors show in the window)
 //   replace_file SRC DST    an editor saving DST with SRC's bytes (for the .brdf watcher)
 //   brdf_views on|off       View > BRDF views (the slice, albedo and 3D lobe window)
-//   print_brdf              print "brdf error=TEXT<TAB>status=TEXT<TAB>error=TEXT" (the Material
-//                           section's .brdf error, the status strip, the panel's general error)
+//   spectra on|off          View > Spectra (the light's and the material's spectra, larger)
+//   print_brdf              print "brdf error=TEXT<TAB>status=TEXT<TAB>error=TEXT<TAB>busy=TEXT" (the Material
+//                           section's .brdf error, the status strip, the panel's general error, and
+//                           "reloading FILE..." while a changed .brdf file waits to be reloaded)
 //   display m3055|modern    the Display panel's two preset buttons
 //   orbit DX DY | zoom STEPS   a mouse drag (pixels) / wheel steps on the display
 //   projection perspective|orthographic

@@ -34,7 +34,8 @@ struct View {
     int profile_row = -1;  // the scanline profile's row: the last display row hovered on A (-1: none yet)
 
     bool show_panels = true;  // F1
-    bool show_brdf_views = false;  // View > BRDF views
+    bool show_brdf_views = false;  // View > BRDF views (one docked view at a time: it or the spectra)
+    bool show_spectra = false;     // View > Spectra
     bool views_log = true;         // its slice's colour: logarithmic
     float lobe_yaw = 0.6f, lobe_pitch = 0.5f;  // its 3D lobe's turn (radians)
     // The plots under the side panel folded to their title bar (explore/layout.h, plots_under_side).

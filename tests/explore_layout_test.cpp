@@ -103,10 +103,11 @@ TEST(ExploreLayout, ThreePanesAt1280x720TakeTwoColumnsWithThePlotsInTheFourthCel
     EXPECT_FALSE(layout_for_panes(1200, 720, true, 3, 512, 320, 1.0f, label_h).plots_in_cell);
 }
 
-// Issue 20, item 10: at 1920 x 1080 one pane shows at 3x (2x beside the
-// usual 440-px panel): the side panel in its narrow form over the polar plot
-// and the profile in one column at the left, the pane at the right, the
-// statistics in the band under it.
+// At 1920 x 1080 one pane shows at 3x (2x beside the usual 440-px panel):
+// the side panel in its narrow form over the polar plot in one column at the
+// left, the pane at the right, the scanline profile and the statistics in
+// the band under it (a wide low room that suits them: the controls get the
+// column's height but for the polar plot).
 TEST(ExploreLayout, At1920x1080OnePaneShowsAt3xWithTheSidePanelOverThePlots) {
     const float label_h = 21.0f;
     EXPECT_EQ(best_grid(1, 512, 320, layout_for(1920, 1080, true).display, 1.0f, label_h).scale, 2)
@@ -123,17 +124,22 @@ TEST(ExploreLayout, At1920x1080OnePaneShowsAt3xWithTheSidePanelOverThePlots) {
     EXPECT_FLOAT_EQ(l.bottom.w, l.side.w);
     EXPECT_FLOAT_EQ(l.bottom.y, l.side.h);
     EXPECT_FLOAT_EQ(l.bottom.y + l.bottom.h, 1080.0f);
-    EXPECT_GE(l.bottom.h, kPlotsUnderSideHeight);
-    EXPECT_GE(l.side.h, 1080.0f / 2.0f) << "the controls keep most of the column";
+    EXPECT_GE(l.bottom.h, kPolarUnderSideHeight);
+    EXPECT_GE(l.side.h, 1080.0f - kPolarUnderSideHeight) << "the controls keep the column but for the polar plot";
     // The pane right of the column, the statistics under it, all in the window.
     EXPECT_FLOAT_EQ(l.display.x, l.side.w);
     EXPECT_FLOAT_EQ(l.display.x + l.display.w, 1920.0f);
     EXPECT_GE(l.display.w, 3.0f * 512.0f);
     EXPECT_GE(l.display.h, 3.0f * 320.0f);
-    EXPECT_FLOAT_EQ(l.stats.x, l.display.x);
-    EXPECT_FLOAT_EQ(l.stats.w, l.display.w);
+    // The band: the profile at its left, the statistics beside it, together its whole width.
+    EXPECT_FLOAT_EQ(l.profile.x, l.display.x);
+    EXPECT_FLOAT_EQ(l.profile.y, l.display.h);
+    EXPECT_GE(l.profile.w, 300.0f) << "room for the 2^bits steps of a row";
+    EXPECT_FLOAT_EQ(l.stats.x, l.profile.x + l.profile.w);
+    EXPECT_FLOAT_EQ(l.stats.x + l.stats.w, l.display.x + l.display.w);
     EXPECT_FLOAT_EQ(l.stats.y, l.display.h);
     EXPECT_FLOAT_EQ(l.stats.y + l.stats.h, 1080.0f);
+    EXPECT_FLOAT_EQ(l.profile.h, l.stats.h);
     EXPECT_GE(l.stats.h, kMinStatsHeight);
     // Panels hidden (F1): the whole window, as before.
     EXPECT_FALSE(layout_for_panes(1920, 1080, false, 1, 512, 320, 1.0f, label_h).plots_under_side);
@@ -146,6 +152,7 @@ TEST(ExploreLayout, WithNoRoomUnderThePaneTheStatisticsStayInTheColumn) {
     ASSERT_TRUE(l.plots_under_side);
     EXPECT_EQ(best_grid(1, 512, 320, l.display, 1.0f, 21.0f).scale, 3);
     EXPECT_FLOAT_EQ(l.stats.w, 0.0f);
+    EXPECT_FLOAT_EQ(l.profile.w, 0.0f) << "the profile too";
     EXPECT_FLOAT_EQ(l.display.h, 1000.0f);
     EXPECT_GT(l.bottom.h, kPlotsUnderSideHeight) << "room for the statistics under the plots";
     EXPECT_FLOAT_EQ(l.bottom.y + l.bottom.h, 1000.0f);

@@ -701,14 +701,15 @@ TEST_F(ExplorerInput, At1920x1080FoldingThePlotsGivesTheColumnToTheSidePanel) {
     constexpr int kTitleH = 21, kArrowX = 12;  // ImGui's frame height at the explorer's 15-px font
     const int side_w = int(kBig.side.w) - 20;  // without the scrollbar, which shrinks as the panel grows
     const int controls_h = int(kBig.side.h) - 60;  // under the menu bar, above the panel's old foot
+    const int was_plot_y = int(kBig.bottom.y) + 40, was_plot_h = std::min(300, 1080 - was_plot_y);
     app_->click(kArrowX, int(kBig.bottom.y) + kTitleH / 2);
     app_->move(kRestX, kRestY);
     const Rgb8Image folded = app_->wait_for(dir_.path(), [&](const Rgb8Image& s) {
-        return differing_pixels(crop(s, 0, int(kBig.bottom.y) + 40, side_w, 300),
-                                crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)) > 5000;
+        return differing_pixels(crop(s, 0, was_plot_y, side_w, was_plot_h),
+                                crop(open, 0, was_plot_y, side_w, was_plot_h)) > 5000;
     });
-    ASSERT_GT(differing_pixels(crop(folded, 0, int(kBig.bottom.y) + 40, side_w, 300),
-                               crop(open, 0, int(kBig.bottom.y) + 40, side_w, 300)),
+    ASSERT_GT(differing_pixels(crop(folded, 0, was_plot_y, side_w, was_plot_h),
+                               crop(open, 0, was_plot_y, side_w, was_plot_h)),
               5000)
         << "the side panel's sections where the polar plot was";
     EXPECT_EQ(differing_pixels(crop(folded, 0, 45, side_w, controls_h), crop(open, 0, 45, side_w, controls_h)), 0)
@@ -842,6 +843,10 @@ TEST_F(ExplorerInput, NoTextIsClippedAt1280x720Or1920x1080) {
                             {"--assignment", test::source_path("assignments/three-point/assignment.json")}),
               "")
         << "1280 x 720, practice mode";
+    // The BRDF views docked beside the plots show whole: the slice, its axes and colour bar.
+    EXPECT_EQ(clipped_lines(1280, 720, "brdf_views on\n"), "") << "1280 x 720, BRDF views";
+    EXPECT_EQ(clipped_lines(1920, 1080, "brdf_views on\n"), "") << "1920 x 1080, BRDF views";
+    EXPECT_EQ(clipped_lines(1280, 720, "spectra on\n"), "") << "1280 x 720, the spectra's window";
     // A 900 px window leaves the panel no room to grow: a light's long name in
     // its header stays cut, and is reported.
     EXPECT_NE(clipped_lines(1280, 720, "light_name 0 " + std::string(80, 'k') + "\n", {"--window-size", "900", "720"})

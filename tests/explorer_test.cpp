@@ -472,7 +472,7 @@ TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
     EXPECT_NE(reports[0].find("status=not reloaded mine.brdf: an error"), std::string::npos) << reports[0];
     EXPECT_NE(reports[1].find("mine.brdf:" + std::to_string(param_line) + ": shininess: DEFAULT -5"), std::string::npos)
         << reports[1];
-    EXPECT_EQ(reports[2], "brdf error=\tstatus=reloaded mine.brdf\terror=")
+    EXPECT_EQ(reports[2], "brdf error=\tstatus=reloaded mine.brdf\terror=\tbusy=")
         << "fixed: the error is gone, and the window's own render (general programs) works";
     // The last good version kept rendering; the fixed one changed the image.
     EXPECT_EQ(test::read_text(dir.file("good.png")), test::read_text(dir.file("still.png")));
@@ -482,6 +482,35 @@ TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
     const auto render = test::run_m3055({"render", "--scene", dir.file("fixed.json"), "--out", dir.file("r.png")});
     ASSERT_EQ(render.exit_code, 0) << render.err;
     EXPECT_EQ(test::read_text(dir.file("fixed.png")), test::read_text(dir.file("r.png")));
+}
+
+// A changed .brdf file is reloaded (checked, its programs compiled: seconds
+// on llvmpipe) only once the explorer is idle, as a waiting specialization
+// is compiled: while input keeps coming, frames keep drawing the last
+// version and say "reloading", so no input waits for the compile.
+TEST_F(Explorer, AChangedBrdfFileIsReloadedWhenIdleNotWhileInputComes) {
+    TempDir dir;
+    const std::string good = test::read_text(test::source_path("tests/data/brdf/blinn_phong.brdf"));
+    std::string fixed = good;
+    fixed.replace(fixed.find("return kd / PI"), 14, "return 0.5 * kd / PI");
+    test::write_text(dir.file("mine.brdf"), good);
+    test::write_text(dir.file("fixed.brdf"), fixed);
+    // 120 frames of orbiting (one a script line): longer than two poll periods of the watcher.
+    std::string script = "open_brdf mine.brdf\nidle 0.3\nreplace_file fixed.brdf mine.brdf\n";
+    for (int i = 0; i < 120; ++i) script += i % 2 ? "orbit 1 0\n" : "orbit -1 0\n";
+    script += "print_brdf\nidle 1.5\nprint_brdf\n";
+    test::write_text(dir.file("script.txt"), script);
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::vector<std::string> reports;
+    std::istringstream lines(run.out);
+    for (std::string l; std::getline(lines, l);)
+        if (l.rfind("brdf error=", 0) == 0) reports.push_back(l);
+    ASSERT_EQ(reports.size(), 2u) << run.out;
+    EXPECT_NE(reports[0].find("busy=reloading mine.brdf..."), std::string::npos)
+        << "not while input kept coming: " << reports[0];
+    EXPECT_NE(reports[1].find("status=reloaded"), std::string::npos) << "once idle: " << reports[1];
+    EXPECT_EQ(reports[1].substr(reports[1].size() - 5), "busy=") << "nothing waits: " << reports[1];
 }
 
 // Issue 14: `explore --assignment A.json SCENE.json` shows the score and the

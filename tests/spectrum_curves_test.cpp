@@ -2,6 +2,8 @@
 // explorer's Spectra plot and `m3055 plot spectrum` draw, from one function
 // (spectral::spectrum_curves, picked by scene/spectrum_view.h).
 #include "models/material.h"
+#include "scene/conductor_use.h"
+#include "scene/light_colour.h"
 #include "scene/spectrum_view.h"
 #include "spectral/blackbody.h"
 #include "spectral/cie_data.h"
@@ -75,6 +77,25 @@ TEST(SpectrumCurves, AnRgbLightIsD65AsTheRendererTakesIt) {
     EXPECT_EQ(spectrum_view(nullptr, nullptr).light_label, "D65 (no light: the display's white)");
     const Light k = kelvin_light(3200.0);
     EXPECT_EQ(spectrum_view(&k, nullptr).light_label, "black body 3200 K");
+}
+
+// Each curve is drawn in its spectrum's own colour: the light's as the
+// renderer uses it, the reflectance's under D65 (gold's is the colour that
+// stands for it in the explorer, scene/conductor_use.h).
+TEST(SpectrumCurves, EachSpectrumCarriesItsOwnColour) {
+    Light warm;  // as the loader and the explorer make it: its colour from its spectrum
+    std::string error;
+    ASSERT_TRUE(set_temperature(warm, 3200.0, &error)) << error;
+    const SpectrumView light_only = spectrum_view(&warm, nullptr);
+    EXPECT_EQ(light_only.light_colour, warm.color);
+    EXPECT_GT(warm.color.r, warm.color.b) << "a warm light";
+    EXPECT_EQ(light_only.reflectance_colour, dvec3(0.0)) << "no reflectance, no colour";
+    Material gold = Material::of("metal");
+    gold.set_choice("conductor", "gold");
+    const dvec3 c = spectrum_view(&warm, &gold).reflectance_colour;
+    const dvec3 expected = conductor_d65_colour("gold");
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(c[i], expected[i], 1e-9) << i;
+    EXPECT_EQ(spectrum_view(nullptr, nullptr).light_colour, dvec3(1.0)) << "no light: the display's white";
 }
 
 TEST(SpectrumCurves, GoldsReflectanceRisesPast550NmAsItsDataFileHasIt) {

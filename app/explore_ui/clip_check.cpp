@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <set>
 #include <utility>
 
@@ -22,7 +23,11 @@ std::vector<ClippedWindow> clipped_windows() {
         if (!w->Active || w->Hidden || (w->Flags & kSizedToContent)) continue;
         // Half a pixel of slack: rounding of the last glyph's advance.
         const float overflow = w->DC.CursorMaxPos.x - w->InnerClipRect.Max.x;
-        if (overflow > 0.5f) out.push_back({w->Name, overflow, w->Size.x});
+        if (overflow > 0.5f) out.push_back({w->Name, overflow, w->Size.x, false});
+        for (const char* whole : kWholeViews) {
+            const float under = w->DC.CursorMaxPos.y - w->InnerClipRect.Max.y;
+            if (std::strcmp(w->Name, whole) == 0 && under > 0.5f) out.push_back({w->Name, under, w->Size.y, true});
+        }
     }
     return out;
 }
@@ -38,7 +43,8 @@ void report_clipping() {
         this_frame.insert(c.name);
         if (!last_frame.count(c.name)) continue;
         char line[512];
-        std::snprintf(line, sizeof line, "clipped: %s: content %.0f px past its edge at window width %.0f",
+        std::snprintf(line, sizeof line, c.below ? "clipped: %s: content %.0f px below its edge at window height %.0f"
+                                                 : "clipped: %s: content %.0f px past its edge at window width %.0f",
                       c.name.c_str(), std::ceil(c.overflow), c.width);
         if (printed.insert(line).second) std::fprintf(stderr, "%s\n", line);
     }

@@ -108,7 +108,11 @@ void draw_menu_bar(Explorer& explorer) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        ImGui::MenuItem("BRDF views", nullptr, &explorer.view.show_brdf_views);
+        // One docked view at a time, where the plots' room allows one.
+        if (ImGui::MenuItem("BRDF views", nullptr, &explorer.view.show_brdf_views) && explorer.view.show_brdf_views)
+            explorer.view.show_spectra = false;
+        if (ImGui::MenuItem("Spectra", nullptr, &explorer.view.show_spectra) && explorer.view.show_spectra)
+            explorer.view.show_brdf_views = false;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {

@@ -93,6 +93,22 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     return milliseconds_since(start);
 }
 
+void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {
+    try {
+        for (Renderer* r : {renderer_a_.get(), renderer_b_.get()})
+            if (r->defers_compiles()) r->warm_up_general_programs();
+        const bool deferring = renderer_a_->defers_compiles();
+        renderer_a_->set_defer_compiles(false);
+        renderer_b_->set_defer_compiles(false);
+        explorer.session.render_needed = true;
+        render_if_needed(explorer, now);
+        renderer_a_->set_defer_compiles(deferring);
+        renderer_b_->set_defer_compiles(deferring);
+    } catch (const std::exception& e) {
+        explorer.session.messages.error = e.what();
+    }
+}
+
 std::size_t DisplayPanes::deferred_programs() const { return explore::deferred_programs(*renderer_a_, *renderer_b_); }
 
 bool DisplayPanes::compile_deferred(Explorer& explorer) {

@@ -54,6 +54,10 @@ public:
     // it (session.render_needed); the time it took in ms (GPU finished), or
     // a negative value when nothing was drawn. A render error goes to messages.error.
     double render_if_needed(Explorer& explorer, double now);
+    // After the model table changed (a .brdf file reloaded: every program is
+    // stale), between frames: the general programs and the scene's own compiled
+    // and the displays drawn with them, so the next frame waits for none.
+    void compile_for_new_table(Explorer& explorer, double now);
     // Programs waiting to be compiled on A and B; compiles the first and
     // draws its display again (the same pixels). Returns whether one was built.
     std::size_t deferred_programs() const;

@@ -141,6 +141,7 @@ public:
         Practice* practice = panes_ ? panes_->practice() : nullptr;
         if (frame_needed() || script_busy) window_.poll();
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
+        else if (!e_.session.brdf_watch.reload_pending.empty()) reload_when_idle();  // a script's idle time too
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
@@ -170,7 +171,7 @@ public:
                                          panes_ ? panes_->height() : e_.doc.scene.display.height, fb_scale,
                                          ImGui::GetTextLineHeight() + 4.0f, kSideWidth + side_extra_);
         // The plots under the side panel folded (their title bar's arrow); not where the BRDF views take their place.
-        const bool views_shown = e_.view.show_brdf_views && panes_;
+        const bool views_shown = (e_.view.show_brdf_views && panes_) || e_.view.show_spectra;
         if (e_.view.plots_folded && !views_shown) fold_plots(layout, ImGui::GetFrameHeight());
         const bool plots_were_folded = e_.view.plots_folded;
         note_free_area(layout, fb_scale);
@@ -238,6 +239,17 @@ private:
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
         if (panes_->compile_deferred(e_)) owe_frames(1);
+    }
+
+    // A changed .brdf file, after kIdleBeforeCompile s with no input, between
+    // frames: re-read and checked, its programs compiled and the displays
+    // drawn with them (seconds on llvmpipe); the frames before kept drawing
+    // the last version, "reloading FILE..." beside the menu. Then one frame.
+    void reload_when_idle() {
+        window_.wait(kIdleBeforeCompile);
+        if (frame_needed()) return;  // input came: that frame first
+        if (reload_changed_brdf_files(e_) && panes_) panes_->compile_for_new_table(e_, window_.time());
+        owe_frames(1);
     }
 
     // The edit has settled (kSettleSeconds without a change, no button held):
@@ -367,13 +379,16 @@ private:
             views.x = strip.x + strip.w;
             if (strip.w < 640.0f) shape = StripShape::column;  // too narrow for three columns: one under another
         }
-        // Under the side panel with the statistics in the band under the display.
+        // Under the side panel with the statistics (and the profile) in the band under the display.
         if (layout.stats.w > 0.0f) {
-            shape = StripShape::plots;
+            shape = layout.profile.w > 0.0f ? StripShape::polar : StripShape::plots;
             draw_stats_band(e_, info_, layout.stats.x, layout.stats.y, layout.stats.w, layout.stats.h);
+            if (layout.profile.w > 0.0f)
+                draw_profile_band(info_, layout.profile.x, layout.profile.y, layout.profile.w, layout.profile.h);
         }
         if (!views_shown || row) draw_bottom_strip(e_, info_, strip.x, strip.y, strip.w, strip.h, shape);
         draw_brdf_views(e_, panes_ ? panes_->brdf_views() : nullptr, views.x, views.y, views.w, views.h);
+        draw_spectra(e_, views.x, views.y, views.w, views.h);
         // Folded or unfolded: the side panel takes its new height next frame.
         if (e_.view.plots_folded != plots_were_folded) owe_frames(2);
     }

@@ -36,8 +36,13 @@ double shade(double v, double top, bool log) {
     return log ? (std::log10(v / top) + 4.0) / 4.0 : v / top;
 }
 
-// The slice and plots' side: the room less the axis labels and the colour bar.
-float side_of_square() { return std::clamp(ImGui::GetContentRegionAvail().x - 135.0f, 120.0f, 360.0f); }
+// The slice's and plots' side: the room less the axis labels and the colour
+// bar, and no taller than the room less `below` (what goes under and above
+// it), so the whole view shows in the docked window (1280 x 720 included).
+float side_of_square(float below, float aspect = 1.0f) {
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    return std::clamp(std::min(room.x - 135.0f, (room.y - below) / aspect), 60.0f, 360.0f);
+}
 
 // The colour bar right of the slice: the heat map from 0 (bottom) to the
 // largest value (top), labelled with the values at its ends.
@@ -58,7 +63,9 @@ void colour_bar(ImDrawList* draw, const ImVec2& bottom_left, float height, doubl
 }
 
 void slice_view(const ThetaSlice& slice, bool log) {
-    const float size = side_of_square(), left = 44.0f, top_margin = 18.0f, cell = size / float(slice.n);
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    const float size = side_of_square(18.0f + 40.0f + 2.0f * line), left = 44.0f, top_margin = 18.0f;
+    const float cell = size / float(slice.n);
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::Dummy(ImVec2(left + size, top_margin + size + 40.0f));
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -90,7 +97,8 @@ void albedo_view(const AlbedoCurve& curve) {
     for (std::size_t k = 0; k < curve.albedo.size(); ++k)
         if (std::isfinite(curve.albedo[k]) && curve.albedo[k] > peak) peak = curve.albedo[k], at = curve.view_deg[k];
     top = std::max(top, peak * 1.1);
-    const float width = side_of_square(), height = width * 0.6f, left = 44.0f;
+    const float width = side_of_square(26.0f + 3.0f * ImGui::GetTextLineHeightWithSpacing(), 0.6f);
+    const float height = width * 0.6f, left = 44.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::Dummy(ImVec2(left + width, height + 26.0f));
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -122,7 +130,7 @@ void albedo_view(const AlbedoCurve& curve) {
 
 // Orthographic view of the lobe turned by yaw (about N) and pitch (elevation).
 void lobe_view(Explorer& explorer, const Lobe3d& lobe) {
-    const float size = side_of_square() + 40.0f;
+    const float size = side_of_square(ImGui::GetTextLineHeightWithSpacing() + 32.0f, 0.8f) + 40.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("lobe", ImVec2(size, size * 0.8f));
     if (ImGui::IsItemActive()) {  // a drag turns it

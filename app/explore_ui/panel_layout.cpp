@@ -171,6 +171,15 @@ void draw_stats_band(const Explorer& explorer, const FrameInfo& info, float x, f
     ImGui::End();
 }
 
+void draw_profile_band(const FrameInfo& info, float x, float y, float width, float height) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
+    ImGui::Begin("Scanline", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    profile_plot(info.profile, info.profile_b, room.x, room.y - ImGui::GetTextLineHeightWithSpacing());
+    ImGui::End();
+}
+
 // Three columns sized from the room there is (1280 x 720 included): the polar
 // plot, the scanline profile, the statistics.
 void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float y,
@@ -183,7 +192,7 @@ void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float
     const ImGuiWindowFlags scrolling = shape != StripShape::row
                                            ? ImGuiWindowFlags_None
                                            : ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse;
-    if (shape == StripShape::plots) {
+    if (shape == StripShape::plots || shape == StripShape::polar) {
         // Under the side panel: its title bar's arrow folds it (explore.cpp
         // then gives the column to the side panel).
         ImGui::SetNextWindowCollapsed(explorer.view.plots_folded, ImGuiCond_Always);
@@ -199,6 +208,11 @@ void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float
     const ImVec2 room = ImGui::GetContentRegionAvail();
     // Beside the stacked panes or in the free cell beside the third of three
     // (explore/layout.h): the three one under another, each the column's width.
+    if (shape == StripShape::polar) {  // under the side panel: the profile and the statistics are under the display
+        plot_section(explorer, info.plane_curves, room.x, room.y);
+        ImGui::End();
+        return;
+    }
     if (shape == StripShape::plots) {  // under the side panel: the statistics are under the display
         const float line = ImGui::GetTextLineHeightWithSpacing();
         const float plot_h = std::max(200.0f, room.y * 0.7f);

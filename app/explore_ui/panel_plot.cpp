@@ -3,6 +3,8 @@
 // plotted (reflected value, or the displayed blend for translucent objects).
 #include "explore_ui/panels.h"
 
+#include "explore/plot_scale.h"
+
 #include "analysis/plane_curve_gpu.h"
 #include "explore_ui/polar_plot.h"
 #include "explore_ui/widgets.h"
@@ -90,18 +92,23 @@ void plot_section(Explorer& explorer, PlaneCurves* curves, float width, float he
     // The A/B split: B's curve beside A's (dashed), the same light and scale.
     std::optional<PlaneCurve> b;
     if (explorer.view.compare) b = curve_of(explorer.doc.material_b);
-    const double shown_top = explorer.view.plot_scale == RadialScale::lobe ? lobe_top(curve, b ? &*b : nullptr) : top;
+    // One curve many times the other's: log, so the smaller is not a few pixels tall (explore/plot_scale.h).
+    const ShownScale shown = shown_scale(explorer.view.plot_scale, curve, b ? &*b : nullptr);
+    double shown_top = explorer.view.plot_scale == RadialScale::lobe ? lobe_top(curve, b ? &*b : nullptr) : top;
+    if (shown.scale == RadialScale::log && explorer.view.plot_scale != RadialScale::log)
+        shown_top = std::max(1.0, lobe_top(curve, b ? &*b : nullptr));
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);  // the column's width, not the strip's
     ImGui::Text("object %d (%s%s), %.1f deg to N", explorer.view.selected_object, material->shown_name().c_str(),
                 b ? ("; dashed: B " + explorer.doc.material_b.shown_name()).c_str() : "", incidence);
     ImGui::PushStyleColor(ImGuiCol_Text, curve.light_behind ? ImVec4(1, 0.8f, 0.3f, 1) : ImVec4(0.7f, 0.7f, 0.7f, 1));
     ImGui::TextWrapped("%s", curve.quantity().c_str());
     ImGui::PopStyleColor();
+    if (!shown.why.empty()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s", shown.why.c_str());
     ImGui::PopTextWrapPos();
     // The half-disc plot is twice as wide as it is tall (polar_plot.h): the
     // room left under the text, less the scale's line under it.
     const float room = height - (ImGui::GetCursorScreenPos().y - top_y) - ImGui::GetTextLineHeightWithSpacing() - 4.0f;
-    polar_plot(curve, explorer.view.plot_scale, shown_top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
+    polar_plot(curve, shown.scale, shown_top, std::max(80.0f, std::min(2.0f * room, width)), b ? &*b : nullptr);
     tooltip("The red, green and blue value (CPU reference; the GPU for a .brdf model) for every view direction in the plane of the "
             "plotted light L (yellow) and N; dashed grey: the mirror direction R; dashed colours: material B "
             "(A/B split). Translucent objects: the displayed blend over the background colour.");

@@ -56,12 +56,14 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
 // of three panes, or beside the docked BRDF views), or the polar plot over
 // the profile alone (under the side panel, the statistics in a band of their
 // own under the display: draw_stats_band).
-enum class StripShape { row, column, plots };
+enum class StripShape { row, column, plots, polar };
 void draw_bottom_strip(Explorer& explorer, const FrameInfo& info, float x, float y,
                        float width, float height, StripShape shape = StripShape::row);
 // The statistics in three columns side by side (timings and scale, the
 // level histogram, the last message), in the band under the display.
 void draw_stats_band(const Explorer& explorer, const FrameInfo& info, float x, float y, float width, float height);
+// The scanline profile alone, in the band under the display (beside the statistics).
+void draw_profile_band(const FrameInfo& info, float x, float y, float width, float height);
 
 // The side panel's menu bar (File, Edit: undo/redo by name) and the modal
 // dialogs (unsaved edits on quit, Save As, a failed drop): dialogs.cpp.
@@ -71,6 +73,8 @@ void draw_dialogs(Explorer& explorer);
 // material (its file, the last error in red): panel_brdf.cpp.
 void open_brdf_dialog(Explorer& explorer);
 void brdf_material_note(const Explorer& explorer, const Material& material);
+// The "Spectra" window (View menu): the Spectra section's plot, larger, docked as the BRDF views are.
+void draw_spectra(Explorer& explorer, float x, float y, float width, float height);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).
 void draw_brdf_views(Explorer& explorer, BrdfViews* views, float x, float y, float width, float height);
 

@@ -3,6 +3,7 @@
 #include "models/model_spec.h"
 #include "scene/conductor_use.h"
 #include "spectral/conductor.h"
+#include "spectral/reflected_colour.h"
 
 #include <cmath>
 #include <cstdio>
@@ -50,6 +51,8 @@ SpectrumView spectrum_view(const Light* light, const Material* material) {
         view.no_reflectance = "model " + material->shown_name() + ": an RGB colour, no spectrum";
     }
     view.curves = spectral::spectrum_curves(power, reflectance ? &reflectance : nullptr);
+    if (light) view.light_colour = light->color;
+    if (reflectance) view.reflectance_colour = spectral::reflected_c0(spectral::light_power(0.0, ""), reflectance);
     return view;
 }
 

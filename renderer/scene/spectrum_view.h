@@ -20,6 +20,11 @@ struct SpectrumView {
     std::string light_label;        // "black body 3200 K", "CIE illuminant A", "D65 (an RGB light: ...)"
     std::string reflectance_label;  // "gold, R(lambda) at normal incidence", "color_spectrum", "kd_spectrum"; "" when none
     std::string no_reflectance;     // why there is no R(lambda) ("an RGB colour, no spectrum"); "" when there is one
+    // The spectra's own colours, to draw each curve in: the light's (linear
+    // sRGB at luminance 1, as the renderer uses it) and the reflectance's under
+    // D65 (eq. 2's C0 of the pair; none without a reflectance).
+    dvec3 light_colour{1.0, 1.0, 1.0};
+    dvec3 reflectance_colour{0.0, 0.0, 0.0};
 };
 
 // `light` nullptr: D65 (the display's white); `material` nullptr: no reflectance.
