@@ -3,6 +3,7 @@
 #pragma once
 
 #include "capture.h"
+#include "scene/load_context.h"
 #include "scene/manifest.h"
 
 #include <functional>
@@ -39,7 +40,8 @@ struct BatchOptions {
 };
 
 // Renders every item with one context and renderer, made by `capture` when
-// the first scene is drawn (never, when no scene loads). First every scene is
+// the first scene is drawn (never, when no scene loads); each scene is loaded
+// as `scenes` allows (LoadContext::for_class). First every scene is
 // loaded once without a context: an item with a `problem`, or whose scene
 // fails to load, is reported then (so every such line comes first, and a
 // hostile scene costs only its own loading). Then the rest are rendered in
@@ -51,6 +53,6 @@ struct BatchOptions {
 // image_memory_budget. An interrupt ends the process wherever it is
 // (app/interrupt.h).
 std::size_t run_batch(const std::function<Capture&()>& capture, const std::vector<BatchItem>& items,
-                      const BatchProgress& progress, const BatchOptions& options = {});
+                      const LoadContext& scenes, const BatchProgress& progress, const BatchOptions& options = {});
 
 }  // namespace m3055

@@ -9,7 +9,7 @@
 #include "interrupt.h"
 #include "progress.h"
 #include "gl/program.h"
-#include "scene/json_brdf.h"
+#include "scene/load_context.h"
 
 #include "grading/submissions.h"
 #include "image/image.h"
@@ -103,8 +103,6 @@ void add_batch_command(CLI::App& app) {
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: a scene with one is an error)");
     command->callback([options]() {
-        // A .brdf file is code: a class's scenes run it only when asked to.
-        scene_json::set_brdf_files_allowed(options->allow_brdf);
         std::atomic<std::size_t> total{0}, written{0};
         // SIGINT, SIGTERM, SIGHUP: wherever the batch is, temporaries removed,
         // finished files kept, one line, ended by the signal.
@@ -156,8 +154,9 @@ void add_batch_command(CLI::App& app) {
             // writing overlap, so this is each item's share of the run's time.
             nlohmann::json report = nlohmann::json::array();
             auto last = std::chrono::steady_clock::now();
+            // A .brdf file is code: a class's scenes run it only when asked to.
             failures = run_batch(
-                make_capture, items,
+                make_capture, items, LoadContext::for_class(options->allow_brdf),
                 [&](std::size_t, const BatchItem& item, const std::string& error) {
                     const auto now = std::chrono::steady_clock::now();
                     report.push_back(report_entry(item, error, std::chrono::duration<double>(now - last).count()));

@@ -39,7 +39,7 @@ std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOpt
     int bits = options.bits;
     for (int i = 0; i < 2; ++i)
         if (grading::input_kind(paths[i]) == grading::InputKind::scene) {
-            scenes[i] = load_scene_file(paths[i]);
+            scenes[i] = load_scene_file(paths[i], LoadContext::trusted());
             bits = scenes[i]->display.bits;
         }
     std::unique_ptr<Capture> capture;

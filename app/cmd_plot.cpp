@@ -79,7 +79,7 @@ void plot_spectrum(const SpectrumOptions& o) {
     std::optional<Light> light;
     std::optional<Material> material;
     if (!o.scene.empty()) {
-        scene = load_scene_file(o.scene);
+        scene = load_scene_file(o.scene, LoadContext::trusted());
         if (!scene.lights.empty()) {
             if (o.light < 0 || o.light >= int(scene.lights.size()))
                 fail("--light " + std::to_string(o.light) + ": " + o.scene + " has lights 0 to " +

@@ -51,7 +51,7 @@ void add_render_command(CLI::App& app) {
             if (!options->raw.empty()) files.add_output(0, "--raw", options->raw);
             if (const auto problems = files.check(); !problems.empty()) throw std::runtime_error(problems.begin()->second);
             const auto start = std::chrono::steady_clock::now();
-            const Scene scene = load_scene_file(options->scene, overrides);
+            const Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
             const auto loaded = std::chrono::steady_clock::now();
             Capture capture(parse_backend(options->backend));
             // The budget covers loading and drawing, not making the GL context.

@@ -63,7 +63,8 @@ PendingEdit describe_change(const Scene& before, const Scene& after) {
             return edit;
         }
     }
-    const nlohmann::json a = scene_to_json(before), b = scene_to_json(after);
+    const nlohmann::json a = scene_to_json(before, PathWriting::absolute()),
+                         b = scene_to_json(after, PathWriting::absolute());
     const std::string path = first_difference(a, b);
     if (path.empty()) return {};
     PendingEdit edit = value_change(a, b, path);
@@ -73,7 +74,8 @@ PendingEdit describe_change(const Scene& before, const Scene& after) {
 
 PendingEdit describe_change(const Material& before, const Material& after) {
     if (&before.model() != &after.model()) return {"B model", before.shown_name(), after.shown_name()};
-    const nlohmann::json a = scene_json::material_json(before), b = scene_json::material_json(after);
+    const nlohmann::json a = scene_json::material_json(before, PathWriting::absolute()),
+                         b = scene_json::material_json(after, PathWriting::absolute());
     const std::string path = first_difference(a, b);
     if (path.empty()) return {};
     PendingEdit edit = value_change(a, b, path);

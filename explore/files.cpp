@@ -4,14 +4,12 @@
 #include "explore/operations.h"
 #include "explore/undo.h"
 #include "image/image.h"
-#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <system_error>
 
 namespace m3055::explore {
@@ -29,7 +27,7 @@ void set_scene(ExplorerState& state, const Scene& scene, const std::string& name
 
 bool load_scene(ExplorerState& state, const std::string& path) {
     try {
-        set_scene(state, load_scene_file(path), path);
+        set_scene(state, load_scene_file(path, LoadContext::trusted()), path);
         state.scene_file = path;
         mark_saved(state);
         state.save_dir = std::filesystem::path(path).parent_path().string();
@@ -48,7 +46,8 @@ bool load_figure(ExplorerState& state, const std::string& name) {
         if (figure.name != name) continue;
         try {
             const std::string source = "scenes/" + name + ".json";
-            set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source), source);
+            set_scene(state, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()),
+                      source);
             // Built in: unsaved once edited; Ctrl+S asks where to save
             // (proposing NAME.json, never the file of the scene it replaced).
             state.scene_file.clear();
@@ -71,9 +70,7 @@ namespace {
 // The text of a saved scene file (Save, a screenshot's JSON): .brdf files
 // named as the platform asks (ExplorerState::Platform::brdf_paths_relative_to).
 std::string scene_file_text(const ExplorerState& state) {
-    std::optional<scene_json::BrdfPathsRelativeTo> relative;
-    if (!state.platform.brdf_paths_relative_to.empty()) relative.emplace(state.platform.brdf_paths_relative_to);
-    return scene_to_json(state.scene).dump(2) + "\n";
+    return scene_to_json(state.scene, PathWriting{state.platform.brdf_paths_relative_to}).dump(2) + "\n";
 }
 
 }  // namespace

@@ -246,9 +246,9 @@ bool compare_fresnel(ExplorerState& state) {
 // ---- Any scene value --------------------------------------------------------------------
 
 void set_scene_value(ExplorerState& state, const std::string& path, const std::string& value) {
-    nlohmann::json doc = scene_to_json(state.scene);
+    nlohmann::json doc = scene_to_json(state.scene, PathWriting::absolute());
     apply_overrides(doc, {{path, value}}, "script");
-    take_scene(state, scene_from_json(doc, "script"));
+    take_scene(state, scene_from_json(doc, "script", LoadContext::trusted()));
 }
 
 }  // namespace m3055::explore

@@ -19,7 +19,7 @@ std::optional<grading::Assignment> start_scene(ExplorerState& state, const std::
     if (scene_path.empty() || new_submission) {
         set_scene(state, default_scene(), "spec example");
     } else {
-        set_scene(state, load_scene_file(scene_path), scene_path);
+        set_scene(state, load_scene_file(scene_path, LoadContext::trusted()), scene_path);
         state.scene_file = scene_path;
     }
     if (!scene_path.empty()) state.save_dir = std::filesystem::path(scene_path).parent_path().string();

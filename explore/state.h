@@ -125,7 +125,7 @@ struct ExplorerState {
         bool can_quit = true;
         std::function<void(const std::string& path)> file_written;
         std::function<void()> pick_file;
-        // Where saved files name a .brdf by a relative path (scene_json::BrdfPathsRelativeTo):
+        // Where saved files name a .brdf by a relative path (PathWriting::relative_to):
         // the page's work folder, whose files leave as downloads side by side. "" (the
         // desktop): absolute paths.
         std::string brdf_paths_relative_to;

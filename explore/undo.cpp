@@ -7,8 +7,8 @@
 namespace m3055::explore {
 
 Snapshot snapshot(const ExplorerState& state) {
-    return {state.scene, scene_to_json(state.scene), state.material_b, state.camera_home, state.scene_name,
-            state.scene_file};
+    return {state.scene, scene_to_json(state.scene, PathWriting::absolute()), state.material_b,
+            state.camera_home, state.scene_name, state.scene_file};
 }
 
 void restore(ExplorerState& state, const Snapshot& s) {
@@ -58,11 +58,13 @@ std::string saved_key(const ExplorerState& state) {
 }
 }  // namespace
 
-void mark_saved(ExplorerState& state) { state.saved_docs[saved_key(state)] = scene_to_json(state.scene); }
+void mark_saved(ExplorerState& state) {
+    state.saved_docs[saved_key(state)] = scene_to_json(state.scene, PathWriting::absolute());
+}
 
 bool unsaved(const ExplorerState& state) {
     const auto saved = state.saved_docs.find(saved_key(state));
-    return saved == state.saved_docs.end() || scene_to_json(state.scene) != saved->second;
+    return saved == state.saved_docs.end() || scene_to_json(state.scene, PathWriting::absolute()) != saved->second;
 }
 
 std::string title_name(const ExplorerState& state) {

@@ -29,12 +29,12 @@ TEST(ExploreCompare, EditingADoesNotChangeB) {
 
 TEST(ExploreCompare, EditingBDoesNotChangeTheScene) {
     ExplorerState state = started();
-    const nlohmann::json scene = scene_to_json(state.scene);
+    const nlohmann::json scene = scene_to_json(state.scene, PathWriting::absolute());
     set_model_b(state, "metal_blinn");
     Material b = state.material_b;
     b.set_number("d", 0.3);
     edit_material_b(state, b);
-    EXPECT_EQ(scene_to_json(state.scene), scene);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), scene);
     EXPECT_EQ(state.material_b.number("d"), 0.3);
     EXPECT_EQ(compare_scene(state).objects[0].material, state.material_b) << "B's scene wears B";
 }

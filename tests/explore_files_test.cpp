@@ -49,7 +49,7 @@ TEST(ExploreFiles, SavedSceneLoadsBackEqual) {
 
     ExplorerState other = started();
     ASSERT_TRUE(load_scene(other, file)) << other.error;
-    EXPECT_EQ(scene_to_json(other.scene), scene_to_json(state.scene));
+    EXPECT_EQ(scene_to_json(other.scene, PathWriting::absolute()), scene_to_json(state.scene, PathWriting::absolute()));
     EXPECT_FALSE(unsaved(other));
     EXPECT_EQ(other.status, "loaded " + file);
 }
@@ -62,7 +62,9 @@ TEST(ExploreFiles, EveryFigurePresetLoadsAndRoundTrips) {
         ASSERT_TRUE(load_figure(state, name)) << name << ": " << state.error;
         const std::string file = (dir / (std::string(name) + ".json")).string();
         ASSERT_TRUE(save_scene(state, file)) << state.error;
-        EXPECT_EQ(scene_to_json(load_scene_file(file)), scene_to_json(state.scene)) << name;
+        EXPECT_EQ(scene_to_json(load_scene_file(file, LoadContext::trusted()), PathWriting::absolute()),
+                  scene_to_json(state.scene, PathWriting::absolute()))
+            << name;
     }
     ExplorerState state = started();
     EXPECT_FALSE(load_figure(state, "fig99"));
@@ -71,10 +73,10 @@ TEST(ExploreFiles, EveryFigurePresetLoadsAndRoundTrips) {
 
 TEST(ExploreFiles, ABadFileKeepsTheSceneAndSaysWhy) {
     ExplorerState state = started();
-    const nlohmann::json before = scene_to_json(state.scene);
+    const nlohmann::json before = scene_to_json(state.scene, PathWriting::absolute());
     const std::string bad = std::string(M3055_SOURCE_DIR) + "/tests/data/bad_scenes/material_m_negative.json";
     EXPECT_FALSE(load_scene(state, bad));
-    EXPECT_EQ(scene_to_json(state.scene), before);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), before);
     EXPECT_NE(state.load_error.find("objects[0].material.m"), std::string::npos) << state.load_error;
     EXPECT_EQ(state.error, state.load_error);
     EXPECT_FALSE(commit_edits(state)) << "a failed load is no step";
@@ -88,12 +90,12 @@ TEST(ExploreFiles, ALoadIsOneUndoStepBackToThePreviousScene) {
     ASSERT_TRUE(save_scene(state, file));
     ASSERT_TRUE(load_figure(state, "fig05"));
     commit_edits(state);
-    const nlohmann::json fig05 = scene_to_json(state.scene);
+    const nlohmann::json fig05 = scene_to_json(state.scene, PathWriting::absolute());
     ASSERT_TRUE(load_scene(state, file));
     commit_edits(state);
     EXPECT_EQ(state.history.undo_label(), "load " + file);
     ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), fig05);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), fig05);
     EXPECT_EQ(state.scene_name, "scenes/fig05.json");
 }
 
@@ -114,7 +116,8 @@ TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     ExplorerState plain;
     EXPECT_FALSE(start_scene(plain, "", ""));
     EXPECT_EQ(plain.scene_name, "spec example");
-    EXPECT_EQ(scene_to_json(plain.scene), scene_to_json(default_scene()));
+    EXPECT_EQ(scene_to_json(plain.scene, PathWriting::absolute()),
+              scene_to_json(default_scene(), PathWriting::absolute()));
     EXPECT_FALSE(unsaved(plain));
     EXPECT_FALSE(plain.history.can_undo());
 
@@ -126,7 +129,7 @@ TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     EXPECT_FALSE(start_scene(named, file, ""));
     EXPECT_EQ(named.scene_file, file);
     EXPECT_EQ(named.scene_name, file);
-    EXPECT_EQ(scene_to_json(named.scene), scene_to_json(saved.scene));
+    EXPECT_EQ(scene_to_json(named.scene, PathWriting::absolute()), scene_to_json(saved.scene, PathWriting::absolute()));
     EXPECT_FALSE(unsaved(named));
 
     ExplorerState missing;

@@ -48,19 +48,19 @@ TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
 
 TEST(ExploreKeys, APlainDigitNeverReplacesTheSceneEditedOrNot) {
     ExplorerState state = started();
-    const nlohmann::json fresh = scene_to_json(state.scene);
+    const nlohmann::json fresh = scene_to_json(state.scene, PathWriting::absolute());
     for (const char* digit : {"0", "6"}) {  // "0.6" typed with no field active, nothing edited
         EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
-        EXPECT_EQ(scene_to_json(state.scene), fresh) << digit;
+        EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), fresh) << digit;
         EXPECT_EQ(state.scene_name, "spec example");
     }
     EXPECT_NE(state.status.find("Ctrl+6"), std::string::npos) << "the status says what does: " << state.status;
     ASSERT_TRUE(handle_shortcut(state, key("ctrl+1")));
     edit_m(state, 40);
-    const nlohmann::json edited = scene_to_json(state.scene);
+    const nlohmann::json edited = scene_to_json(state.scene, PathWriting::absolute());
     for (const char* digit : {"0", "6"}) {
         EXPECT_FALSE(handle_shortcut(state, key(digit))) << digit;
-        EXPECT_EQ(scene_to_json(state.scene), edited) << digit;
+        EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), edited) << digit;
     }
 }
 
@@ -72,10 +72,10 @@ TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
     edit_m(state, 40);
     ASSERT_TRUE(save_scene(state, file));
     ASSERT_FALSE(unsaved(state));
-    const nlohmann::json saved = scene_to_json(state.scene);
+    const nlohmann::json saved = scene_to_json(state.scene, PathWriting::absolute());
     EXPECT_FALSE(handle_shortcut(state, key("0")));
     EXPECT_FALSE(handle_shortcut(state, key("6")));
-    EXPECT_EQ(scene_to_json(state.scene), saved);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), saved);
     EXPECT_EQ(state.scene_file, file);
     EXPECT_FALSE(unsaved(state));
 
@@ -87,11 +87,11 @@ TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
     EXPECT_EQ(state.save_path, ::testing::TempDir() + "fig10.json");
     EXPECT_FALSE(save_as(state, file)) << "an existing other file: asked twice";
     EXPECT_NE(state.error.find("exists"), std::string::npos) << state.error;
-    EXPECT_EQ(load_scene_file(file).objects[0].material.number("m"), 40.0);
+    EXPECT_EQ(load_scene_file(file, LoadContext::trusted()).objects[0].material.number("m"), 40.0);
 
     // Undo back to the saved scene: clean, its own file again.
     ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), saved);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), saved);
     EXPECT_EQ(state.scene_file, file);
     EXPECT_FALSE(unsaved(state)) << "identical to the file: nothing unsaved";
     edit_m(state, 41);
@@ -124,13 +124,13 @@ TEST(ExploreKeys, SaveAsOverwritesAnotherFileOnlyWhenAskedTwice) {
 TEST(ExploreKeys, CtrlDigitReplacesAnEditedSceneUndoably) {
     ExplorerState state = started();
     edit_m(state, 40);
-    const nlohmann::json edited = scene_to_json(state.scene);
+    const nlohmann::json edited = scene_to_json(state.scene, PathWriting::absolute());
     ASSERT_TRUE(handle_shortcut(state, key("ctrl+2")));
     commit_edits(state);
     EXPECT_EQ(state.scene_name, "scenes/fig06.json");
     EXPECT_EQ(state.history.undo_label(), "figure preset fig06");
     ASSERT_TRUE(undo(state));
-    EXPECT_EQ(scene_to_json(state.scene), edited);
+    EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), edited);
 }
 
 TEST(ExploreKeys, CtrlSAsksForAFileFirstThenWritesTheScenesOwnFile) {

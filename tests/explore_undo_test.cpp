@@ -38,11 +38,11 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
     ExplorerState state = started();
     ASSERT_TRUE(load_figure(state, "fig05"));
     commit_edits(state);
-    std::vector<nlohmann::json> after_step = {scene_to_json(state.scene)};
+    std::vector<nlohmann::json> after_step = {scene_to_json(state.scene, PathWriting::absolute())};
     for (int i = 1; i <= 250; ++i) {  // 250 steps of m, each a finished slider drag
         set_number(state, "m", 2.0 + i);
         ASSERT_TRUE(commit_edits(state));
-        after_step.push_back(scene_to_json(state.scene));
+        after_step.push_back(scene_to_json(state.scene, PathWriting::absolute()));
     }
     apply_light_preset(state, LightPreset::three_point_warm);
     commit_edits(state);
@@ -52,12 +52,14 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
     EXPECT_EQ(undo_label(state), "objects[0].material.m 251 -> 252");
     for (int i = 250; i >= 1; --i) {
         ASSERT_TRUE(undo(state)) << i;
-        EXPECT_EQ(scene_to_json(state.scene), after_step[std::size_t(i) - 1]) << "after undoing step " << i;
+        EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), after_step[std::size_t(i) - 1])
+            << "after undoing step " << i;
     }
     EXPECT_EQ(undo_label(state), "figure preset fig05");
     for (int i = 1; i <= 250; ++i) {
         ASSERT_TRUE(redo(state)) << i;
-        EXPECT_EQ(scene_to_json(state.scene), after_step[std::size_t(i)]) << "after redoing step " << i;
+        EXPECT_EQ(scene_to_json(state.scene, PathWriting::absolute()), after_step[std::size_t(i)])
+            << "after redoing step " << i;
     }
     EXPECT_EQ(state.history.redo_label(), "light preset three_point_warm");
 }

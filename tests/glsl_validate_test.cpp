@@ -168,7 +168,7 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
 
     std::set<std::vector<std::string>> keys;
     for (const auto& path : scenes) {
-        const Scene scene = load_scene_file(path.string());
+        const Scene scene = load_scene_file(path.string(), LoadContext::trusted());
         std::vector<const Object*> opaque, translucent;
         for (const Object& object : scene.objects)
             (is_translucent(object.material) ? translucent : opaque).push_back(&object);

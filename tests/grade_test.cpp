@@ -61,6 +61,29 @@ TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
     EXPECT_TRUE(file_exists(dir.file("out/students/zoe.png")));
 }
 
+// The students' files are named relative to the class folder, however the
+// teacher spells its path: the same reasons on every machine.
+TEST(Grade, SubmissionFilesAreNamedRelativeToTheClassFolder) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs/zoe"));
+    fs::copy_file(kSubmissions + "/alice.json", dir.file("subs/zoe/scene.json"));
+    write_text(dir.file("subs/zoe/screenshot.png"), "not a PNG");
+    write_brdf_submission(dir.file("subs/yves"));
+    fs::remove(dir.file("subs/yves/lambert.brdf"));
+    for (const std::string& spelled : {dir.file("subs"), dir.file("subs/../subs/")}) {
+        SCOPED_TRACE(spelled);
+        const RunResult run =
+            run_m3055({"grade", kAssignment, spelled, "--out", dir.file("out"), "--allow-brdf"});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const auto s = by_student(read_json(dir.file("out/grades.json")));
+        const std::string screenshot = s.at("zoe")["screenshot"], broken = s.at("yves")["broken"];
+        EXPECT_EQ(screenshot.rfind("zoe/screenshot.png: cannot read PNG: ", 0), 0u) << screenshot;
+        EXPECT_EQ(broken.rfind("yves/scene.json: objects[0].material.file: yves/lambert.brdf: cannot read file: ", 0),
+                  0u)
+            << broken;
+    }
+}
+
 // A student checks the one file they will submit: the same grade as in the class's folder.
 TEST(Grade, OneSceneFileIsGradedAsInTheFolder) {
     TempDir dir;

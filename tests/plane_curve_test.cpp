@@ -70,7 +70,7 @@ TEST(PlaneCurve, TranslucentCurveAtTheViewDirectionIsTheDisplayedValue) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const RgbFloatImage pfm = read_pfm(dir.file("out.pfm"));
     ASSERT_EQ(pfm.width, 65);
-    const Scene scene = load_scene_file(dir.file("scene.json"));
+    const Scene scene = load_scene_file(dir.file("scene.json"), LoadContext::trusted());
     const Material& material = scene.objects[0].material;
     const PlaneCurve curve =
         plane_curve(material, scene.lights[0], incidence_at_target(scene.lights[0], scene.camera), scene.background);
@@ -116,7 +116,7 @@ TEST(PlaneCurve, LobeScaleFitsThePlottedLobe) {
     EXPECT_EQ(nice_ceiling(6.0), 10.0);
     EXPECT_NEAR(nice_ceiling(0.031), 0.05, 1e-15);
     EXPECT_EQ(nice_ceiling(0.0), 1.0) << "a black curve";
-    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"));
+    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"), LoadContext::trusted());
     const Light& light = scene.lights[0];
     const Material& metal = scene.objects[0].material;
     const PlaneCurve curve = plane_curve(metal, light, incidence_at_target(light, scene.camera), scene.background);

@@ -130,7 +130,7 @@ private:
     void say(const std::string& text) { std::fprintf(stderr, "bench: %s\n", text.c_str()); }
 
     NamedScene load(const std::string& file) {
-        return {file, load_scene_file((fs::path(scenes_dir_) / file).string())};
+        return {file, load_scene_file((fs::path(scenes_dir_) / file).string(), LoadContext::trusted())};
     }
 
     void load_scenes() {
@@ -166,7 +166,7 @@ private:
                 if (o.material.has("color"))
                     o.material.set_vec3("color", glm::clamp(o.material.vec3("color") * (0.8 + 0.001 * i), 0.0, 1.0));
             const std::string name = "scene" + std::to_string(i);
-            write_text(tmp.file(name + ".json"), scene_to_json(s).dump(2));
+            write_text(tmp.file(name + ".json"), scene_to_json(s, PathWriting::absolute()).dump(2));
             manifest.push_back({{"scene", name + ".json"}, {"out", name + "_batch.png"}});
             scene_files.push_back(tmp.file(name + ".json"));
         }
