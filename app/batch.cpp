@@ -1,6 +1,6 @@
 #include "batch.h"
 
-#include "gl/program.h"
+#include "frame/render_error.h"
 #include "image/image.h"
 #include "io/message_text.h"
 #include "io/run_files.h"

@@ -2,11 +2,10 @@
 
 #include "grading/diff_image.h"
 #include "grading/image_input.h"
-#include "gl/program.h"
+#include "frame/render_error.h"
 #include "image/image.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
-#include "passes/draw_chunks.h"
 #include "scene/json_brdf.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"

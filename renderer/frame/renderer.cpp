@@ -6,6 +6,7 @@
 #include "gl/program.h"
 #include "models/model_spec.h"
 #include "passes/camera_frame.h"
+#include "passes/draw_chunks.h"
 #include "passes/frame_targets.h"
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
