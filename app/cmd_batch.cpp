@@ -4,10 +4,13 @@
 // `m3055 batch --out DIR SCENES...` (issue 14): scene files, folders or glob
 // patterns instead of a manifest, outputs named after the scenes;
 // `--report FILE.json` and `--shard K/N` for class-sized runs.
-#include "batch.h"
 #include "commands.h"
+#include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
+
+#include "batch/run_batch.h"
+#include "batch/scene_inputs.h"
 #include "gl/program.h"
 #include "scene/load_context.h"
 
@@ -15,7 +18,6 @@
 #include "image/image.h"
 #include "image/temporary_files.h"
 #include "io/message_text.h"
-#include "io/scene_inputs.h"
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -56,10 +58,10 @@ std::vector<BatchItem> batch_items(const BatchCommandOptions& options, std::stri
     } else {
         std::error_code ignored;  // a folder that cannot be made is each item's "cannot write" line
         std::filesystem::create_directories(options.out_dir, ignored);
-        const std::vector<std::string> scenes = io::expand_scene_inputs(options.inputs);
+        const std::vector<std::string> scenes = expand_scene_inputs(options.inputs);
         for (std::size_t i = 0; i < scenes.size(); ++i)
-            items.push_back({i, scenes[i], io::output_for(scenes[i], options.out_dir, ".png"),
-                             options.raw ? io::output_for(scenes[i], options.out_dir, ".pfm") : "", ""});
+            items.push_back({i, scenes[i], output_for(scenes[i], options.out_dir, ".png"),
+                             options.raw ? output_for(scenes[i], options.out_dir, ".pfm") : "", ""});
     }
     const grading::Shard shard = grading::parse_shard(options.shard);
     std::vector<BatchItem> mine;
@@ -132,7 +134,7 @@ void add_batch_command(CLI::App& app) {
             std::unique_ptr<Capture> capture;
             const Backend backend = parse_backend(options->backend);
             const auto make_capture = [&]() -> Capture& {
-                if (!capture) capture = std::make_unique<Capture>(backend);
+                if (!capture) capture = std::make_unique<Capture>(make_headless_context(backend));
                 return *capture;
             };
             Progress progress(items.size(), interactive);

@@ -5,8 +5,9 @@
 // `--merge DIR...` joins the shards' outputs. The grading is grading/.
 // Exit 0: the run finished (whatever the scores); 1: it could not (bad
 // assignment, unusable reference or output folder); 2: usage.
-#include "capture.h"
 #include "commands.h"
+#include "headless_context.h"
+#include "capture/capture.h"
 #include "gl/program.h"
 #include "scene/load_context.h"
 #include "interrupt.h"
@@ -113,7 +114,7 @@ void run_grade(const GradeOptions& options) {
     const auto report = grading::run_grading(
         assignment, options.submissions,
         [&]() -> Renderer& {
-            if (!capture) capture = std::make_unique<Capture>(backend);
+            if (!capture) capture = std::make_unique<Capture>(make_headless_context(backend));
             return capture->renderer();
         },
         run);

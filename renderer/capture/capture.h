@@ -1,5 +1,5 @@
-// Headless capture shared by `render`, `figures` (and later `batch`): one
-// context and renderer, reused for many scenes.
+// Headless capture shared by `render`, `figures`, `batch`, `compare` and
+// `grade`: one context and renderer, reused for many scenes.
 #pragma once
 
 #include "gl/context.h"
@@ -35,7 +35,9 @@ std::string nonfinite_warning(const std::string& scene_path, const NonFinite& no
 
 class Capture {
 public:
-    explicit Capture(Backend backend);
+    // `context`: made by the caller, who decides what the process does
+    // before its first context (app/headless_context.h).
+    explicit Capture(std::unique_ptr<HeadlessContext> context);
     // Renders `scene` and writes the PNG (and the PFM when raw_path is not
     // empty), each atomically. Throws on any failure; writes nothing then.
     // `nonfinite`, when given: the render's NaN and infinite pixels, counted.

@@ -2,7 +2,7 @@
 // manifest format is in scene/manifest.h.
 #pragma once
 
-#include "capture.h"
+#include "capture/capture.h"
 #include "scene/load_context.h"
 #include "scene/manifest.h"
 
@@ -25,7 +25,7 @@ using BatchProgress = std::function<void(std::size_t index, const BatchItem& ite
 
 struct BatchOptions {
     unsigned encoder_threads = 0;  // 0: one per core
-    double scene_timeout_s = 0;    // each scene's time budget (capture.h: scene_deadline); 0: none
+    double scene_timeout_s = 0;    // each scene's time budget (capture/capture.h: scene_deadline); 0: none
     // Bytes of finished images (display, PNG, raw floats) waiting to be
     // written; a scene is read back only when its images fit beside them, or
     // when none are waiting (docs/limits.md: the memory bound of batch).
@@ -34,7 +34,7 @@ struct BatchOptions {
     // place (app/interrupt.h counts them there, so its count is exact).
     std::function<void()> on_written;
     // Called (on the rendering thread) for a scene whose render has NaN or
-    // infinite pixels, with the warning line (capture.h: nonfinite_warning);
+    // infinite pixels, with the warning line (capture/capture.h: nonfinite_warning);
     // the scene is written all the same and does not count as failed.
     std::function<void(std::size_t index, const BatchItem& item, const std::string& warning)> warned;
 };

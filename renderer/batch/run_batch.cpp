@@ -1,4 +1,4 @@
-#include "batch.h"
+#include "batch/run_batch.h"
 
 #include "frame/render_error.h"
 #include "image/image.h"
