@@ -42,7 +42,7 @@ void draw(const std::string& script, const std::string& png) {
     if (gnuplot.empty()) throw std::runtime_error("plot: no gnuplot on $PATH (Debian: gnuplot-nox); wrote " + gp.string());
     const std::string partial = "." + out.filename().string() + "." + std::to_string(getpid()) + ".partial";
     const fs::path dir = out.parent_path(), partial_path = dir / partial, log = dir / (partial + ".log");
-    const int status = bench::run_gnuplot(gnuplot, dir.string(), gp.string(), partial, log.string());
+    const int status = bench::run_gnuplot(gnuplot, gp.string(), partial_path.string(), log.string());
     const std::string message = status == 0 ? "" : bench::first_line(log.string());
     std::error_code ignored;
     fs::remove(log, ignored);
