@@ -1,7 +1,7 @@
 // `m3055 batch MANIFEST.json`: renders many scenes in one process, reusing the
-// context and compiled programs (issue 4). Each output is byte-identical to
+// context and compiled programs. Each output is byte-identical to
 // `m3055 render` of that scene: both go through Capture::render_to_files.
-// `m3055 batch --out DIR SCENES...` (issue 14): scene files, folders or glob
+// `m3055 batch --out DIR SCENES...`: scene files, folders or glob
 // patterns instead of a manifest, outputs named after the scenes;
 // `--report FILE.json` and `--shard K/N` for class-sized runs.
 #include "commands.h"

@@ -1,5 +1,5 @@
 // `m3055 compare A B`: two images (PNG, PFM, or a scene rendered first) at the
-// display's own precision (issue 14). Exit 0: pass; 1: warn or fail (the
+// display's own precision. Exit 0: pass; 1: warn or fail (the
 // result line or "result" in --json says which); 2: error (unreadable input,
 // sizes differ, bad option). The comparison is grading/.
 #include "commands.h"

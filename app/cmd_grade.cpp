@@ -1,7 +1,6 @@
-// `m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR` (issue 14,
-// docs/grading.md): every submission rendered once, compared with the
-// assignment's reference, its rules checked, and grades.csv, grades.json,
-// report.html written. `--shard K/N` grades a deterministic share;
+// `m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR` (docs/grading.md):
+// every submission rendered once, compared with the assignment's reference,
+// its rules checked, and grades.csv, grades.json, report.html written. `--shard K/N` grades a deterministic share;
 // `--merge DIR...` joins the shards' outputs. The grading is grading/.
 // Exit 0: the run finished (whatever the scores); 1: it could not (bad
 // assignment, unusable reference or output folder); 2: usage.

@@ -1,4 +1,4 @@
-// `m3055 grade --check ASSIGNMENT.json` (issue 19 item 7): an assignment
+// `m3055 grade --check ASSIGNMENT.json`: an assignment
 // checked against its own reference before any student meets it. Structural
 // errors (a model name that does not exist, a path that does not resolve in
 // the reference scene, an object index or light name that is not there, an

@@ -1,4 +1,4 @@
-// Grading one submitted scene against an assignment (issue 14). grade_one is
+// Grading one submitted scene against an assignment. grade_one is
 // what `m3055 grade` runs for every student, and what the explorer can call
 // with its own renderer to show a student the score and reasons `grade` would
 // give, live: the same code, not a copy.

@@ -1,4 +1,4 @@
-// Issue 20, item 9: the line that says what the explorer is busy with
+// The line that says what the explorer is busy with
 // (explore/busy.h), and the two steps of a watched .brdf file's reload: the
 // poll that notices the change leaves "reloading FILE..." for a frame to
 // show, the next poll reloads.

@@ -51,7 +51,7 @@ TEST(ExploreCompare, SplitOnAndOffKeepsB) {
     EXPECT_FALSE(commit_edits(state)) << "the split is a view, no undo step";
 }
 
-// Issue 20, item 8: a B nobody has set is a copy of A when the split is
+// A B nobody has set is a copy of A when the split is
 // first switched on (object 1 selected, a metal: not object 0's highlight).
 TEST(ExploreCompare, SplitOnCopiesAIntoAnUntouchedB) {
     ExplorerState state = started();

@@ -144,7 +144,7 @@ TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
     EXPECT_EQ(state.scene_file, "");
 }
 
-// Issue 20, item 10: Save As proposes the scene's own file, or (a figure
+// Save As proposes the scene's own file, or (a figure
 // preset loaded since) the preset's name in the folder of the last file, never
 // m3055-scene.json in the working folder.
 TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
@@ -160,7 +160,7 @@ TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
     EXPECT_EQ(state.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
 }
 
-// Issue 21: the page saves a scene naming its .brdf file as the user named it
+// The page saves a scene naming its .brdf file as the user named it
 // (relative to the page's work folder, where the picked files are), so the
 // downloaded JSON renders next to the downloaded .brdf; the desktop keeps the
 // absolute path; a .brdf outside the folder stays absolute in the page too.

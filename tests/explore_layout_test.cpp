@@ -50,7 +50,7 @@ TEST(ExploreLayout, PixelUnderTheMouseFollowsTheShownMagnification) {
     EXPECT_FALSE(pixel_at(d, Rect{}, 0, 0)) << "nothing drawn yet";
 }
 
-// Issue 20, item 5: at 1280 x 720 with the panels shown, A and B (or your
+// At 1280 x 720 with the panels shown, A and B (or your
 // scene and the practice reference) at a whole magnification: stacked at the
 // window's height, the plots in a column beside them; never a fraction.
 TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
@@ -74,7 +74,7 @@ TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
     EXPECT_FALSE(layout_for_panes(1280, 720, false, 2, 512, 320, 1.0f, label_h).plots_beside);
 }
 
-// Issue 20, item 5: three panes (A, B, |A - B|; practice: your scene, the
+// Three panes (A, B, |A - B|; practice: your scene, the
 // reference, the difference) at 1280 x 720 with the panels shown: two
 // columns at 1:1, the plots in the free fourth cell, the side panel narrowed
 // to the rest (never under kMinNarrowSideWidth); at 1920 x 1080 the usual
@@ -103,7 +103,7 @@ TEST(ExploreLayout, ThreePanesAt1280x720TakeTwoColumnsWithThePlotsInTheFourthCel
     EXPECT_FALSE(layout_for_panes(1200, 720, true, 3, 512, 320, 1.0f, label_h).plots_in_cell);
 }
 
-// Issue 20, item 10: at 1920 x 1080 one pane shows at 3x (2x beside the
+// At 1920 x 1080 one pane shows at 3x (2x beside the
 // usual 440-px panel): the side panel in its narrow form over the polar plot
 // and the profile in one column at the left, the pane at the right, the
 // statistics in the band under it.

@@ -98,7 +98,7 @@ std::string refusal(const std::string& token) {
     return "";
 }
 
-// Issue 21: a scene whose material is a .brdf file (in a subfolder, too)
+// A scene whose material is a .brdf file (in a subfolder, too)
 // travels with the file; unpacked into another folder it loads as the same scene.
 TEST(ShareLink, ASceneWithBrdfFilesCarriesThemAndComesBackTheSame) {
     const fs::path from = fresh_folder("share_link_from"), to = fresh_folder("share_link_to");

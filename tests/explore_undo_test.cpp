@@ -171,7 +171,7 @@ TEST(ExploreUndo, UndoingBackToTheSavedSceneLeavesNothingUnsaved) {
     std::filesystem::remove(file);
 }
 
-// Issue 20, item 9: the status line tells only the last action: an edit
+// The status line tells only the last action: an edit
 // after an undo clears "undid ..." (no stale "redid ... m" after a model switch).
 TEST(ExploreUndo, AnEditClearsTheLastActionsStatus) {
     ExplorerState state;
@@ -187,7 +187,7 @@ TEST(ExploreUndo, AnEditClearsTheLastActionsStatus) {
     EXPECT_EQ(state.status, "");
 }
 
-// Issue 20, item 10: Shift+drag on the display moves the selected object in
+// Shift+drag on the display moves the selected object in
 // the plane facing the camera so it follows the mouse (a drag across the
 // display's height is the view's height at the object's depth: 2 d tan(fov/2)
 // in perspective, the camera's height orthographic); a whole drag is one undo step.

@@ -300,7 +300,7 @@ TEST_F(Explorer, F12WritesTheNextFreeNumberedScreenshot) {
         3.0);
 }
 
-// Issue 12: the pixel probe's numbers are the headless render's: the linear
+// The pixel probe's numbers are the headless render's: the linear
 // value of the --raw PFM, the PNG value and its display level; a click picks
 // the object under it (the Material panel then edits it).
 TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
@@ -356,7 +356,7 @@ TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {
     EXPECT_EQ(test::read_text(dir.file("named.json")), test::read_text(dir.file("again.json")));
 }
 
-// Issue 12's A/B read-outs: B differs from A in one parameter (the middle
+// The A/B read-outs: B differs from A in one parameter (the middle
 // sphere's second lobe). The count of pixels on another level, the difference
 // pane's image and the scanline profile equal direct computations on two
 // headless renders of the same scenes.
@@ -488,7 +488,7 @@ TEST_F(Explorer, OpenedBrdfIsWatchedAndAnErrorKeepsTheLastGoodImage) {
     EXPECT_EQ(test::read_text(dir.file("fixed.png")), test::read_text(dir.file("r.png")));
 }
 
-// Issue 14: `explore --assignment A.json SCENE.json` shows the score and the
+// `explore --assignment A.json SCENE.json` shows the score and the
 // reasons `m3055 grade` gives (both run grading::grade_one): for a worked
 // submission, after an edit that breaks a rule, and for the scene saved with
 // Ctrl+S to submit.

@@ -194,7 +194,7 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
     RecordProperty("distinct_programs", int(keys.size()));
 }
 
-// ---- GLSL ES 3.00 (WebGL2, issue 21) -------------------------------------------
+// ---- GLSL ES 3.00 (WebGL2) ----------------------------------------------------
 
 // The programs a WebGL2 build would compile, composed for GlslTarget::es: per
 // model of the table its specialized sphere and mesh programs (the translucent

@@ -1,4 +1,4 @@
-// `m3055 grade` as a teacher runs it (issue 14): the worked assignment's
+// `m3055 grade` as a teacher runs it: the worked assignment's
 // scores, every kind of broken submission scoring 0 with its reason without
 // stopping the run, a run killed halfway leaving no tables, report.html in
 // headless Chromium, and 4 shards under GNU parallel merged to the same bytes.

@@ -307,7 +307,7 @@ TEST(ModelTable, SwitchingModelsKeepsValuesOfTheSameMeaning) {
     EXPECT_EQ(with_model(Material::of("highlight"), model_table().get("metal")).number("d"), 0.05);
 }
 
-// Issue 20, item 10: a model switch keeps the object's colour between every
+// A model switch keeps the object's colour between every
 // two built-in models (C0 "color" of the paper's models, "kd" of the classic
 // ones: carry_from in builtin_models.cpp), never the new model's default red.
 TEST(ModelTable, EverySwitchBetweenBuiltInModelsKeepsTheColour) {

@@ -1,4 +1,4 @@
-// The polar plot's numbers (renderer/analysis/plane_curve.h), issue 12: a
+// The polar plot's numbers (renderer/analysis/plane_curve.h): a
 // light behind the surface gives no lobe (it used to be clamped to 90 deg and
 // drew a full one), and a translucent object's curve at the view direction is
 // the value the display shows at the matching pixel (it used to plot the
@@ -103,7 +103,7 @@ TEST(PlaneCurve, RadialScales) {
     EXPECT_EQ(model_max(metal, a, dvec3(0.0)), model_max(metal, b, dvec3(0.0)));
 }
 
-// Issue 20, item 7: the default "lobe" scale puts the outer circle at the
+// The default "lobe" scale puts the outer circle at the
 // plotted curve's largest value rounded up to 1, 2 or 5 x 10^k: Fig. 10's
 // metal lobe (about 5 at its 54.7 deg incidence, 40.6 over all incidences)
 // reaches at least 40 % of the radius instead of running off "fixed, outer 1"

@@ -217,7 +217,7 @@ TEST(SceneLoader, DefaultsForEverythingOptional) {
     EXPECT_EQ(scene.objects[2].material.number("d"), 0.05);
     expect_lobes(scene.objects[2].material.lobes().to_vector(), {{0.013, 0.2}, {0.1, 0.4}});
     // The cheap metals' defaults are the explorer's presets (Figs. 12 and 13),
-    // which meet eq. 14 with d = 0.05 (were {1.0, 13} and {1.0, 20}: issue 10).
+    // which meet eq. 14 with d = 0.05.
     EXPECT_EQ(scene.objects[3].material.number("d"), 0.05);
     expect_lobes(scene.objects[3].material.lobes().to_vector(), {{0.95, 13.0}});
     EXPECT_EQ(scene.objects[4].material.number("d"), 0.05);

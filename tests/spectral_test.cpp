@@ -1,4 +1,4 @@
-// Spectral lights (docs/spec.md#71-spectral-lights, issue 22): the CGATS reader,
+// Spectral lights (docs/spec.md#71-spectral-lights): the CGATS reader,
 // the CIE data from colord-data, Planck's law to XYZ to linear sRGB, and the
 // scene format's "temperature_k" and "illuminant".
 #include "reference/reference.h"

@@ -407,7 +407,7 @@ void run_bench(const BenchOptions& options) {
         return;
     }
     if (!options.latency_only) run_figures_bench(options);
-    // The explorer latency section (issue 12): its own context, after the rest.
+    // The explorer latency section: its own context, after the rest.
     const std::string latency = explorer_latency(options.backend).markdown();
     fs::create_directories(options.out);
     write_file_atomic((fs::path(options.out) / "latency.md").string(), latency.data(), latency.size());

@@ -1,4 +1,4 @@
-// `m3055 batch`: many scenes in one process (issue 4, "Batch capture"); the
+// `m3055 batch`: many scenes in one process, through one Capture; the
 // manifest format is in scene/manifest.h.
 #pragma once
 

@@ -21,7 +21,7 @@ namespace m3055 {
 void write_capture_files(const std::string& png_path, const Rgb8Image& display, const std::string& raw_path,
                          const RgbFloatImage& raw, const std::function<void()>& committed = {});
 
-// A scene's time budget (`--scene-timeout SECONDS`, issue 11 class 10): from
+// A scene's time budget (`--scene-timeout SECONDS`): from
 // when it starts loading to its last draw; encoding and writing the files are
 // not counted (bounded by the display's size). 0: no limit.
 std::optional<std::chrono::steady_clock::time_point> scene_deadline(std::chrono::steady_clock::time_point start,

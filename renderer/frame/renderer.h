@@ -48,7 +48,7 @@ public:
     // blending in the context, gives two_pass).
     void set_translucent_blend(TranslucentBlend blend);
     TranslucentBlend translucent_blend() const;
-    // A time budget for the following renders (issue 11, class 10): with a
+    // A time budget for the following renders: with a
     // deadline, each draw is split into chunks of bounded work
     // (passes/draw_chunks.h), the GPU is waited for between them, and render()
     // throws RenderTimeout at the first boundary past the deadline. The pixels

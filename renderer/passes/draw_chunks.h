@@ -1,5 +1,5 @@
 // Draws split into chunks of bounded work, so that a render with a deadline
-// (Renderer::set_deadline, issue 11 class 10) can stop between them: a legal
+// (Renderer::set_deadline) can stop between them: a legal
 // scene of 100 000 overlapping screen-filling translucent spheres under 16
 // spot lights would take hours in one draw call on llvmpipe.
 #pragma once
