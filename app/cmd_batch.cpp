@@ -1,21 +1,23 @@
 // `m3055 batch MANIFEST.json`: renders many scenes in one process, reusing the
-// context and compiled programs (issue 4). Each output is byte-identical to
+// context and compiled programs. Each output is byte-identical to
 // `m3055 render` of that scene: both go through Capture::render_to_files.
-// `m3055 batch --out DIR SCENES...` (issue 14): scene files, folders or glob
+// `m3055 batch --out DIR SCENES...`: scene files, folders or glob
 // patterns instead of a manifest, outputs named after the scenes;
 // `--report FILE.json` and `--shard K/N` for class-sized runs.
-#include "batch.h"
 #include "commands.h"
+#include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
+
+#include "batch/run_batch.h"
+#include "batch/scene_inputs.h"
 #include "gl/program.h"
-#include "scene/json_brdf.h"
+#include "scene/load_context.h"
 
 #include "grading/submissions.h"
 #include "image/image.h"
 #include "image/temporary_files.h"
 #include "io/message_text.h"
-#include "io/scene_inputs.h"
 
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -56,10 +58,10 @@ std::vector<BatchItem> batch_items(const BatchCommandOptions& options, std::stri
     } else {
         std::error_code ignored;  // a folder that cannot be made is each item's "cannot write" line
         std::filesystem::create_directories(options.out_dir, ignored);
-        const std::vector<std::string> scenes = io::expand_scene_inputs(options.inputs);
+        const std::vector<std::string> scenes = expand_scene_inputs(options.inputs);
         for (std::size_t i = 0; i < scenes.size(); ++i)
-            items.push_back({i, scenes[i], io::output_for(scenes[i], options.out_dir, ".png"),
-                             options.raw ? io::output_for(scenes[i], options.out_dir, ".pfm") : "", ""});
+            items.push_back({i, scenes[i], output_for(scenes[i], options.out_dir, ".png"),
+                             options.raw ? output_for(scenes[i], options.out_dir, ".pfm") : "", ""});
     }
     const grading::Shard shard = grading::parse_shard(options.shard);
     std::vector<BatchItem> mine;
@@ -103,8 +105,6 @@ void add_batch_command(CLI::App& app) {
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: a scene with one is an error)");
     command->callback([options]() {
-        // A .brdf file is code: a class's scenes run it only when asked to.
-        scene_json::set_brdf_files_allowed(options->allow_brdf);
         std::atomic<std::size_t> total{0}, written{0};
         // SIGINT, SIGTERM, SIGHUP: wherever the batch is, temporaries removed,
         // finished files kept, one line, ended by the signal.
@@ -134,7 +134,7 @@ void add_batch_command(CLI::App& app) {
             std::unique_ptr<Capture> capture;
             const Backend backend = parse_backend(options->backend);
             const auto make_capture = [&]() -> Capture& {
-                if (!capture) capture = std::make_unique<Capture>(backend);
+                if (!capture) capture = std::make_unique<Capture>(make_headless_context(backend));
                 return *capture;
             };
             Progress progress(items.size(), interactive);
@@ -156,8 +156,9 @@ void add_batch_command(CLI::App& app) {
             // writing overlap, so this is each item's share of the run's time.
             nlohmann::json report = nlohmann::json::array();
             auto last = std::chrono::steady_clock::now();
+            // A .brdf file is code: a class's scenes run it only when asked to.
             failures = run_batch(
-                make_capture, items,
+                make_capture, items, LoadContext::for_class(options->allow_brdf),
                 [&](std::size_t, const BatchItem& item, const std::string& error) {
                     const auto now = std::chrono::steady_clock::now();
                     report.push_back(report_entry(item, error, std::chrono::duration<double>(now - last).count()));

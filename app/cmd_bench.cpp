@@ -1,4 +1,4 @@
-// `m3055 bench [--out DIR] [--quick]`: run time against error (issue 4, part 1).
+// `m3055 bench [--out DIR] [--quick]`: run time against error.
 #include "bench/bench.h"
 #include "bench/brdf_bench.h"
 #include "commands.h"
@@ -21,7 +21,7 @@ void add_bench_command(CLI::App& app) {
                         "Folder with the paper's scenes (default: ./scenes, then scenes/ beside the build folder)");
     command->add_flag("--quick", options->bench.quick, "Few repetitions and a small batch: a smoke run, rough numbers");
     command->add_flag("--latency", options->bench.latency_only,
-                      "Only the explorer latency section (issue 12): writes latency.md");
+                      "Only the explorer latency section: writes latency.md");
     command->add_flag("--replot", options->bench.replot,
                       "Measure nothing: redraw bench.gp and bench.png from the bench.csv in --out")
         ->excludes("--quick");

@@ -5,7 +5,6 @@
 // reciprocity, the largest directional albedo, and the distribution's
 // normalization where the model declares one. Exit 1 on any NaN, Inf or
 // negative value (and, with --require-conserving, on an albedo above 1.01).
-#include "capture.h"
 #include "commands.h"
 #include "progress.h"
 

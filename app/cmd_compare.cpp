@@ -1,11 +1,12 @@
 // `m3055 compare A B`: two images (PNG, PFM, or a scene rendered first) at the
-// display's own precision (issue 14). Exit 0: pass; 1: warn or fail (the
+// display's own precision. Exit 0: pass; 1: warn or fail (the
 // result line or "result" in --json says which); 2: error (unreadable input,
 // sizes differ, bad option). The comparison is grading/.
-#include "capture.h"
 #include "commands.h"
+#include "headless_context.h"
 #include "progress.h"
 
+#include "capture/capture.h"
 #include "gl/program.h"
 #include "grading/comparison_json.h"
 #include "grading/diff_image.h"
@@ -39,14 +40,14 @@ std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOpt
     int bits = options.bits;
     for (int i = 0; i < 2; ++i)
         if (grading::input_kind(paths[i]) == grading::InputKind::scene) {
-            scenes[i] = load_scene_file(paths[i]);
+            scenes[i] = load_scene_file(paths[i], LoadContext::trusted());
             bits = scenes[i]->display.bits;
         }
     std::unique_ptr<Capture> capture;
     grading::LevelImage images[2];
     for (int i = 0; i < 2; ++i) {
         if (scenes[i]) {
-            if (!capture) capture = std::make_unique<Capture>(parse_backend(options.backend));
+            if (!capture) capture = std::make_unique<Capture>(make_headless_context(parse_backend(options.backend)));
             images[i] = grading::render_levels(capture->renderer(), *scenes[i]);
         } else {
             images[i] = grading::read_level_image(paths[i], bits);

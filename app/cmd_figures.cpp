@@ -1,7 +1,8 @@
 // `m3055 figures`: renders the paper's figure scenes (scenes/fig*.json) to PNGs.
-#include "capture.h"
 #include "commands.h"
+#include "headless_context.h"
 
+#include "capture/capture.h"
 #include "scene/load.h"
 
 #include <filesystem>
@@ -34,11 +35,11 @@ void add_figures_command(CLI::App& app) {
         int failures = 0;
         try {
             fs::create_directories(options->out);
-            Capture capture(parse_backend(options->backend));
+            Capture capture(make_headless_context(parse_backend(options->backend)));
             for (const auto& file : files) {
                 const std::string out = (fs::path(options->out) / file.stem()).string() + ".png";
                 try {
-                    capture.render_to_files(load_scene_file(file.string()), out, "");
+                    capture.render_to_files(load_scene_file(file.string(), LoadContext::trusted()), out, "");
                     std::cout << out << "\n";
                 } catch (const std::exception& error) {
                     std::cerr << "m3055: " << error.what() << "\n";

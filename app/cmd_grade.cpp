@@ -1,14 +1,14 @@
-// `m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR` (issue 14,
-// docs/grading.md): every submission rendered once, compared with the
-// assignment's reference, its rules checked, and grades.csv, grades.json,
-// report.html written. `--shard K/N` grades a deterministic share;
+// `m3055 grade ASSIGNMENT.json SUBMISSIONS/ --out DIR` (docs/grading.md):
+// every submission rendered once, compared with the assignment's reference,
+// its rules checked, and grades.csv, grades.json, report.html written. `--shard K/N` grades a deterministic share;
 // `--merge DIR...` joins the shards' outputs. The grading is grading/.
 // Exit 0: the run finished (whatever the scores); 1: it could not (bad
 // assignment, unusable reference or output folder); 2: usage.
-#include "capture.h"
 #include "commands.h"
+#include "headless_context.h"
+#include "capture/capture.h"
 #include "gl/program.h"
-#include "scene/json_brdf.h"
+#include "scene/load_context.h"
 #include "interrupt.h"
 #include "progress.h"
 
@@ -63,7 +63,9 @@ void print_folder(const nlohmann::json& folder) {
 // its reference earns every point of its rules, 1 otherwise.
 bool run_check(const GradeOptions& options) {
     const grading::Assignment assignment = grading::load_assignment(options.assignment);
-    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    // A .brdf file is code: the reference runs it only when the teacher asks.
+    const grading::AssignmentCheck check =
+        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
     for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
     for (const std::string& line : check.reference_fails) std::cerr << error_line(line) << "\n";
     const std::string name = text::quote_name(options.assignment);
@@ -89,7 +91,9 @@ void run_grade(const GradeOptions& options) {
     const grading::Assignment assignment = grading::load_assignment(options.assignment);
     // The assignment against its own reference: structural errors stop the
     // run before anything is written; rules the reference fails are said.
-    const grading::AssignmentCheck check = grading::check_assignment(assignment);
+    // A .brdf file is code: the reference runs it only when the teacher asks.
+    const grading::AssignmentCheck check =
+        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
     for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
     if (!check.errors.empty())
         throw std::runtime_error(text::quote_name(options.assignment) + ": " + std::to_string(check.errors.size()) +
@@ -103,12 +107,13 @@ void run_grade(const GradeOptions& options) {
     run.graded = print_grade;
     run.class_options.roster = options.roster;
     run.class_options.follow_symlinks = options.follow_symlinks;
+    run.allow_brdf = options.allow_brdf;
     std::unique_ptr<Capture> capture;  // made when the first scene is drawn
     const Backend backend = parse_backend(options.backend);
     const auto report = grading::run_grading(
         assignment, options.submissions,
         [&]() -> Renderer& {
-            if (!capture) capture = std::make_unique<Capture>(backend);
+            if (!capture) capture = std::make_unique<Capture>(make_headless_context(backend));
             return capture->renderer();
         },
         run);
@@ -155,8 +160,6 @@ void add_grade_command(CLI::App& app) {
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
     command->callback([options]() {
-        // A .brdf file is code: students' scenes run it only when the teacher asks.
-        scene_json::set_brdf_files_allowed(options->allow_brdf);
         // SIGINT, SIGTERM, SIGHUP: temporaries removed, images already graded kept,
         // no tables (they are written last), one line.
         const InterruptGuard interrupt([](int signal) {

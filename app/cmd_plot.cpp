@@ -42,7 +42,7 @@ void draw(const std::string& script, const std::string& png) {
     if (gnuplot.empty()) throw std::runtime_error("plot: no gnuplot on $PATH (Debian: gnuplot-nox); wrote " + gp.string());
     const std::string partial = "." + out.filename().string() + "." + std::to_string(getpid()) + ".partial";
     const fs::path dir = out.parent_path(), partial_path = dir / partial, log = dir / (partial + ".log");
-    const int status = bench::run_gnuplot(gnuplot, dir.string(), gp.string(), partial, log.string());
+    const int status = bench::run_gnuplot(gnuplot, gp.string(), partial_path.string(), log.string());
     const std::string message = status == 0 ? "" : bench::first_line(log.string());
     std::error_code ignored;
     fs::remove(log, ignored);
@@ -79,7 +79,7 @@ void plot_spectrum(const SpectrumOptions& o) {
     std::optional<Light> light;
     std::optional<Material> material;
     if (!o.scene.empty()) {
-        scene = load_scene_file(o.scene);
+        scene = load_scene_file(o.scene, LoadContext::trusted());
         if (!scene.lights.empty()) {
             if (o.light < 0 || o.light >= int(scene.lights.size()))
                 fail("--light " + std::to_string(o.light) + ": " + o.scene + " has lights 0 to " +

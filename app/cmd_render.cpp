@@ -1,9 +1,10 @@
 // `m3055 render`: one scene to PNG (and PFM), headless (docs/spec.md#8-command-line).
-#include "capture.h"
 #include "commands.h"
+#include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
 
+#include "capture/capture.h"
 #include "gl/program.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
@@ -51,9 +52,9 @@ void add_render_command(CLI::App& app) {
             if (!options->raw.empty()) files.add_output(0, "--raw", options->raw);
             if (const auto problems = files.check(); !problems.empty()) throw std::runtime_error(problems.begin()->second);
             const auto start = std::chrono::steady_clock::now();
-            const Scene scene = load_scene_file(options->scene, overrides);
+            const Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
             const auto loaded = std::chrono::steady_clock::now();
-            Capture capture(parse_backend(options->backend));
+            Capture capture(make_headless_context(parse_backend(options->backend)));
             // The budget covers loading and drawing, not making the GL context.
             capture.renderer().set_deadline(
                 scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));

@@ -10,8 +10,8 @@ void add_figures_command(CLI::App& app);  // app/cmd_figures.cpp
 void add_batch_command(CLI::App& app);    // app/cmd_batch.cpp
 void add_bench_command(CLI::App& app);    // app/cmd_bench.cpp
 void add_explore_command(CLI::App& app);  // app/cmd_explore.cpp
-void add_compare_command(CLI::App& app);  // app/cmd_compare.cpp (issue 14)
-void add_grade_command(CLI::App& app);    // app/cmd_grade.cpp (issue 14)
+void add_compare_command(CLI::App& app);  // app/cmd_compare.cpp
+void add_grade_command(CLI::App& app);    // app/cmd_grade.cpp
 void add_brdf_check_command(CLI::App& app);  // app/cmd_brdf_check.cpp
 void add_plot_command(CLI::App& app);        // app/cmd_plot.cpp
 void add_models_command(CLI::App& app);      // app/cmd_models.cpp

@@ -1,6 +1,6 @@
 // SIGINT (Ctrl-C), SIGTERM (what `timeout` and `kill` send) and SIGHUP (the
-// terminal or ssh session closed) during `m3055 render` or `m3055 batch`
-// (issue 11, class 7). All three are handled alike, at once, whatever the
+// terminal or ssh session closed) during `m3055 render` or `m3055 batch`.
+// All three are handled alike, at once, whatever the
 // command is doing (drawing, encoding, writing): every temporary file is
 // removed (image/temporary_files.h), files already renamed into place are
 // kept whole (a PNG and its PFM are renamed together, never one alone), one
@@ -39,7 +39,7 @@ private:
     std::thread watcher_;
 };
 
-// The last resort for issue 11, class 8: should a SIGBUS still happen (the
+// The last resort against a full disk under Mesa's shader cache: should a SIGBUS still happen (the
 // disk under Mesa's shader cache filling up during the run, after
 // disable_shader_cache_if_unusable() found room), the registered temporaries
 // are removed and one line says what probably happened, naming the cache

@@ -12,7 +12,7 @@
 # link to the folder. A library sees its own root and the roots of the libraries
 # it USES (and what they use): an #include of any other folder fails to compile.
 # The USES lists are the layering; docs/architecture.md shows them and
-# tests/repository_test.cpp fails when the two disagree (it reads
+# tests/layering_test.cpp fails when the two disagree (it reads
 # library_graph.txt, written below).
 function(m3055_library name)
   cmake_parse_arguments(ARG "" "FOLDER" "USES;EXTERNAL;PRIVATE_EXTERNAL;SOURCES;DESKTOP_ONLY" ${ARGN})

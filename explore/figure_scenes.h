@@ -1,5 +1,5 @@
 // The scenes/*.json files, embedded into the executable at build time by
-// cmake/embed_scenes.cmake, so the figure presets work from any directory.
+// cmake/embed_files.cmake, so the figure presets work from any directory.
 #pragma once
 
 #include <string>

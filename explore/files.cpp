@@ -4,7 +4,6 @@
 #include "explore/figure_scenes.h"
 #include "explore/operations.h"
 #include "image/image.h"
-#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
@@ -32,7 +31,7 @@ bool apply(Explorer& e, const command::LoadScene& c) {
     Messages& messages = e.session.messages;
     Scene scene;
     try {
-        scene = load_scene_file(c.path);
+        scene = load_scene_file(c.path, LoadContext::trusted());
     } catch (const std::exception& error) {  // SceneError names file and JSON path
         messages.error = messages.load_error = error.what();
         if (c.error_dialog) e.view.dialog = Dialog::load_error;
@@ -55,7 +54,7 @@ bool apply(Explorer& e, const command::LoadFigure& c) {
             const std::string source = "scenes/" + c.name + ".json";
             // Built in: no file of its own, unsaved once edited; Ctrl+S asks
             // where to save (proposing NAME.json, never the file of the scene it replaced).
-            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source), source,
+            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()), source,
                       "figure preset " + c.name);
             mark_saved(e.doc);
             e.session.messages.status = "figure preset " + c.name;
@@ -75,9 +74,7 @@ namespace {
 // The text of a saved scene file (Save, a screenshot's JSON): .brdf files
 // named as the platform asks (Platform::brdf_paths_relative_to).
 std::string scene_file_text(const Explorer& e) {
-    std::optional<scene_json::BrdfPathsRelativeTo> relative;
-    if (!e.session.platform.brdf_paths_relative_to.empty()) relative.emplace(e.session.platform.brdf_paths_relative_to);
-    return scene_to_json(e.doc.scene).dump(2) + "\n";
+    return scene_to_json(e.doc.scene, PathWriting{e.session.platform.brdf_paths_relative_to}).dump(2) + "\n";
 }
 
 std::string full_path(const std::string& path) {

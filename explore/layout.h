@@ -41,7 +41,7 @@ struct Layout {
 
 inline constexpr float kCompareGap = 8.0f;  // between the A and B displays
 // The side panel's width: at least kSideWidth, wider when its content needs
-// it (side_width; the panel's labels and text are never cut, issue 20 item 6),
+// it (side_width; the panel's labels and text are never cut),
 // but never so wide that one pane no longer fits at 1:1 beside it.
 inline constexpr float kSideWidth = 440.0f;
 

@@ -1,4 +1,4 @@
-// Non-finite pixels in the explorer (issue 19 item 3): a .brdf material can
+// Non-finite pixels in the explorer: a .brdf material can
 // make NaN or infinite values, which the display's quantization turns into
 // some level or other, so the picture alone never shows them. After a render
 // of a scene that can hold them (analysis/nonfinite.h: may_render_nonfinite),

@@ -237,9 +237,9 @@ bool apply(Explorer& e, const command::CompareFresnel&) {
 // ---- Any scene value --------------------------------------------------------------------
 
 bool apply(Explorer& e, const command::SetSceneValue& c) {
-    nlohmann::json doc = scene_to_json(e.doc.scene);
+    nlohmann::json doc = scene_to_json(e.doc.scene, PathWriting::absolute());
     apply_overrides(doc, {{c.path, c.value}}, "script");
-    const Scene after = scene_from_json(doc, "script");
+    const Scene after = scene_from_json(doc, "script", LoadContext::trusted());
     for (EditValue& edit : edits_between(e, e.doc.scene, after)) edit_document(e, {std::move(edit), ""});
     selected_material(e);
     clamp_light_selection(e);

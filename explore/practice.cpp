@@ -53,7 +53,7 @@ grading::Grade timed_grade(const grading::Assignment& assignment, const Scene& s
 
 Practice::Practice(grading::Assignment assignment, Renderer* renderer, bool allow_brdf)
     : assignment_(std::move(assignment)), allow_brdf_(allow_brdf) {
-    reference_ = grading::load_reference(assignment_, renderer, &shown_);
+    reference_ = grading::load_reference(assignment_, LoadContext::trusted(), renderer, &shown_);
 }
 
 PracticeStatus Practice::start_status() const {
@@ -129,7 +129,7 @@ grading::Assignment open_assignment(Explorer& e, const std::string& path, bool s
     if (!scene_given && !assignment.start.empty()) {
         Scene start;
         try {
-            start = load_scene_file(assignment.start);
+            start = load_scene_file(assignment.start, LoadContext::trusted());
         } catch (const std::exception& e) {  // the loader names the scene; say which field named it
             throw std::runtime_error(text::quote_name(path) + ": start: " + text::one_line(e.what()));
         }

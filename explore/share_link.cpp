@@ -1,11 +1,9 @@
 #include "explore/share_link.h"
 
 #include "io/input_file.h"
-#include "scene/json_brdf.h"
 #include "scene/load.h"
 
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <zlib.h>
 
 #include <algorithm>
@@ -130,12 +128,7 @@ std::string inflate_token(const std::string& token) {
 }  // namespace
 
 std::string share_token(const Scene& scene, const std::string& folder) {
-    json doc;
-    {
-        std::optional<scene_json::BrdfPathsRelativeTo> relative;
-        if (!folder.empty()) relative.emplace(folder);
-        doc = scene_to_json(scene);
-    }
+    const json doc = scene_to_json(scene, PathWriting{folder});
     json files = json::object();
     for (const json& object : doc.value("objects", json::array())) {
         const json& material = object.value("material", json::object());

@@ -24,7 +24,7 @@ inline constexpr std::size_t kMaxShareTokenChars = 2000000 - 4096;
 
 // The token of `scene`: base64url(zlib(text)), the text the compact scene
 // JSON, or the bundle when a material is a .brdf file: each named by its path
-// relative to `folder` (scene_json::BrdfPathsRelativeTo; the page's work
+// relative to `folder` (PathWriting, scene/load_context.h; the page's work
 // folder) and read from there. Throws std::runtime_error with one line
 // ("share link: ...") when a .brdf file is outside `folder` or unreadable, or
 // the token would be longer than kMaxShareTokenChars.

@@ -1,4 +1,4 @@
-// The explorer's A/B split read-outs (issue 12), ImGui-free so tests can hold
+// The explorer's A/B split read-outs, ImGui-free so tests can hold
 // them against headless renders:
 //   - level_difference: how many pixels of B show another display level than
 //     A (any channel), through level_compare.h's compare_levels, the comparison

@@ -46,7 +46,7 @@ std::string objects_text(std::size_t count) {
 
 }  // namespace
 
-AssignmentCheck check_assignment(const Assignment& a) {
+AssignmentCheck check_assignment(const Assignment& a, const LoadContext& context) {
     AssignmentCheck out;
     const std::string source = text::quote_name(a.path);
     const auto error = [&](const std::string& field, const std::string& problem) {
@@ -56,7 +56,7 @@ AssignmentCheck check_assignment(const Assignment& a) {
     int bits = 5;  // an image reference is read as the M3055's 5 bits
     std::optional<Scene> scene;
     if (input_kind(a.reference) == InputKind::scene) {
-        scene = load_scene_file(a.reference);
+        scene = load_scene_file(a.reference, context);
         bits = scene->display.bits;
         out.reference_is_scene = true;
     }
@@ -71,7 +71,7 @@ AssignmentCheck check_assignment(const Assignment& a) {
         error("image.fail_percent", "100 lets every render pass; less than 100");
     if (scene && a.image_objects_only && scene->objects.empty())
         error("image.region", "\"objects\" with a reference scene without objects: no pixel would be compared");
-    const nlohmann::json document = scene ? scene_to_json(*scene) : nlohmann::json();
+    const nlohmann::json document = scene ? scene_to_json(*scene, PathWriting::absolute()) : nlohmann::json();
     for (std::size_t i = 0; i < a.rules.size(); ++i) {
         const Rule& rule = a.rules[i];
         const std::string field = "rules[" + std::to_string(i) + "]";

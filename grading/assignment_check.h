@@ -1,4 +1,4 @@
-// `m3055 grade --check ASSIGNMENT.json` (issue 19 item 7): an assignment
+// `m3055 grade --check ASSIGNMENT.json`: an assignment
 // checked against its own reference before any student meets it. Structural
 // errors (a model name that does not exist, a path that does not resolve in
 // the reference scene, an object index or light name that is not there, an
@@ -9,6 +9,7 @@
 #pragma once
 
 #include "grading/assignment.h"
+#include "scene/load_context.h"
 
 #include <string>
 #include <vector>
@@ -24,9 +25,9 @@ struct AssignmentCheck {
     double reference_score = 0;       // the points the reference earns from the rules (image: all of its points)
 };
 
-// Loads the reference scene (when the reference is one; no rendering) and
-// checks `assignment` against it. Throws (one line) when the reference cannot
-// be read.
-AssignmentCheck check_assignment(const Assignment& assignment);
+// Loads the reference scene (when the reference is one; no rendering) as
+// `context` allows and checks `assignment` against it. Throws (one line) when
+// the reference cannot be read.
+AssignmentCheck check_assignment(const Assignment& assignment, const LoadContext& context);
 
 }  // namespace m3055::grading

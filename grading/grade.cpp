@@ -91,14 +91,15 @@ std::vector<std::string> Grade::reasons() const {
     return out;
 }
 
-LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display) {
+LevelImage load_reference(const Assignment& assignment, const LoadContext& context, Renderer* renderer,
+                          Rgb8Image* display) {
     if (input_kind(assignment.reference) != InputKind::scene) {
         LevelImage image = read_level_image(assignment.reference, 5);
         // A PNG is shown as it is, a PFM as the display would show it.
         if (display) *display = input_kind(assignment.reference) == InputKind::png ? read_png(assignment.reference) : display_of(image);
         return image;
     }
-    const Scene scene = load_scene_file(assignment.reference);
+    const Scene scene = load_scene_file(assignment.reference, context);
     if (!renderer) throw std::logic_error("load_reference: a scene reference needs a renderer");
     renderer->set_deadline(std::nullopt);
     renderer->render(scene);
@@ -132,7 +133,7 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
         grade.checks.push_back({"image", assignment.image_points, 0.0, false, std::string("image: ") + e.what() +
                                                                          " (A the reference, B the submission)"});
     }
-    const nlohmann::json document = scene_to_json(scene);
+    const nlohmann::json document = scene_to_json(scene, PathWriting::absolute());
     for (const Rule& rule : assignment.rules) grade.checks.push_back(check_rule(rule, scene, document));
     total(grade, assignment);
     return grade;

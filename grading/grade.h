@@ -1,4 +1,4 @@
-// Grading one submitted scene against an assignment (issue 14). grade_one is
+// Grading one submitted scene against an assignment. grade_one is
 // what `m3055 grade` runs for every student, and what the explorer can call
 // with its own renderer to show a student the score and reasons `grade` would
 // give, live: the same code, not a copy.
@@ -9,6 +9,7 @@
 #include "analysis/nonfinite.h"
 #include "grading/rules.h"
 #include "frame/renderer.h"
+#include "scene/load_context.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -34,9 +35,11 @@ struct Grade {
 };
 
 // The assignment's reference as levels: its image read (at 5 bits), or its
-// scene rendered with `renderer` (needed only then; no deadline). The image
-// shown for it (the PNG, or the render) is left in *display when given.
-LevelImage load_reference(const Assignment& assignment, Renderer* renderer, Rgb8Image* display = nullptr);
+// scene, loaded as `context` allows, rendered with `renderer` (needed only
+// then; no deadline). The image shown for it (the PNG, or the render) is left
+// in *display when given.
+LevelImage load_reference(const Assignment& assignment, const LoadContext& context, Renderer* renderer,
+                          Rgb8Image* display = nullptr);
 
 // Scores a scene whose render is `render` (levels_from_render of it).
 // `nonfinite`: the render's pixels that are NaN or infinite (before the

@@ -2,22 +2,15 @@
 
 #include "grading/diff_image.h"
 #include "grading/image_input.h"
-#include "gl/program.h"
+#include "frame/render_error.h"
 #include "image/image.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
-#include "passes/draw_chunks.h"
 #include "scene/json_brdf.h"
 #include "scene/json_parse.h"
 #include "scene/load.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <optional>
 #include <chrono>
 #include <deque>
@@ -103,43 +96,18 @@ struct Graded {
 
 Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
                               const std::function<Renderer&()>& renderer, const LevelImage& reference,
-                              const std::string& out_dir, const std::string& class_dir);
+                              const std::string& out_dir, const std::string& class_dir, const LoadContext& scenes);
 
 // Grades one submission: score 0 and its one-line reason for whatever is
 // wrong with it; its notes (roster, links, identical files) carried over.
 Graded grade_submission(const Assignment& assignment, const Submission& s, const std::function<Renderer&()>& renderer,
-                        const LevelImage& reference, const std::string& out_dir, const std::string& class_dir) {
-    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir, class_dir);
+                        const LevelImage& reference, const std::string& out_dir, const std::string& class_dir,
+                        const LoadContext& scenes) {
+    Graded graded = grade_submission_alone(assignment, s, renderer, reference, out_dir, class_dir, scenes);
     graded.grade.missing = s.missing;
     graded.grade.notes = s.notes;
     return graded;
 }
-
-// While one lives, the working folder is the class folder, so that every
-// message of the loader names the submission's files relative to it
-// ("alice/scene.json"), never with the path the teacher typed: the same
-// reasons on every node of a cluster, however each spells the path. Only
-// loading runs in it (rendering and the writer threads never depend on the
-// working folder: the output paths are absolute).
-class InClassFolder {
-public:
-    explicit InClassFolder(const std::string& folder) : saved_(::open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
-        if (saved_ < 0 || ::chdir(folder.c_str()) != 0) {
-            if (saved_ >= 0) ::close(saved_);
-            throw std::runtime_error(text::quote_name(folder) + ": cannot enter the submissions folder: " +
-                                     std::strerror(errno));
-        }
-    }
-    ~InClassFolder() {
-        if (::fchdir(saved_) != 0) std::perror("m3055: cannot return to the working folder");
-        ::close(saved_);
-    }
-    InClassFolder(const InClassFolder&) = delete;
-    InClassFolder& operator=(const InClassFolder&) = delete;
-
-private:
-    int saved_;
-};
 
 std::string relative_to(const std::string& path, const std::string& folder) {
     return path.empty() ? path : fs::path(path).lexically_relative(folder).string();
@@ -147,25 +115,27 @@ std::string relative_to(const std::string& path, const std::string& folder) {
 
 Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
                               const std::function<Renderer&()>& renderer, const LevelImage& reference,
-                              const std::string& out_dir, const std::string& class_dir) {
+                              const std::string& out_dir, const std::string& class_dir, const LoadContext& scenes) {
     if (!s.problem.empty()) return {broken_grade(assignment, s.student, s.problem), {}};
+    // Every message names the submission's files relative to the class folder
+    // ("alice/scene.json"), never with the path the teacher typed: the same
+    // reasons on every node of a cluster, however each spells the path.
     const std::string scene_path = relative_to(s.scene, class_dir);
+    LoadContext submission = scenes;
+    submission.folder = class_dir;
+    // Nothing outside the submission is read: its .brdf files are its own.
+    submission.confinement = Confinement{relative_to(s.folder, class_dir), scene_json::kBrdfNeedsAFolder};
     try {
         const auto start = std::chrono::steady_clock::now();
-        Scene scene;
+        const Scene scene = load_scene_file(scene_path, submission);
         std::optional<LevelImage> screenshot;
         std::string screenshot_error;
-        {
-            const InClassFolder in_class(class_dir);
-            // Nothing outside the submission is read: its .brdf files are its own.
-            const scene_json::BrdfConfinement confined(relative_to(s.folder, class_dir), scene_json::kBrdfNeedsAFolder);
-            scene = load_scene_file(scene_path);
-            if (!s.screenshot.empty()) try {
-                    screenshot = read_level_image(relative_to(s.screenshot, class_dir), scene.display.bits);
-                } catch (const std::exception& e) {
-                    screenshot_error = e.what();
-                }
-        }
+        if (!s.screenshot.empty()) try {
+                screenshot = read_level_image(io::InputPath::in_folder(class_dir, relative_to(s.screenshot, class_dir)),
+                                              scene.display.bits);
+            } catch (const std::exception& e) {
+                screenshot_error = e.what();
+            }
         Renderer& r = renderer();
         if (assignment.time_budget_s > 0)
             r.set_deadline(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -247,8 +217,7 @@ void write_tables(const std::string& out_dir, const GradeReport& report, const s
 
 GradeReport run_grading(const Assignment& assignment, const std::string& submissions_dir,
                         const std::function<Renderer&()>& renderer, const GradeRunOptions& given) {
-    // Absolute output paths: the loading of each submission runs inside the
-    // class folder (InClassFolder) while writer threads write.
+    // Output paths absolute, as the messages about them name them.
     GradeRunOptions options = given;
     options.out_dir = fs::absolute(given.out_dir).string();
     if (!given.gradescope.empty()) options.gradescope = fs::absolute(given.gradescope).string();
@@ -271,13 +240,15 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
               all.end());
     const std::vector<Submission> mine = take_shard(all, options.shard);
     prepare_out_dir(options.out_dir);
+    // The teacher's reference and the students' scenes: a .brdf file is code.
+    const LoadContext scenes = LoadContext::for_class(options.allow_brdf);
     Rgb8Image reference_display;
     // Made only for a scene reference: a folder of broken submissions graded
     // against a PNG never needs a GL context.
     const LevelImage reference =
         input_kind(assignment.reference) == InputKind::scene
-            ? load_reference(assignment, &renderer(), &reference_display)
-            : load_reference(assignment, nullptr, &reference_display);
+            ? load_reference(assignment, scenes, &renderer(), &reference_display)
+            : load_reference(assignment, scenes, nullptr, &reference_display);
     write_png(join(options.out_dir, "reference.png"), reference_display);
 
     GradeReport report;
@@ -308,7 +279,7 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
     std::deque<Writing> writing;
     std::size_t bytes_in_flight = 0;
     for (const Submission& s : mine) {
-        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir, class_dir);
+        Graded graded = grade_submission(assignment, s, renderer, reference, options.out_dir, class_dir, scenes);
         const Grade& grade = graded.grade;
         json entry = grade_json(grade, grade.broken.empty() ? s.file_stem : "");
         entry["feedback"] = "feedback/" + s.file_stem + ".html";

@@ -22,6 +22,7 @@ struct GradeRunOptions {
     Shard shard;                                // 1/1: every submission
     std::string gradescope;                     // also write this results.json, or ""
     ClassOptions class_options;                 // --roster, --follow-symlinks
+    bool allow_brdf = false;                    // --allow-brdf: .brdf materials (code) accepted
     std::function<void(const Grade&)> graded;  // after each submission (progress)
 };
 

@@ -20,13 +20,13 @@ bool ends_with_nocase(const std::string& text, const std::string& end) {
                       [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
 }
 
-void require_regular_file(const std::string& path) {
+void require_regular_file(const io::InputPath& file) {
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0)
-        throw io::InputError(text::quote_name(path) + ": cannot read: " + std::strerror(errno));
+    if (::stat(file.path.c_str(), &info) != 0)
+        throw io::InputError(text::quote_name(file.shown) + ": cannot read: " + std::strerror(errno));
     if (!S_ISREG(info.st_mode))
-        throw io::InputError(text::quote_name(path) + ": cannot read: it is " + io::describe_file_type(info.st_mode) +
-                             ", not a regular file");
+        throw io::InputError(text::quote_name(file.shown) + ": cannot read: it is " +
+                             io::describe_file_type(info.st_mode) + ", not a regular file");
 }
 
 }  // namespace
@@ -38,9 +38,13 @@ InputKind input_kind(const std::string& path) {
 }
 
 LevelImage read_level_image(const std::string& path, int bits) {
-    require_regular_file(path);
-    if (input_kind(path) == InputKind::pfm) return levels_from_pfm(read_pfm(path), bits);
-    return levels_from_png(read_png(path), bits);
+    return read_level_image(io::InputPath::as_given(path), bits);
+}
+
+LevelImage read_level_image(const io::InputPath& file, int bits) {
+    require_regular_file(file);
+    if (input_kind(file.shown) == InputKind::pfm) return levels_from_pfm(read_pfm(file), bits);
+    return levels_from_png(read_png(file), bits);
 }
 
 LevelImage render_levels(Renderer& renderer, const Scene& scene, bool linear) {

@@ -5,6 +5,7 @@
 
 #include "grading/level_compare.h"
 #include "frame/renderer.h"
+#include "io/input_path.h"
 #include "scene/scene.h"
 
 #include <string>
@@ -19,6 +20,8 @@ InputKind input_kind(const std::string& path);
 // io::InputError) with one line naming the file; a path that is not a regular
 // file is refused before it is opened (a FIFO would block the read).
 LevelImage read_level_image(const std::string& path, int bits);
+// The same for a file opened at `file.path`, every message naming `file.shown`.
+LevelImage read_level_image(const io::InputPath& file, int bits);
 
 // Renders `scene` with `renderer` (its deadline, if any, applies) and returns
 // the display's levels and, with `linear`, the linear colour (a second

@@ -1,4 +1,4 @@
-// The difference legend's text in a real font (issue 19 item 8: the 3 x 5
+// The difference legend's text in a real font (the 3 x 5
 // pixel glyphs were unreadable at the size the report shows the image):
 // DejaVu Sans (fonts-dejavu-core, scripts/setup) rasterized by stb_truetype
 // (libstb-dev), anti-aliased white on the legend's black band.

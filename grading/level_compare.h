@@ -1,4 +1,4 @@
-// Comparing two images at the display's own precision (issue 14): what a
+// Comparing two images at the display's own precision: what a
 // teacher needs to know about a student's render is how many pixels land on a
 // different level of the emulated display, and by how many levels; with the
 // linear (PFM) colour also the classic max / mean / RMS difference and PSNR.

@@ -1,4 +1,4 @@
-// The score histogram at the top of report.html (issue 19 item 8): ten bars
+// The score histogram at the top of report.html: ten bars
 // over [0, max], drawn by gnuplot (gnuplot-nox, scripts/setup) as SVG that the
 // page inlines. Without gnuplot, or when it fails, the report says so in one
 // line and grading goes on: the picture is a convenience, the table holds

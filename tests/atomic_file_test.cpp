@@ -1,4 +1,4 @@
-// image/atomic_file.cpp against untrusted output names (issue 11, class 3):
+// image/atomic_file.cpp against untrusted output names:
 // only regular files or new names are written, a legal long name gets a
 // temporary that fits, and every temporary is registered for an interrupt.
 #include "image/image.h"

@@ -1,5 +1,5 @@
 // `m3055 batch --out DIR` over folders and glob patterns, `--report` and
-// `--shard K/N` (issue 14): outputs named after the scenes, byte-identical to
+// `--shard K/N`: outputs named after the scenes, byte-identical to
 // `m3055 render`, a report line per scene, and shards that cover every scene once.
 #include "test_support.h"
 

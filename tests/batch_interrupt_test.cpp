@@ -1,4 +1,4 @@
-// Ctrl-C (SIGINT), SIGTERM and SIGHUP during `m3055 batch` (issues 6 and 11):
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP during `m3055 batch`:
 // the batch ends at once by the signal with one line saying how far it got,
 // keeps every finished file whole (a PNG and its PFM together), and leaves no
 // half-written file and no temporary file. tests/untrusted_signals_test.cpp

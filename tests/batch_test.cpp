@@ -114,7 +114,7 @@ TEST(Batch, BadManifestIsRejectedBeforeRendering) {
 }
 
 // Two entries writing one file: both are errors naming each other, neither is
-// written, and the rest of the batch still renders (tests/untrusted_files_test.cpp
+// written, and the rest of the batch still renders (tests/untrusted_output_test.cpp
 // has the other ways two names can be one file).
 TEST(Batch, EntriesWritingOneFileAreBothSkipped) {
     TempDir dir;

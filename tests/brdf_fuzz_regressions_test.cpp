@@ -1,6 +1,6 @@
 // Re-checks, in every build, the .brdf fuzzer's seeds (tests/data/brdf/) and
-// any input it once failed on (tests/fuzz/brdf_regressions/) with its own
-// property (tests/fuzz/brdf_fuzz_check.h).
+// any input it once failed on (brdf_regressions/ in tests/fuzz/, once there
+// is one) with its own property (tests/fuzz/brdf_fuzz_check.h).
 #include "fuzz/brdf_fuzz_check.h"
 
 #include "test_support.h"

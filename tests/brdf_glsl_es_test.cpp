@@ -1,4 +1,4 @@
-// .brdf files as people write them, compiled as GLSL ES 3.00 (WebGL2, issue 21):
+// .brdf files as people write them, compiled as GLSL ES 3.00 (WebGL2):
 // the translator's conversions one by one (brdf_file/brdf_glsl_es.h), then
 // whole files loaded as the renderer loads them, composed for GlslTarget::es
 // and validated by glslangValidator's ES profile, and a broken file's error

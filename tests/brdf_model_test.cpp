@@ -166,7 +166,7 @@ json scene_with(const json& material) {
 std::string load_error(const test::TempDir& dir, const json& material) {
     test::write_text(dir.file("s.json"), scene_with(material).dump());
     try {
-        load_scene_file(dir.file("s.json"));
+        load_scene_file(dir.file("s.json"), LoadContext::trusted());
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -178,14 +178,15 @@ TEST(BrdfScene, FileIsRelativeToTheSceneAndParamsDefaultToTheFiles) {
     test::write_text(dir.file("g.brdf"), test::read_text(data_file("ggx_schlick.brdf")));
     test::write_text(dir.file("s.json"),
                      scene_with({{"model", "brdf"}, {"file", "g.brdf"}, {"params", {{"m", 0.2}}}}).dump());
-    const Scene scene = load_scene_file(dir.file("s.json"));
+    const Scene scene = load_scene_file(dir.file("s.json"), LoadContext::trusted());
     const Material& m = scene.objects.at(0).material;
     const BrdfModel* model = find_brdf_model(m.model());
     ASSERT_NE(model, nullptr);
     EXPECT_EQ(m.number(model->field("m")), 0.2);
     EXPECT_EQ(m.number(model->field("ior")), 1.5);
     // Written back: the same material again.
-    const Scene again = scene_from_json(scene_to_json(scene), "again.json");
+    const Scene again =
+        scene_from_json(scene_to_json(scene, PathWriting::absolute()), "again.json", LoadContext::trusted());
     EXPECT_EQ(again.objects.at(0).material, m);
 }
 

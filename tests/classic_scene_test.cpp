@@ -24,12 +24,12 @@ json base_scene(json material) {
 }
 
 Material load_material(const json& material) {
-    return scene_from_json(base_scene(material), "scene.json").objects.at(0).material;
+    return scene_from_json(base_scene(material), "scene.json", LoadContext::trusted()).objects.at(0).material;
 }
 
 std::string error_of(const json& doc) {
     try {
-        scene_from_json(doc, "scene.json");
+        scene_from_json(doc, "scene.json", LoadContext::trusted());
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -143,10 +143,11 @@ TEST(ClassicScene, LectureAmbientFields) {
     json doc = base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}});
     doc["ambient"] = {0.1, 0.2, 0.3};
     doc["lights"][0]["ambient"] = {0.4, 0.5, 0.6};
-    const Scene scene = scene_from_json(doc, "scene.json");
+    const Scene scene = scene_from_json(doc, "scene.json", LoadContext::trusted());
     expect_vec(scene.ambient, {0.1, 0.2, 0.3});
     expect_vec(scene.lights[0].ambient, {0.4, 0.5, 0.6});
-    const Scene plain = scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "scene.json");
+    const Scene plain =
+        scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "scene.json", LoadContext::trusted());
     expect_vec(plain.ambient, {0, 0, 0});
     expect_vec(plain.lights[0].ambient, {0, 0, 0});
 }
@@ -217,8 +218,9 @@ TEST(ClassicScene, RoundTripIsExact) {
         more["material"] = material;
         doc["objects"].push_back(more);
     }
-    const Scene a = scene_from_json(doc, "scene.json");
-    const Scene b = scene_from_json(scene_to_json(a), "roundtrip.json");
+    const Scene a = scene_from_json(doc, "scene.json", LoadContext::trusted());
+    const Scene b =
+        scene_from_json(scene_to_json(a, PathWriting::absolute()), "roundtrip.json", LoadContext::trusted());
     expect_vec(b.ambient, a.ambient);
     expect_vec(b.lights[0].ambient, a.lights[0].ambient);
     ASSERT_EQ(a.objects.size(), b.objects.size());
@@ -229,7 +231,9 @@ TEST(ClassicScene, RoundTripIsExact) {
         EXPECT_TRUE(test::same_material(x, y));  // the model and every parameter, exactly
     }
     // Scenes without the lecture's ambient write no "ambient" key (old files unchanged).
-    const json plain = scene_to_json(scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "s.json"));
+    const json plain = scene_to_json(
+        scene_from_json(base_scene({{"model", "lambert"}, {"kd", {1, 1, 1}}}), "s.json", LoadContext::trusted()),
+        PathWriting::absolute());
     EXPECT_FALSE(plain.contains("ambient"));
     EXPECT_FALSE(plain["lights"][0].contains("ambient"));
 }

@@ -121,7 +121,7 @@ TEST_P(IndependentReference, PngAndRawMatchTheReferenceImages) {
 
     // PNG bytes hold 8-bit values of 5-bit (display.bits) levels, so compare
     // levels: level = round(byte * max_level / 255).
-    const Scene scene = load_scene_file(reference_file(GetParam() + ".json"));
+    const Scene scene = load_scene_file(reference_file(GetParam() + ".json"), LoadContext::trusted());
     const int max_level = (1 << scene.display.bits) - 1;
     const long pixels = long(want_png.width) * want_png.height;
     long one_off = 0, worse = 0;
@@ -223,7 +223,7 @@ TEST(AllScenes, EveryRepositorySceneRendersWithoutNanOrInf) {
     ASSERT_GE(scenes.size(), 10u);  // fig05..fig13 + spec_example
     for (const auto& scene : scenes) {
         const Rendered r = render_ok(scene.string(), out.path(), scene.stem().string());
-        const Scene loaded = load_scene_file(scene.string());
+        const Scene loaded = load_scene_file(scene.string(), LoadContext::trusted());
         EXPECT_EQ(r.png.width, loaded.display.width) << scene;
         EXPECT_EQ(r.png.height, loaded.display.height) << scene;
         EXPECT_EQ(r.raw.width, loaded.display.width) << scene;
@@ -402,7 +402,7 @@ TEST(FiguresCommand, WritesOnePngPerFigureScene) {
     std::sort(want.begin(), want.end());
     EXPECT_EQ(files_in(folder), want);
     for (const auto& scene : scenes) {
-        const Scene loaded = load_scene_file(scene.string());
+        const Scene loaded = load_scene_file(scene.string(), LoadContext::trusted());
         const Rgb8Image png = read_png(folder + "/" + scene.stem().string() + ".png");
         EXPECT_EQ(png.width, loaded.display.width) << scene;
         EXPECT_EQ(png.height, loaded.display.height) << scene;

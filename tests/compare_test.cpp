@@ -1,4 +1,4 @@
-// `m3055 compare` and grading/level_compare (issue 14): level
+// `m3055 compare` and grading/level_compare: level
 // differences counted exactly on crafted images, thresholds at their edges,
 // the exit codes, and PNG vs PFM vs scene of the same picture.
 #include "grading/comparison_json.h"

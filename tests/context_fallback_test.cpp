@@ -1,4 +1,4 @@
-// Failure paths of the headless context (docs/spec.md#8-command-line, issue 6):
+// Failure paths of the headless context (docs/spec.md#8-command-line):
 // - neither EGL nor OSMesa can be opened: one line naming what to install, exit 1;
 // - an EGL that offers no OpenGL 3.3 core context (tests/fakes/fake_egl.c):
 //   m3055 falls back to OSMesa and renders the same bytes.

@@ -1,4 +1,4 @@
-// Whether `m3055 explore` is in the build, as the build says (issue 10):
+// Whether `m3055 explore` is in the build, as the build says:
 // - built with the explorer (-DM3055_BUILD_EXPLORER=ON, the default), the
 //   subcommand has its options; scripts/run probes `explore --help` for them;
 // - built without it (OFF: no GLFW, no ImGui), `m3055 explore` with any

@@ -29,12 +29,12 @@ TEST(ExploreCompare, EditingADoesNotChangeB) {
 
 TEST(ExploreCompare, EditingBDoesNotChangeTheScene) {
     Explorer explorer = started();
-    const nlohmann::json scene = scene_to_json(explorer.doc.scene);
+    const nlohmann::json scene = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     run(explorer, command::SetMaterial{kMaterialB, with_model_named(explorer.doc.material_b, "metal_blinn"), ""});
     Material b = explorer.doc.material_b;
     b.set_number("d", 0.3);
     run(explorer, command::SetMaterial{kMaterialB, b, ""});
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), scene);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), scene);
     EXPECT_EQ(explorer.doc.material_b.number("d"), 0.3);
     EXPECT_EQ(compare_scene(explorer).objects[0].material, explorer.doc.material_b) << "B's scene wears B";
 }
@@ -51,7 +51,7 @@ TEST(ExploreCompare, SplitOnAndOffKeepsB) {
     EXPECT_FALSE(commit_edits(explorer)) << "the split is a view, no undo step";
 }
 
-// Issue 20, item 8: a B nobody has set is a copy of A when the split is
+// A B nobody has set is a copy of A when the split is
 // first switched on (object 1 selected, a metal: not object 0's highlight).
 TEST(ExploreCompare, SplitOnCopiesAIntoAnUntouchedB) {
     Explorer explorer = started();

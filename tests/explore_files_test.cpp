@@ -49,7 +49,7 @@ TEST(ExploreFiles, SavedSceneLoadsBackEqual) {
 
     Explorer other = started();
     ASSERT_TRUE(run(other, command::LoadScene{file})) << other.session.messages.error;
-    EXPECT_EQ(scene_to_json(other.doc.scene), scene_to_json(explorer.doc.scene));
+    EXPECT_EQ(scene_to_json(other.doc.scene, PathWriting::absolute()), scene_to_json(explorer.doc.scene, PathWriting::absolute()));
     EXPECT_FALSE(unsaved(other.doc));
     EXPECT_EQ(other.session.messages.status, "loaded " + file);
 }
@@ -62,7 +62,7 @@ TEST(ExploreFiles, EveryFigurePresetLoadsAndRoundTrips) {
         ASSERT_TRUE(run(explorer, command::LoadFigure{name})) << name << ": " << explorer.session.messages.error;
         const std::string file = (dir / (std::string(name) + ".json")).string();
         ASSERT_TRUE(run(explorer, command::SaveTo{file})) << explorer.session.messages.error;
-        EXPECT_EQ(scene_to_json(load_scene_file(file)), scene_to_json(explorer.doc.scene)) << name;
+        EXPECT_EQ(scene_to_json(load_scene_file(file, LoadContext::trusted()), PathWriting::absolute()), scene_to_json(explorer.doc.scene, PathWriting::absolute())) << name;
     }
     Explorer explorer = started();
     EXPECT_FALSE(run(explorer, command::LoadFigure{"fig99"}));
@@ -71,10 +71,10 @@ TEST(ExploreFiles, EveryFigurePresetLoadsAndRoundTrips) {
 
 TEST(ExploreFiles, ABadFileKeepsTheSceneAndSaysWhy) {
     Explorer explorer = started();
-    const nlohmann::json before = scene_to_json(explorer.doc.scene);
+    const nlohmann::json before = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     const std::string bad = std::string(M3055_SOURCE_DIR) + "/tests/data/bad_scenes/material_m_negative.json";
     EXPECT_FALSE(run(explorer, command::LoadScene{bad}));
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), before);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), before);
     EXPECT_NE(explorer.session.messages.load_error.find("objects[0].material.m"), std::string::npos) << explorer.session.messages.load_error;
     EXPECT_EQ(explorer.session.messages.error, explorer.session.messages.load_error);
     EXPECT_FALSE(commit_edits(explorer)) << "a failed load is no step";
@@ -88,12 +88,12 @@ TEST(ExploreFiles, ALoadIsOneUndoStepBackToThePreviousScene) {
     ASSERT_TRUE(run(explorer, command::SaveTo{file}));
     ASSERT_TRUE(run(explorer, command::LoadFigure{"fig05"}));
     commit_edits(explorer);
-    const nlohmann::json fig05 = scene_to_json(explorer.doc.scene);
+    const nlohmann::json fig05 = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     ASSERT_TRUE(run(explorer, command::LoadScene{file}));
     commit_edits(explorer);
     EXPECT_EQ(explorer.doc.history.undo_label(), "load " + file);
     ASSERT_TRUE(run(explorer, command::Undo{}));
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), fig05);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), fig05);
     EXPECT_EQ(explorer.doc.name, "scenes/fig05.json");
 }
 
@@ -114,7 +114,7 @@ TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     Explorer plain;
     EXPECT_FALSE(start_scene(plain, "", ""));
     EXPECT_EQ(plain.doc.name, "spec example");
-    EXPECT_EQ(scene_to_json(plain.doc.scene), scene_to_json(default_scene()));
+    EXPECT_EQ(scene_to_json(plain.doc.scene, PathWriting::absolute()), scene_to_json(default_scene(), PathWriting::absolute()));
     EXPECT_FALSE(unsaved(plain.doc));
     EXPECT_FALSE(plain.doc.history.can_undo());
 
@@ -126,7 +126,7 @@ TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     EXPECT_FALSE(start_scene(named, file, ""));
     EXPECT_EQ(named.doc.file, file);
     EXPECT_EQ(named.doc.name, file);
-    EXPECT_EQ(scene_to_json(named.doc.scene), scene_to_json(saved.doc.scene));
+    EXPECT_EQ(scene_to_json(named.doc.scene, PathWriting::absolute()), scene_to_json(saved.doc.scene, PathWriting::absolute()));
     EXPECT_FALSE(unsaved(named.doc));
 
     Explorer missing;
@@ -141,7 +141,7 @@ TEST(ExploreFiles, SaveIntoAMissingFolderFailsAndKeepsTheScenesFile) {
     EXPECT_EQ(explorer.doc.file, "");
 }
 
-// Issue 20, item 10: Save As proposes the scene's own file, or (a figure
+// Save As proposes the scene's own file, or (a figure
 // preset loaded since) the preset's name in the folder of the last file, never
 // m3055-scene.json in the working folder.
 TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
@@ -157,7 +157,7 @@ TEST(ExploreFiles, SaveAsProposesTheScenesOwnNameAndFolder) {
     EXPECT_EQ(explorer.view.save_path, (dir / "fig10.json").string()) << "the preset's name, the last file's folder";
 }
 
-// Issue 21: the page saves a scene naming its .brdf file as the user named it
+// The page saves a scene naming its .brdf file as the user named it
 // (relative to the page's work folder, where the picked files are), so the
 // downloaded JSON renders next to the downloaded .brdf; the desktop keeps the
 // absolute path; a .brdf outside the folder stays absolute in the page too.

@@ -55,19 +55,19 @@ TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
 
 TEST(ExploreKeys, APlainDigitNeverReplacesTheSceneEditedOrNot) {
     Explorer explorer = started();
-    const nlohmann::json fresh = scene_to_json(explorer.doc.scene);
+    const nlohmann::json fresh = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     for (const char* digit : {"0", "6"}) {  // "0.6" typed with no field active, nothing edited
         EXPECT_FALSE(press(explorer, digit)) << digit;
-        EXPECT_EQ(scene_to_json(explorer.doc.scene), fresh) << digit;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), fresh) << digit;
         EXPECT_EQ(explorer.doc.name, "spec example");
     }
     EXPECT_NE(explorer.session.messages.status.find("Ctrl+6"), std::string::npos) << "the status says what does: " << explorer.session.messages.status;
     ASSERT_TRUE(press(explorer, "ctrl+1"));
     edit_m(explorer, 40);
-    const nlohmann::json edited = scene_to_json(explorer.doc.scene);
+    const nlohmann::json edited = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     for (const char* digit : {"0", "6"}) {
         EXPECT_FALSE(press(explorer, digit)) << digit;
-        EXPECT_EQ(scene_to_json(explorer.doc.scene), edited) << digit;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), edited) << digit;
     }
 }
 
@@ -79,10 +79,10 @@ TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
     edit_m(explorer, 40);
     ASSERT_TRUE(run(explorer, command::SaveTo{file}));
     ASSERT_FALSE(unsaved(explorer.doc));
-    const nlohmann::json saved = scene_to_json(explorer.doc.scene);
+    const nlohmann::json saved = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     EXPECT_FALSE(press(explorer, "0"));
     EXPECT_FALSE(press(explorer, "6"));
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), saved);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), saved);
     EXPECT_EQ(explorer.doc.file, file);
     EXPECT_FALSE(unsaved(explorer.doc));
 
@@ -94,11 +94,11 @@ TEST(ExploreKeys, AJustSavedSceneSurvivesAStrayNumberAndUndoBackToItIsClean) {
     EXPECT_EQ(explorer.view.save_path, ::testing::TempDir() + "fig10.json");
     EXPECT_FALSE(run(explorer, command::SaveAs{file})) << "an existing other file: asked twice";
     EXPECT_NE(explorer.session.messages.error.find("exists"), std::string::npos) << explorer.session.messages.error;
-    EXPECT_EQ(load_scene_file(file).objects[0].material.number("m"), 40.0);
+    EXPECT_EQ(load_scene_file(file, LoadContext::trusted()).objects[0].material.number("m"), 40.0);
 
     // Undo back to the saved scene: clean, its own file again.
     ASSERT_TRUE(run(explorer, command::Undo{}));
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), saved);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), saved);
     EXPECT_EQ(explorer.doc.file, file);
     EXPECT_FALSE(unsaved(explorer.doc)) << "identical to the file: nothing unsaved";
     edit_m(explorer, 41);
@@ -132,13 +132,13 @@ TEST(ExploreKeys, SaveAsOverwritesAnotherFileOnlyWhenAskedTwice) {
 TEST(ExploreKeys, CtrlDigitReplacesAnEditedSceneUndoably) {
     Explorer explorer = started();
     edit_m(explorer, 40);
-    const nlohmann::json edited = scene_to_json(explorer.doc.scene);
+    const nlohmann::json edited = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     ASSERT_TRUE(press(explorer, "ctrl+2"));
     commit_edits(explorer);
     EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
     EXPECT_EQ(explorer.doc.history.undo_label(), "figure preset fig06");
     ASSERT_TRUE(run(explorer, command::Undo{}));
-    EXPECT_EQ(scene_to_json(explorer.doc.scene), edited);
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), edited);
 }
 
 TEST(ExploreKeys, CtrlSAsksForAFileFirstThenWritesTheScenesOwnFile) {

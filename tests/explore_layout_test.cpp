@@ -50,7 +50,7 @@ TEST(ExploreLayout, PixelUnderTheMouseFollowsTheShownMagnification) {
     EXPECT_FALSE(pixel_at(d, Rect{}, 0, 0)) << "nothing drawn yet";
 }
 
-// Issue 20, item 5: at 1280 x 720 with the panels shown, A and B (or your
+// At 1280 x 720 with the panels shown, A and B (or your
 // scene and the practice reference) at a whole magnification: stacked at the
 // window's height, the plots in a column beside them; never a fraction.
 TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
@@ -74,7 +74,7 @@ TEST(ExploreLayout, TwoPanesAt1280x720StackWithThePlotsBesideAtWholePixels) {
     EXPECT_FALSE(layout_for_panes(1280, 720, false, 2, 512, 320, 1.0f, label_h).plots_beside);
 }
 
-// Issue 20, item 5: three panes (A, B, |A - B|; practice: your scene, the
+// Three panes (A, B, |A - B|; practice: your scene, the
 // reference, the difference) at 1280 x 720 with the panels shown: two
 // columns at 1:1, the plots in the free fourth cell, the side panel narrowed
 // to the rest (never under kMinNarrowSideWidth); at 1920 x 1080 the usual

@@ -3,7 +3,6 @@
 // a damaged or hostile link is one clear error.
 #include "explore/figure_scenes.h"
 #include "explore/share_link.h"
-#include "scene/json_brdf.h"
 #include "scene/load.h"
 #include "test_support.h"
 
@@ -34,17 +33,19 @@ TEST(ShareLink, Base64MatchesRfc4648TestVectors) {
 TEST(ShareLink, EveryFigurePresetComesBackAsTheSameScene) {
     for (const FigureScene& figure : figure_scenes()) {
         SCOPED_TRACE(figure.name);
-        const Scene scene = scene_from_json(nlohmann::json::parse(figure.json), figure.name);
+        const Scene scene = scene_from_json(nlohmann::json::parse(figure.json), figure.name, LoadContext::trusted());
         const std::string token = share_token(scene);
         EXPECT_EQ(token.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_"),
                   std::string::npos);
-        const Scene back = scene_from_json(nlohmann::json::parse(unpack_share_token(token).scene_text), "link");
-        EXPECT_EQ(scene_to_json(back), scene_to_json(scene));
+        const Scene back = scene_from_json(nlohmann::json::parse(unpack_share_token(token).scene_text), "link",
+                                           LoadContext::trusted());
+        EXPECT_EQ(scene_to_json(back, PathWriting::absolute()), scene_to_json(scene, PathWriting::absolute()));
     }
 }
 
 TEST(ShareLink, ADamagedLinkIsOneClearError) {
-    const std::string token = share_token(scene_from_json(nlohmann::json::parse(figure_scenes().front().json), "x"));
+    const std::string token =
+        share_token(scene_from_json(nlohmann::json::parse(figure_scenes().front().json), "x", LoadContext::trusted()));
     EXPECT_THROW(unpack_share_token(token.substr(0, token.size() / 2)), std::runtime_error);
     EXPECT_THROW(unpack_share_token("abc$def"), std::runtime_error);
     EXPECT_THROW(unpack_share_token("bm90IHpsaWI"), std::runtime_error);  // "not zlib"
@@ -97,7 +98,7 @@ std::string refusal(const std::string& token) {
     return "";
 }
 
-// Issue 21: a scene whose material is a .brdf file (in a subfolder, too)
+// A scene whose material is a .brdf file (in a subfolder, too)
 // travels with the file; unpacked into another folder it loads as the same scene.
 TEST(ShareLink, ASceneWithBrdfFilesCarriesThemAndComesBackTheSame) {
     const fs::path from = fresh_folder("share_link_from"), to = fresh_folder("share_link_to");
@@ -112,7 +113,7 @@ TEST(ShareLink, ASceneWithBrdfFilesCarriesThemAndComesBackTheSame) {
     second["material"] = {{"model", "brdf"}, {"file", "mine/shiny.brdf"}};
     doc["objects"] = {first, second, first};
     { std::ofstream(from / "scene.json") << doc.dump(2); }
-    const Scene scene = load_scene_file((from / "scene.json").string());
+    const Scene scene = load_scene_file((from / "scene.json").string(), LoadContext::trusted());
 
     const SharedScene shared = unpack_share_token(share_token(scene, from.string()));
     ASSERT_EQ(shared.files.size(), 2u) << "each file once";
@@ -128,11 +129,9 @@ TEST(ShareLink, ASceneWithBrdfFilesCarriesThemAndComesBackTheSame) {
         std::ofstream(to / file.name, std::ios::binary) << file.text;
     }
     { std::ofstream(to / "scene.json") << shared.scene_text; }
-    const Scene back = load_scene_file((to / "scene.json").string());
-    scene_json::BrdfPathsRelativeTo here(to.string());
-    const nlohmann::json back_json = scene_to_json(back);
-    scene_json::BrdfPathsRelativeTo there(from.string());
-    EXPECT_EQ(back_json, scene_to_json(scene));
+    const Scene back = load_scene_file((to / "scene.json").string(), LoadContext::trusted());
+    EXPECT_EQ(scene_to_json(back, PathWriting::relative_to_folder(to.string())),
+              scene_to_json(scene, PathWriting::relative_to_folder(from.string())));
 }
 
 TEST(ShareLink, ABrdfFileOutsideTheFolderCannotBeShared) {
@@ -141,7 +140,7 @@ TEST(ShareLink, ABrdfFileOutsideTheFolderCannotBeShared) {
     nlohmann::json doc = nlohmann::json::parse(figure_scenes().front().json);
     doc["objects"][0]["material"] = {{"model", "brdf"}, {"file", "lambert.brdf"}};
     { std::ofstream(dir / "scene.json") << doc.dump(2); }
-    const Scene scene = load_scene_file((dir / "scene.json").string());
+    const Scene scene = load_scene_file((dir / "scene.json").string(), LoadContext::trusted());
     EXPECT_THROW(share_token(scene, (dir / "elsewhere").string()), std::runtime_error);
     EXPECT_THROW(share_token(scene), std::runtime_error) << "no folder: absolute paths, nothing to carry";
 }

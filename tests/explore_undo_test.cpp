@@ -38,11 +38,11 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
     Explorer explorer = started();
     ASSERT_TRUE(run(explorer, command::LoadFigure{"fig05"}));
     commit_edits(explorer);
-    std::vector<nlohmann::json> after_step = {scene_to_json(explorer.doc.scene)};
+    std::vector<nlohmann::json> after_step = {scene_to_json(explorer.doc.scene, PathWriting::absolute())};
     for (int i = 1; i <= 250; ++i) {  // 250 steps of m, each a finished slider drag
         set_number(explorer, "m", 2.0 + i);
         ASSERT_TRUE(commit_edits(explorer));
-        after_step.push_back(scene_to_json(explorer.doc.scene));
+        after_step.push_back(scene_to_json(explorer.doc.scene, PathWriting::absolute()));
     }
     run(explorer, command::ApplyLightPreset{LightPreset::three_point_warm});
     commit_edits(explorer);
@@ -52,12 +52,12 @@ TEST(ExploreUndo, UndoRedoKeepsMoreThan200StepsNamedAfterTheirChange) {
     EXPECT_EQ(undo_label(explorer), "objects[0].material.m 251 -> 252");
     for (int i = 250; i >= 1; --i) {
         ASSERT_TRUE(run(explorer, command::Undo{})) << i;
-        EXPECT_EQ(scene_to_json(explorer.doc.scene), after_step[std::size_t(i) - 1]) << "after undoing step " << i;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), after_step[std::size_t(i) - 1]) << "after undoing step " << i;
     }
     EXPECT_EQ(undo_label(explorer), "figure preset fig05");
     for (int i = 1; i <= 250; ++i) {
         ASSERT_TRUE(run(explorer, command::Redo{})) << i;
-        EXPECT_EQ(scene_to_json(explorer.doc.scene), after_step[std::size_t(i)]) << "after redoing step " << i;
+        EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), after_step[std::size_t(i)]) << "after redoing step " << i;
     }
     EXPECT_EQ(explorer.doc.history.redo_label(), "light preset three_point_warm");
 }

@@ -1,6 +1,6 @@
 // The explorer with real input: an X server of its own (Xvfb), real mouse and
 // keyboard events (xdotool, through XTEST as a user's), and what the screen
-// shows (ImageMagick's import). Issue 12's checks: a slider drag then Ctrl+Z
+// shows (ImageMagick's import). The checks: a slider drag then Ctrl+Z
 // gives back the exact image, "0.6" typed with no field active changes
 // nothing, ticking the A/B split keeps B, Esc with unsaved edits does not
 // quit, and at 1280 x 720 the whole display is on screen.
@@ -40,7 +40,7 @@ namespace m3055 {
 namespace {
 
 // The sanitizer build (scripts/test-sanitize) draws frames several times
-// slower: the four tests of issue 20 paced by wall-clock sleeps (a Shift
+// slower: the four tests paced by wall-clock sleeps (a Shift
 // drag's steps, a regrade's settling time, a key burst 40 ms apart, the split's
 // second pane) failed there and run in the Release suite only, saying so.
 using test::kSanitized;
@@ -418,7 +418,7 @@ TEST_F(ExplorerInput, TypingANumberWithNoFieldActiveChangesNothing) {
     EXPECT_TRUE(app_->running());
 }
 
-// Issue 20, item 1: practice on a just-saved scene, a click on an empty
+// Practice on a just-saved scene, a click on an empty
 // area, "0.6" typed: no figure preset replaces the work (plain digits never
 // do, in any mode), the title stays the file's, without an unsaved mark.
 TEST_F(ExplorerInput, PracticeOnASavedSceneSurvivesAStrayNumber) {
@@ -441,7 +441,7 @@ TEST_F(ExplorerInput, PracticeOnASavedSceneSurvivesAStrayNumber) {
     EXPECT_EQ(app_->wait_exit(30.0), 0) << "nothing unsaved: Esc quits at once";
 }
 
-// Issue 20, item 11: keys typed faster than frames are drawn all arrive, in
+// Keys typed faster than frames are drawn all arrive, in
 // order (a BackSpace pressed and released between two frames was lost).
 TEST_F(ExplorerInput, ABurstOfKeysIntoATextFieldLosesNothing) {
     if (kSanitized) GTEST_SKIP() << "paced by wall-clock sleeps: Release suite only (see kSanitized)";
@@ -671,7 +671,7 @@ TEST_F(ExplorerInput, At1280x720TheWholeDisplayIsOnScreen) {
     EXPECT_GT(at.scale, 0) << "the whole 512 x 320 display, whole pixels, inside the 1280 x 720 screen";
 }
 
-// Issue 20, item 10: at 1920 x 1080 the display shows at 3x, where
+// At 1920 x 1080 the display shows at 3x, where
 // explore/layout.h puts it: right of the column of the side panel over the
 // plots, the statistics under it.
 TEST_F(ExplorerInput, At1920x1080TheDisplayShowsAt3xBesideTheColumn) {
@@ -726,7 +726,7 @@ TEST_F(ExplorerInput, At1920x1080FoldingThePlotsGivesTheColumnToTheSidePanel) {
     EXPECT_EQ(column_differs(again), 0) << "unfolded: the column as it was";
 }
 
-// Issue 20, item 5: A/B split at 1280 x 720 with the panels shown: both
+// A/B split at 1280 x 720 with the panels shown: both
 // panes at whole pixels (A over B, the plots beside them), never a fraction.
 TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {
     test::write_text(dir_.file("ab.txt"), "compare on\n");
@@ -742,7 +742,7 @@ TEST_F(ExplorerInput, At1280x720TheSplitShowsBothPanesAtWholePixels) {
     EXPECT_EQ(b.scale, a.scale);
 }
 
-// Issue 20, item 5: A, B and |A - B| at 1280 x 720 with the panels shown:
+// A, B and |A - B| at 1280 x 720 with the panels shown:
 // all three at the same whole magnification (two columns, the plots in the
 // fourth cell, a narrower side panel), never a fraction.
 TEST_F(ExplorerInput, At1280x720ThreePanesShowAtWholePixels) {
@@ -767,7 +767,7 @@ TEST_F(ExplorerInput, At1280x720ThreePanesShowAtWholePixels) {
     EXPECT_GE(diff.y, a.y + expected.height);
 }
 
-// Issue 20, items 5 and 10: practice mode at 1280 x 720 shows your scene,
+// Practice mode at 1280 x 720 shows your scene,
 // the reference and |yours - reference| (as the report's difference), all
 // at 1:1 beside the panels.
 TEST_F(ExplorerInput, At1280x720PracticeShowsTheDifferenceToTheReferenceAtWholePixels) {
@@ -802,7 +802,7 @@ TEST_F(ExplorerInput, At1280x720PracticeShowsTheDifferenceToTheReferenceAtWholeP
     EXPECT_EQ(at_diff.x, at_mine.x) << "under your scene";
 }
 
-// Issue 20, item 6: no text cut at the side panel's or a strip's edge at
+// No text cut at the side panel's or a strip's edge at
 // 1280 x 720 and 1920 x 1080, every section open, with one pane and with
 // the A/B split. The explorer's own check (M3055_CHECK_CLIPPING,
 // explore_ui/clip_check.h: ImGui's content extent against each window's
@@ -855,7 +855,7 @@ TEST_F(ExplorerInput, NoTextIsClippedAt1280x720Or1920x1080) {
         << "a panel that cannot grow to its content is reported";
 }
 
-// Issue 20, item 10: Esc with the File menu open closes the menu and does
+// Esc with the File menu open closes the menu and does
 // not quit (nor ask about unsaved edits); the next Esc quits.
 TEST_F(ExplorerInput, EscClosesAnOpenMenuFirst) {
     ASSERT_TRUE(start(1280, 720));
@@ -882,7 +882,7 @@ TEST_F(ExplorerInput, EscClosesAnOpenMenuFirst) {
     EXPECT_EQ(app_->wait_exit(30.0), 0) << "the next Esc quits";
 }
 
-// Issue 20, item 10: the BRDF views window is docked beside the plots,
+// The BRDF views window is docked beside the plots,
 // opaque: at 1280 x 720 with it open the whole display still shows at 1:1.
 TEST_F(ExplorerInput, BrdfViewsDockBesideThePlotsNotOverTheDisplay) {
     test::write_text(dir_.file("views.txt"), "brdf_views on\n");
@@ -893,7 +893,7 @@ TEST_F(ExplorerInput, BrdfViewsDockBesideThePlotsNotOverTheDisplay) {
     EXPECT_EQ(at.scale, 1) << "the display whole, nothing over it (the floating window covered its right part)";
 }
 
-// Issue 20, item 10: Shift+drag on the display moves the selected object
+// Shift+drag on the display moves the selected object
 // (the spec example's sphere) to the right in the view plane; the camera
 // stays; Ctrl+Z undoes the whole drag in one step.
 TEST_F(ExplorerInput, ShiftDragOnTheDisplayMovesTheSelectedObject) {
@@ -942,7 +942,7 @@ TEST_F(ExplorerInput, ShiftDragOnTheDisplayMovesTheSelectedObject) {
     EXPECT_TRUE(back) << "one Ctrl+Z undoes the whole drag";
 }
 
-// Issue 20, item 4: a light's intensity on a logarithmic slider, and Shift
+// A light's intensity on a logarithmic slider, and Shift
 // drags it finely: 50 px right from 1 with Shift held gives about 1.2 (a
 // plain drag of 50 px would reach 10, the linear slider 4.4).
 TEST_F(ExplorerInput, ShiftDragSetsALightsIntensityFinely) {
@@ -975,7 +975,7 @@ TEST_F(ExplorerInput, ShiftDragSetsALightsIntensityFinely) {
     EXPECT_LT(intensity, 1.6) << "a tenth of the mouse's speed";
 }
 
-// Issue 20, item 8: A edited (m 40), B never set: switching the split on
+// A edited (m 40), B never set: switching the split on
 // makes B a copy of A, so both panes show the edited scene.
 TEST_F(ExplorerInput, SplitOnCopiesAIntoAnUntouchedB) {
     if (kSanitized) GTEST_SKIP() << "paced by wall-clock sleeps: Release suite only (see kSanitized)";
@@ -993,7 +993,7 @@ TEST_F(ExplorerInput, SplitOnCopiesAIntoAnUntouchedB) {
     EXPECT_EQ(b.scale, a.scale) << "B is A's copy, beside it";
 }
 
-// Issue 20, item 2: a live regrade that passes checks (their reasons go)
+// A live regrade that passes checks (their reasons go)
 // leaves the side panel's controls where they were: the Display section's
 // rows are the same pixels before and after.
 TEST_F(ExplorerInput, ARegradeDoesNotMoveTheSidePanelsControls) {

@@ -1,4 +1,4 @@
-// `m3055 bench --latency` (app/bench/latency.h, issue 12): the scripted
+// `m3055 bench --latency` (app/bench/latency.h): the scripted
 // explorer session's table. No timed assertion (benchmarks report): the
 // properties are the session's length and where the compiles happen -- before,
 // inside the steps (the stall); after, none inside a step, all when idle.

@@ -235,7 +235,7 @@ TEST_F(Explorer, AddsEveryShapeAndChangesAShape) {
     const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
     EXPECT_NE(run.exit_code, 0) << "the last line is an error";
     EXPECT_NE(run.err.find("script.txt:10: unknown shape 'teapot'"), std::string::npos) << run.err;
-    const Scene scene = load_scene_file(dir.file("scene.json"));
+    const Scene scene = load_scene_file(dir.file("scene.json"), LoadContext::trusted());
     ASSERT_EQ(scene.objects.size(), 5u);
     const Shape expected[] = {Shape::torus, Shape::cube, Shape::cylinder, Shape::torus, Shape::plane};
     for (int i = 0; i < 5; ++i) EXPECT_EQ(scene.objects[i].shape, expected[i]) << i;
@@ -260,7 +260,9 @@ TEST_F(Explorer, ModelSelectorListsEveryModelOfTheTable) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
     for (const ModelSpec& model : model_table().models()) {
         EXPECT_NE(run.out.find("model " + model.name + "\t" + model.label + "\n"), std::string::npos) << model.name;
-        EXPECT_EQ(load_scene_file(dir.file(model.name + ".json")).objects[0].material.model_name(), model.name);
+        EXPECT_EQ(
+            load_scene_file(dir.file(model.name + ".json"), LoadContext::trusted()).objects[0].material.model_name(),
+            model.name);
     }
 }
 
@@ -293,10 +295,12 @@ TEST_F(Explorer, F12WritesTheNextFreeNumberedScreenshot) {
         ASSERT_EQ(render.exit_code, 0) << render.err;
         EXPECT_EQ(test::read_text(png), test::read_text(dir.file("r.png"))) << n;
     }
-    EXPECT_EQ(load_scene_file(dir.file("shots/m3055-0003.json")).objects[0].material.number("m"), 3.0);
+    EXPECT_EQ(
+        load_scene_file(dir.file("shots/m3055-0003.json"), LoadContext::trusted()).objects[0].material.number("m"),
+        3.0);
 }
 
-// Issue 12: the pixel probe's numbers are the headless render's: the linear
+// The pixel probe's numbers are the headless render's: the linear
 // value of the --raw PFM, the PNG value and its display level; a click picks
 // the object under it (the Material panel then edits it).
 TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
@@ -310,7 +314,7 @@ TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
     ASSERT_EQ(render.exit_code, 0) << render.err;
     const RgbFloatImage raw = read_pfm(dir.file("r.pfm"));
     const Rgb8Image png = read_png(dir.file("r.png"));
-    const Scene scene = load_scene_file(dir.file("scene.json"));
+    const Scene scene = load_scene_file(dir.file("scene.json"), LoadContext::trusted());
     std::istringstream lines(run.out);
     int probes = 0;
     for (std::string line; std::getline(lines, line);) {
@@ -352,7 +356,7 @@ TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {
     EXPECT_EQ(test::read_text(dir.file("named.json")), test::read_text(dir.file("again.json")));
 }
 
-// Issue 12's A/B read-outs: B differs from A in one parameter (the middle
+// The A/B read-outs: B differs from A in one parameter (the middle
 // sphere's second lobe). The count of pixels on another level, the difference
 // pane's image and the scanline profile equal direct computations on two
 // headless renders of the same scenes.
@@ -513,7 +517,7 @@ TEST_F(Explorer, AChangedBrdfFileIsReloadedWhenIdleNotWhileInputComes) {
     EXPECT_EQ(reports[1].substr(reports[1].size() - 5), "busy=") << "nothing waits: " << reports[1];
 }
 
-// Issue 14: `explore --assignment A.json SCENE.json` shows the score and the
+// `explore --assignment A.json SCENE.json` shows the score and the
 // reasons `m3055 grade` gives (both run grading::grade_one): for a worked
 // submission, after an edit that breaks a rule, and for the scene saved with
 // Ctrl+S to submit.
@@ -590,7 +594,8 @@ TEST_F(Explorer, AssignmentNewSceneFileAndBrdfPermissionAsGradeHasThem) {
     const ExplorerRun fresh = run_explorer(dir.path(), {"--assignment", assignment, "mine.json", "--script",
                                                         dir.file("new.txt"), "--exit-after-script"});
     ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
-    EXPECT_EQ(load_scene_file(dir.file("mine.json")).lights.size(), 1u) << "the start scene, saved where named";
+    EXPECT_EQ(load_scene_file(dir.file("mine.json"), LoadContext::trusted()).lights.size(), 1u)
+        << "the start scene, saved where named";
 
     std::filesystem::copy_file(test::source_path("tests/data/brdf/lambert.brdf"), dir.file("lambert.brdf"));
     nlohmann::json scene = nlohmann::json::parse(test::read_text(dir.file("mine.json")));
@@ -636,7 +641,7 @@ TEST_F(Explorer, AssignmentWithoutASceneStartsFromACopyOfItsStart) {
                                                       dir.file("script.txt"), "--exit-after-script"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_NE(run.out.find("state title=start.json (copy)"), std::string::npos) << run.out;
-    EXPECT_EQ(load_scene_file(dir.file("copy.json")).lights.size(), 1u);
+    EXPECT_EQ(load_scene_file(dir.file("copy.json"), LoadContext::trusted()).lights.size(), 1u);
     const std::vector<ShownGrade> shown = shown_grades(run.out);
     ASSERT_EQ(shown.size(), 1u) << run.out;
     EXPECT_LT(shown[0].score, 100.0);

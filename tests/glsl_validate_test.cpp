@@ -168,7 +168,7 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
 
     std::set<std::vector<std::string>> keys;
     for (const auto& path : scenes) {
-        const Scene scene = load_scene_file(path.string());
+        const Scene scene = load_scene_file(path.string(), LoadContext::trusted());
         std::vector<const Object*> opaque, translucent;
         for (const Object& object : scene.objects)
             (is_translucent(object.material) ? translucent : opaque).push_back(&object);
@@ -194,7 +194,7 @@ TEST(SceneProgram, EverySceneSpecializationValidatesAndLinks) {
     RecordProperty("distinct_programs", int(keys.size()));
 }
 
-// ---- GLSL ES 3.00 (WebGL2, issue 21) -------------------------------------------
+// ---- GLSL ES 3.00 (WebGL2) ----------------------------------------------------
 
 // The programs a WebGL2 build would compile, composed for GlslTarget::es: per
 // model of the table its specialized sphere and mesh programs (the translucent

@@ -1,6 +1,6 @@
 // The GLSL path (llvmpipe, float) against the double-precision CPU reference,
 // for every model of docs/spec.md#4-paper-models, several light set-ups, both cameras and the edge
-// parameters. Tolerances (issue 2), on pixels at least one pixel away from a
+// parameters. Tolerances, on pixels at least one pixel away from a
 // silhouette:
 //   |gpu - ref| <= 1e-3 * max(1, |ref|) on the unquantized colour (absolute
 //     1e-3 for displayable values; relative above 1, where metals with narrow

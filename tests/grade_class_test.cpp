@@ -1,4 +1,4 @@
-// `m3055 grade` on what a real class hands in (issue 19): class folders built
+// `m3055 grade` on what a real class hands in: class folders built
 // here, from code, with the names, links and files a teacher meets: Latin-1
 // bytes from Windows zip files, spaces, newlines, 240-character names, names
 // differing only by case.
@@ -41,7 +41,7 @@ std::string good_scene_variant(int i) {
     return scene.dump();
 }
 
-// The odd names of issue 19 item 1, as bytes, with the text every output shows for them.
+// Odd names students give their files, as bytes, with the text every output shows for them.
 struct OddName {
     std::string bytes, shown;
 };
@@ -640,7 +640,7 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_FALSE(fs::exists(dir.file("out")));
 }
 
-// The "temperature" rule (issue 22): its light must be one of the reference's, and
+// The "temperature" rule: its light must be one of the reference's, and
 // a reference whose key is an RGB colour fails a kelvin range.
 TEST(GradeCheck, TemperatureRuleNeedsALightOfTheReference) {
     TempDir dir;

@@ -19,7 +19,7 @@ TEST(GradeOne, ScoresAsGradeDoesWithTheCallersRenderer) {
     Renderer renderer(context->gl());
     const std::string folder = test::source_path("assignments/three-point");
     const grading::Assignment assignment = grading::load_assignment(folder + "/assignment.json");
-    const grading::LevelImage reference = grading::load_reference(assignment, &renderer);
+    const grading::LevelImage reference = grading::load_reference(assignment, LoadContext::trusted(), &renderer);
     EXPECT_EQ(reference.width, 512);
     EXPECT_EQ(reference.bits, 5);
 
@@ -33,7 +33,8 @@ TEST(GradeOne, ScoresAsGradeDoesWithTheCallersRenderer) {
         const std::string name = student["student"];
         const std::string path = folder + "/submissions/" + (name == "carol" ? "carol/scene.json" : name + ".json");
         grading::LevelImage render;
-        grading::Grade grade = grading::grade_one(assignment, load_scene_file(path), renderer, reference, &render);
+        grading::Grade grade =
+            grading::grade_one(assignment, load_scene_file(path, LoadContext::trusted()), renderer, reference, &render);
         grade.student = name;
         nlohmann::json mine = grading::grade_json(grade, name);
         // The screenshot is grade's business (a file beside the scene), not grade_one's.

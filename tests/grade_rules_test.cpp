@@ -26,8 +26,8 @@ nlohmann::json reference_doc() {
 Check check(const std::string& rule_json, const nlohmann::json& doc) {
     const std::string assignment = R"({"reference": "r.json", "rules": [)" + rule_json + "]}";
     const Assignment a = assignment_from_json(assignment, "a.json");
-    const Scene scene = scene_from_json(doc, "s.json");
-    return check_rule(a.rules.at(0), scene, scene_to_json(scene));
+    const Scene scene = scene_from_json(doc, "s.json", LoadContext::trusted());
+    return check_rule(a.rules.at(0), scene, scene_to_json(scene, PathWriting::absolute()));
 }
 
 }  // namespace
@@ -179,7 +179,7 @@ TEST(GradeScore, ImagePartialCreditFallsLinearlyToZeroPercent) {
     const std::string image = R"("image": {"points": 40, "fail_levels": 1, "fail_percent": 1)";
     const Assignment partial = assignment_from_json(R"({"reference": "r.json", )" + image + R"(, "zero_percent": 9}})", "a.json");
     const Assignment whole = assignment_from_json(R"({"reference": "r.json", )" + image + "}}", "a.json");
-    const Scene scene = scene_from_json(reference_doc(), "s.json");
+    const Scene scene = scene_from_json(reference_doc(), "s.json", LoadContext::trusted());
     LevelImage reference;
     reference.width = 100;
     reference.height = 1;
@@ -206,7 +206,7 @@ TEST(GradeScore, PointsAddUpAndPassNeedsThePassScore) {
             "rules": [{"rule": "light_count", "equals": 3, "points": 10}, {"rule": "light_count", "equals": 2, "points": 5}],
             "pass": 50})",
         "a.json");
-    const Scene scene = scene_from_json(reference_doc(), "s.json");
+    const Scene scene = scene_from_json(reference_doc(), "s.json", LoadContext::trusted());
     LevelImage image;
     image.width = image.height = 2;
     image.levels.assign(12, 3);

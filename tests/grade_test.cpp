@@ -1,4 +1,4 @@
-// `m3055 grade` as a teacher runs it (issue 14): the worked assignment's
+// `m3055 grade` as a teacher runs it: the worked assignment's
 // scores, every kind of broken submission scoring 0 with its reason without
 // stopping the run, a run killed halfway leaving no tables, report.html in
 // headless Chromium, and 4 shards under GNU parallel merged to the same bytes.
@@ -59,6 +59,29 @@ TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
     ASSERT_TRUE(s.count("zoe"));
     EXPECT_TRUE(s.at("zoe")["broken"].get<std::string>().empty()) << s.at("zoe")["broken"];
     EXPECT_TRUE(file_exists(dir.file("out/students/zoe.png")));
+}
+
+// The students' files are named relative to the class folder, however the
+// teacher spells its path: the same reasons on every machine.
+TEST(Grade, SubmissionFilesAreNamedRelativeToTheClassFolder) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs/zoe"));
+    fs::copy_file(kSubmissions + "/alice.json", dir.file("subs/zoe/scene.json"));
+    write_text(dir.file("subs/zoe/screenshot.png"), "not a PNG");
+    write_brdf_submission(dir.file("subs/yves"));
+    fs::remove(dir.file("subs/yves/lambert.brdf"));
+    for (const std::string& spelled : {dir.file("subs"), dir.file("subs/../subs/")}) {
+        SCOPED_TRACE(spelled);
+        const RunResult run =
+            run_m3055({"grade", kAssignment, spelled, "--out", dir.file("out"), "--allow-brdf"});
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        const auto s = by_student(read_json(dir.file("out/grades.json")));
+        const std::string screenshot = s.at("zoe")["screenshot"], broken = s.at("yves")["broken"];
+        EXPECT_EQ(screenshot.rfind("zoe/screenshot.png: cannot read PNG: ", 0), 0u) << screenshot;
+        EXPECT_EQ(broken.rfind("yves/scene.json: objects[0].material.file: yves/lambert.brdf: cannot read file: ", 0),
+                  0u)
+            << broken;
+    }
 }
 
 // A student checks the one file they will submit: the same grade as in the class's folder.

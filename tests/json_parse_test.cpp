@@ -1,6 +1,5 @@
 // scene/json_parse.h: what is checked before a document is built, so that no
-// file of at most 16 MiB costs much memory to reject (issue 11, classes 1, 5
-// and 6): encodings, nesting, keys per object, and the estimated size of the
+// file of at most 16 MiB costs much memory to reject: encodings, nesting, keys per object, and the estimated size of the
 // document, which is held here against what nlohmann::json really allocates.
 #include "scene/json_parse.h"
 #include "scene/load.h"

@@ -18,7 +18,8 @@ namespace {
 Light reloaded(const Light& light) {
     Scene scene = default_scene();
     scene.lights = {light};
-    return scene_from_json(scene_to_json(scene), "light.json").lights.at(0);
+    return scene_from_json(scene_to_json(scene, PathWriting::absolute()), "light.json", LoadContext::trusted())
+        .lights.at(0);
 }
 
 TEST(LightColour, ATemperatureGivesTheLoadersColourAndReplacesTheRgb) {

@@ -95,7 +95,7 @@ json scene_with_light(const json& light) {
 
 std::string error_of(const json& light) {
     try {
-        scene_from_json(scene_with_light(light), "s.json");
+        scene_from_json(scene_with_light(light), "s.json", LoadContext::trusted());
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -104,10 +104,14 @@ std::string error_of(const json& light) {
 
 TEST(LightNames, AreReadKeptOnSaveAndChecked) {
     const json light = {{"type", "directional"}, {"direction", {0, 0, 1}}, {"name", "Key light (warm) \u2600"}};
-    const Scene scene = scene_from_json(scene_with_light(light), "s.json");
+    const Scene scene = scene_from_json(scene_with_light(light), "s.json", LoadContext::trusted());
     EXPECT_EQ(scene.lights[0].name, "Key light (warm) \u2600");
-    EXPECT_EQ(scene_from_json(scene_to_json(scene), "again.json").lights[0].name, scene.lights[0].name);
-    EXPECT_FALSE(scene_to_json(default_scene())["lights"][0].contains("name")) << "absent stays absent";
+    EXPECT_EQ(scene_from_json(scene_to_json(scene, PathWriting::absolute()), "again.json", LoadContext::trusted())
+                  .lights[0]
+                  .name,
+              scene.lights[0].name);
+    EXPECT_FALSE(scene_to_json(default_scene(), PathWriting::absolute())["lights"][0].contains("name"))
+        << "absent stays absent";
 
     json bad = light;
     bad["name"] = 3;

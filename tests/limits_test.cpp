@@ -1,4 +1,4 @@
-// The documented limits hold (issue 6, docs/limits.md): a display of
+// The documented limits hold (docs/limits.md): a display of
 // 8192 x 8192 renders with bounded memory (peak RSS reported and bounded per
 // pixel), and a scene of 10 000 spheres renders with every sphere on screen
 // (time reported). Timings are printed, never asserted.
@@ -52,10 +52,8 @@ TEST(Limits, Display8192SquaredRendersWithBoundedMemory) {
     RecordProperty("peak_rss_mib", int(peak / 1048576.0));
     // What the frame needs: RGBA32F colour, depth and the RGBA8 display on the
     // GL side (24 bytes a pixel), the 8-bit display and the raw floats read
-    // back (15), the PNG (small here) — measured 40.5 bytes a pixel in Release
-    // (issue 11; was 53 before the PNG was deflated row by row and the PFM
-    // written from the image). A copy of the float frame too many would add
-    // 12 to 16 more. ASan's shadow memory and quarantine add their own share.
+    // back (15), the PNG (small here): about 40 bytes a pixel in Release
+    // (docs/limits.md). A copy of the float frame too many would add 12 to 16 more. ASan's shadow memory and quarantine add their own share.
     EXPECT_LT(peak / pixels, kAsan ? 96.0 : 48.0);
 
     // Whole, valid files: PFM header + 12 bytes a pixel; the PNG decodes to

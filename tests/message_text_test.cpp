@@ -1,6 +1,5 @@
 // io/message_text.h: whatever bytes an untrusted file or name holds, what a
-// message shows of them is one line of valid UTF-8, bounded, and true
-// (issue 11, classes 6 and 11).
+// message shows of them is one line of valid UTF-8, bounded, and true.
 #include "io/message_text.h"
 #include "scene/json_node.h"
 

@@ -126,14 +126,16 @@ json minimal_material(const ModelSpec& model) {
 // Loads `material` (in a scene); "" on success, else the loader's message.
 std::string load_error(const json& material) {
     try {
-        scene_from_json(scene_with(material), "t.json");
+        scene_from_json(scene_with(material), "t.json", LoadContext::trusted());
         return "";
     } catch (const SceneError& e) {
         return e.what();
     }
 }
 
-Material load(const json& material) { return scene_from_json(scene_with(material), "t.json").objects[0].material; }
+Material load(const json& material) {
+    return scene_from_json(scene_with(material), "t.json", LoadContext::trusted()).objects[0].material;
+}
 
 double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 double above(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
@@ -234,8 +236,11 @@ TEST(ModelTable, DefaultsRoundTripAndReachTheGpuRecord) {
         const Material defaults(model);
         // A file with only the required keys loads as the table's defaults.
         EXPECT_EQ(load(minimal_material(model)), defaults);
-        Scene scene = scene_from_json(scene_with(minimal_material(model)), "t.json");
-        EXPECT_EQ(scene_from_json(scene_to_json(scene), "again.json").objects[0].material, defaults);
+        Scene scene = scene_from_json(scene_with(minimal_material(model)), "t.json", LoadContext::trusted());
+        EXPECT_EQ(scene_from_json(scene_to_json(scene, PathWriting::absolute()), "again.json", LoadContext::trusted())
+                      .objects[0]
+                      .material,
+                  defaults);
         std::vector<float> record;
         pack_material(defaults, record);
         ASSERT_EQ(record.size(), std::size_t(material_record_texels()) * 4);
@@ -329,7 +334,7 @@ TEST(ModelTable, SwitchingModelsKeepsValuesOfTheSameMeaning) {
     EXPECT_EQ(with_model(principled, model_table().get("lambert")).vec3("kd"), dvec3(0.1, 0.2, 0.3));
 }
 
-// Issue 20, item 10: a model switch keeps the object's colour between every
+// A model switch keeps the object's colour between every
 // two built-in models (C0 "color" of the paper's models, "kd" of the classic
 // ones, principled's "base_color": carry_from in builtin_models.cpp), never the
 // new model's default red.

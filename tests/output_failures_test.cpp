@@ -1,4 +1,4 @@
-// Failure paths of the output files (docs/spec.md#8-command-line, issue 6): an output folder that is
+// Failure paths of the output files (docs/spec.md#8-command-line): an output folder that is
 // missing, is really a file, or cannot be written; a disk that fills up while
 // writing. Every case: exit 1, one line naming the file and the reason, an
 // existing output untouched, no temporary file left, and no PNG written when

@@ -49,7 +49,7 @@ TEST(PixelProbe, HistogramCountsEveryPixelOncePerChannel) {
 }
 
 TEST(PixelProbe, PickerFindsTheObjectUnderAPixelAndItsNormal) {
-    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"));
+    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"), LoadContext::trusted());
     const ScenePicker picker(scene);
     const int w = scene.display.width, h = scene.display.height;
     EXPECT_EQ(picker.pick(0, 0).object, -1);
@@ -79,7 +79,7 @@ Scene gold_scene(const std::string& fresnel) {
         {"objects",
          {{{"shape", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1.0},
            {"material", {{"model", "metal"}, {"conductor", "gold"}, {"fresnel", fresnel}}}}}}};
-    return scene_from_json(doc, "gold.json");
+    return scene_from_json(doc, "gold.json", LoadContext::trusted());
 }
 
 dvec3 gold_c0(const spectral::Power& light, double cos_theta, bool full) {

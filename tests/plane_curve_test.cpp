@@ -1,4 +1,4 @@
-// The polar plot's numbers (renderer/analysis/plane_curve.h), issue 12: a
+// The polar plot's numbers (renderer/analysis/plane_curve.h): a
 // light behind the surface gives no lobe (it used to be clamped to 90 deg and
 // drew a full one), and a translucent object's curve at the view direction is
 // the value the display shows at the matching pixel (it used to plot the
@@ -70,7 +70,7 @@ TEST(PlaneCurve, TranslucentCurveAtTheViewDirectionIsTheDisplayedValue) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const RgbFloatImage pfm = read_pfm(dir.file("out.pfm"));
     ASSERT_EQ(pfm.width, 65);
-    const Scene scene = load_scene_file(dir.file("scene.json"));
+    const Scene scene = load_scene_file(dir.file("scene.json"), LoadContext::trusted());
     const Material& material = scene.objects[0].material;
     const PlaneCurve curve =
         plane_curve(material, scene.lights[0], incidence_at_target(scene.lights[0], scene.camera), scene.background);
@@ -103,7 +103,7 @@ TEST(PlaneCurve, RadialScales) {
     EXPECT_EQ(model_max(metal, a, dvec3(0.0)), model_max(metal, b, dvec3(0.0)));
 }
 
-// Issue 20, item 7: the default "lobe" scale puts the outer circle at the
+// The default "lobe" scale puts the outer circle at the
 // plotted curve's largest value rounded up to 1, 2 or 5 x 10^k: Fig. 10's
 // metal lobe (about 5 at its 54.7 deg incidence, 40.6 over all incidences)
 // reaches at least 40 % of the radius instead of running off "fixed, outer 1"
@@ -116,7 +116,7 @@ TEST(PlaneCurve, LobeScaleFitsThePlottedLobe) {
     EXPECT_EQ(nice_ceiling(6.0), 10.0);
     EXPECT_NEAR(nice_ceiling(0.031), 0.05, 1e-15);
     EXPECT_EQ(nice_ceiling(0.0), 1.0) << "a black curve";
-    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"));
+    const Scene scene = load_scene_file(test::source_path("scenes/fig10.json"), LoadContext::trusted());
     const Light& light = scene.lights[0];
     const Material& metal = scene.objects[0].material;
     const PlaneCurve curve = plane_curve(metal, light, incidence_at_target(light, scene.camera), scene.background);

@@ -65,7 +65,7 @@ TEST(PlotSpectrum, TheScenesLightAndObjectAreThoseTheOptionsPick) {
     const auto r = run_m3055({"plot", "spectrum", "--scene", scene_file, "--light", "1", "--object", "1", "--out",
                               dir.file("s.png")});
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    const Scene scene = load_scene_file(scene_file);
+    const Scene scene = load_scene_file(scene_file, LoadContext::trusted());
     ASSERT_GE(scene.lights.size(), 2u);
     expect_curves(dir.file("s.gp"), spectrum_view(&scene.lights[1], &scene.objects[1].material));
     // With a light of its own (--illuminant) the scene's material stays.

@@ -154,9 +154,9 @@ std::vector<std::pair<std::string, std::vector<Light>>> light_setups() {
 // `material` (JSON, as a scene gives it) on test::single_sphere_scene's sphere.
 Scene scene_with(const json& material, const std::vector<Light>& lights, bool ortho) {
     Scene scene = test::single_sphere_scene(Material::of("lambert"), lights, ortho);
-    json doc = scene_to_json(scene);
+    json doc = scene_to_json(scene, PathWriting::absolute());
     doc["objects"][0]["material"] = material;
-    return scene_from_json(doc, "principled_disney.json");
+    return scene_from_json(doc, "principled_disney.json", LoadContext::trusted());
 }
 
 RgbFloatImage render(const Scene& scene) {

@@ -55,7 +55,7 @@ protected:
 };
 
 TEST_P(ReferenceImageFile, InteriorPixelsMatchTheRawAndQuantizedImages) {
-    const Scene scene = load_scene_file(path(".json"));
+    const Scene scene = load_scene_file(path(".json"), LoadContext::trusted());
     const ReferenceImage image = render_reference(scene);
     const RgbFloatImage pfm = read_pfm(path(".pfm"));
     const Rgb8Image png = read_png(path(".png"));

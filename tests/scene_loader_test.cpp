@@ -41,7 +41,7 @@ std::string error_after(const std::function<void(json&)>& edit) {
     json doc = spec_doc();
     edit(doc);
     try {
-        scene_from_json(doc, "scene.json");
+        scene_from_json(doc, "scene.json", LoadContext::trusted());
     } catch (const SceneError& error) {
         return error.what();
     }
@@ -50,7 +50,9 @@ std::string error_after(const std::function<void(json&)>& edit) {
 
 std::string repo_path(const std::string& relative) { return std::string(M3055_SOURCE_DIR) + "/" + relative; }
 
-Scene load_text(const std::string& text) { return scene_from_json(json::parse(text), "scene.json"); }
+Scene load_text(const std::string& text) {
+    return scene_from_json(json::parse(text), "scene.json", LoadContext::trusted());
+}
 
 void expect_vec(const dvec3& got, const dvec3& want) {
     EXPECT_EQ(got.x, want.x);
@@ -147,7 +149,7 @@ TEST(SceneLoader, SpecExampleLoadsWithExactValues) {
 
 TEST(SceneLoader, ReferenceScenesLoad) {
     const std::string dir = repo_path("tests/data/reference-images");
-    const Scene metal = load_scene_file(dir + "/metal_two_lobes.json");
+    const Scene metal = load_scene_file(dir + "/metal_two_lobes.json", LoadContext::trusted());
     EXPECT_EQ(metal.camera.projection, Projection::orthographic);
     EXPECT_EQ(metal.camera.height, 2.5);
     ASSERT_EQ(metal.objects.size(), 1u);
@@ -157,10 +159,10 @@ TEST(SceneLoader, ReferenceScenesLoad) {
     ASSERT_EQ(metal.lights.size(), 2u);
     EXPECT_EQ(metal.lights[1].intensity, 0.6);
 
-    const Scene spec = load_scene_file(dir + "/spec_example.json");
+    const Scene spec = load_scene_file(dir + "/spec_example.json", LoadContext::trusted());
     expect_same_scene(spec, load_text(kSpecExample));
 
-    const Scene layered = load_scene_file(dir + "/translucent_over_opaque.json");
+    const Scene layered = load_scene_file(dir + "/translucent_over_opaque.json", LoadContext::trusted());
     ASSERT_GE(layered.objects.size(), 2u);
     bool has_translucent = false;
     for (const Object& object : layered.objects) has_translucent |= object.material.model_name() == "translucent";
@@ -215,7 +217,7 @@ TEST(SceneLoader, DefaultsForEverythingOptional) {
     EXPECT_EQ(scene.objects[2].material.number("d"), 0.05);
     expect_lobes(scene.objects[2].material.lobes().to_vector(), {{0.013, 0.2}, {0.1, 0.4}});
     // The cheap metals' defaults are the explorer's presets (Figs. 12 and 13),
-    // which meet eq. 14 with d = 0.05 (were {1.0, 13} and {1.0, 20}: issue 10).
+    // which meet eq. 14 with d = 0.05.
     EXPECT_EQ(scene.objects[3].material.number("d"), 0.05);
     expect_lobes(scene.objects[3].material.lobes().to_vector(), {{0.95, 13.0}});
     EXPECT_EQ(scene.objects[4].material.number("d"), 0.05);
@@ -228,7 +230,7 @@ TEST(SceneLoader, IntegralFloatsAreWholeNumbersAndEmptyListsAreFine) {
     doc["display"]["bits"] = 8.0;
     doc["lights"] = json::array();
     doc["objects"] = json::array();
-    const Scene scene = scene_from_json(doc, "scene.json");
+    const Scene scene = scene_from_json(doc, "scene.json", LoadContext::trusted());
     EXPECT_EQ(scene.display.width, 640);
     EXPECT_EQ(scene.display.bits, 8);
     EXPECT_TRUE(scene.lights.empty());
@@ -273,7 +275,7 @@ TEST(SceneLoader, DirectionsAreUnitEvenForTinyAndHugeInputs) {
     for (double scale : {1e-300, 1e-5, 1.0, 7.0, 1e200, 1e300}) {
         json doc = spec_doc();
         doc["lights"][0]["direction"] = {3 * scale, 0.0, -4 * scale};
-        const Scene scene = scene_from_json(doc, "scene.json");
+        const Scene scene = scene_from_json(doc, "scene.json", LoadContext::trusted());
         const dvec3 d = scene.lights[0].direction;
         EXPECT_NEAR(d.x, 0.6, 1e-15) << scale;
         EXPECT_EQ(d.y, 0.0);
@@ -485,7 +487,7 @@ TEST(SceneLoader, TooManyObjectsIsAnError) {
     doc["objects"] = json::array();
     for (int i = 0; i < 100001; ++i) doc["objects"].push_back(nullptr);  // count is checked first
     try {
-        scene_from_json(doc, "big.json");
+        scene_from_json(doc, "big.json", LoadContext::trusted());
         FAIL() << "no error";
     } catch (const SceneError& error) {
         EXPECT_STREQ(error.what(), "big.json: objects: must have at most 100000 objects, got 100001");
@@ -496,7 +498,7 @@ TEST(SceneLoader, TooManyObjectsIsAnError) {
 
 std::string load_error(const std::string& path, const std::vector<Override>& overrides = {}) {
     try {
-        load_scene_file(path, overrides);
+        load_scene_file(path, LoadContext::trusted(), overrides);
     } catch (const SceneError& error) {
         return error.what();
     }
@@ -596,7 +598,7 @@ Scene with_overrides(const std::vector<std::string>& texts) {
     std::vector<Override> overrides;
     for (const auto& text : texts) overrides.push_back(parse_override(text));
     apply_overrides(doc, overrides, "scene.json");
-    return scene_from_json(doc, "scene.json");
+    return scene_from_json(doc, "scene.json", LoadContext::trusted());
 }
 
 std::string override_error(const std::vector<std::string>& texts) {
@@ -688,11 +690,12 @@ const char* kRichScene = R"({
 
 TEST(SceneLoader, SceneToJsonRoundTripsExactlyThroughText) {
     const Scene original = load_text(kRichScene);
-    const std::string text = scene_to_json(original).dump(2);
+    const std::string text = scene_to_json(original, PathWriting::absolute()).dump(2);
     const Scene reloaded = load_text(text);
     expect_same_scene(original, reloaded);
     // And the written document is a fixed point.
-    EXPECT_EQ(scene_to_json(reloaded).dump(), scene_to_json(original).dump());
+    EXPECT_EQ(scene_to_json(reloaded, PathWriting::absolute()).dump(),
+              scene_to_json(original, PathWriting::absolute()).dump());
 }
 
 TEST(SceneLoader, SceneToJsonRoundTripsAProgrammaticScene) {
@@ -715,7 +718,7 @@ TEST(SceneLoader, SceneToJsonRoundTripsAProgrammaticScene) {
     object.material.set_number("d", 0.05);
     object.material.set_lobes({{0.1 / 3.0, 0.001}, {100.0, 2.0}});
     scene.objects.push_back(object);
-    expect_same_scene(scene, load_text(scene_to_json(scene).dump()));
+    expect_same_scene(scene, load_text(scene_to_json(scene, PathWriting::absolute()).dump()));
 }
 
 // Every leaf of the rich scene replaced by hostile values: the loader must either
@@ -757,7 +760,7 @@ TEST(SceneLoader, HostileValuesGiveOneLineErrorsOrFiniteScenes) {
             json doc = rich;
             if (pointer.empty()) doc = value; else doc[pointer] = value;
             try {
-                const Scene scene = scene_from_json(doc, "fuzz.json");
+                const Scene scene = scene_from_json(doc, "fuzz.json", LoadContext::trusted());
                 EXPECT_TRUE(all_finite(scene)) << pointer.to_string() << " = " << value.dump();
                 ++accepted;
             } catch (const SceneError& error) {

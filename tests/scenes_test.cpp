@@ -45,14 +45,14 @@ TEST(Scenes, EveryFileLoads) {
     EXPECT_NE(std::find(names.begin(), names.end(), "spec_example.json"), names.end());
     for (const auto& name : names) {
         SCOPED_TRACE(name);
-        EXPECT_NO_THROW(load_scene_file(scene_path(name))) << name;
+        EXPECT_NO_THROW(load_scene_file(scene_path(name), LoadContext::trusted())) << name;
     }
 }
 
 TEST(Scenes, FiguresAreM3055FramesWithEverySphereInside) {
     for (const auto& name : kFigures) {
         SCOPED_TRACE(name);
-        const Scene scene = load_scene_file(scene_path(name));
+        const Scene scene = load_scene_file(scene_path(name), LoadContext::trusted());
         EXPECT_EQ(scene.display.width, 512);
         EXPECT_EQ(scene.display.height, 320);
         EXPECT_EQ(scene.display.bits, 5);
@@ -75,7 +75,7 @@ TEST(Scenes, FiguresAreM3055FramesWithEverySphereInside) {
 // The sorted values of one material parameter over a figure's spheres.
 template <typename Get>
 std::vector<double> swept(const std::string& name, Get get) {
-    const Scene scene = load_scene_file(scene_path(name));
+    const Scene scene = load_scene_file(scene_path(name), LoadContext::trusted());
     std::vector<double> values;
     for (const auto& object : scene.objects) values.push_back(get(object.material));
     std::sort(values.begin(), values.end());
@@ -92,7 +92,7 @@ TEST(Scenes, HighlightAndTranslucentFiguresSweepThePapersValues) {
     EXPECT_EQ(swept("fig06.json", [](const Material& m) { return m.number("m"); }), std::vector<double>(5, 10));
 
     std::set<std::pair<double, double>> fig7;
-    for (const auto& object : load_scene_file(scene_path("fig07.json")).objects) {
+    for (const auto& object : load_scene_file(scene_path("fig07.json"), LoadContext::trusted()).objects) {
         ASSERT_EQ(object.material.model_name(), "translucent");
         fig7.insert({object.material.number("t_p"), object.material.number("t_n")});
     }
@@ -106,7 +106,7 @@ TEST(Scenes, HighlightAndTranslucentFiguresSweepThePapersValues) {
     EXPECT_EQ(swept("fig08.json", [](const Material& m) { return m.number("t_n"); }), std::vector<double>(5, 0.8));
 
     // Fig. 9: one opaque highlight sphere behind (further from the camera) one translucent.
-    const Scene fig9 = load_scene_file(scene_path("fig09.json"));
+    const Scene fig9 = load_scene_file(scene_path("fig09.json"), LoadContext::trusted());
     ASSERT_EQ(fig9.objects.size(), 2u);
     const Object& opaque = fig9.objects[0];
     const Object& glass = fig9.objects[1];
@@ -129,7 +129,7 @@ TEST(Scenes, HighlightAndTranslucentFiguresSweepThePapersValues) {
 TEST(Scenes, MetalFiguresMeetEquation14) {
     for (const std::string name : {"fig10.json", "fig11.json"}) {
         SCOPED_TRACE(name);
-        const Scene scene = load_scene_file(scene_path(name));
+        const Scene scene = load_scene_file(scene_path(name), LoadContext::trusted());
         int metals = 0;
         for (const auto& object : scene.objects) {
             if (object.material.model_name() != "metal") continue;
@@ -143,7 +143,7 @@ TEST(Scenes, MetalFiguresMeetEquation14) {
 }
 
 TEST(Scenes, MetalFiguresUseThePapersLights) {
-    const Scene fig11 = load_scene_file(scene_path("fig11.json"));
+    const Scene fig11 = load_scene_file(scene_path("fig11.json"), LoadContext::trusted());
     ASSERT_EQ(fig11.lights.size(), 2u);
     EXPECT_EQ(fig11.lights[0].intensity, 1.0);
     EXPECT_TRUE(fig11.lights[0].lobes.empty());  // main light: the material's Fig. 10 lobes
@@ -157,7 +157,7 @@ TEST(Scenes, MetalFiguresUseThePapersLights) {
     EXPECT_LT(fig11.lights[1].direction.x, 0);
     EXPECT_LT(fig11.lights[1].direction.y, 0);
 
-    const Scene fig12 = load_scene_file(scene_path("fig12.json"));
+    const Scene fig12 = load_scene_file(scene_path("fig12.json"), LoadContext::trusted());
     ASSERT_EQ(fig12.lights.size(), 2u);
     for (const auto& object : fig12.objects) {
         ASSERT_EQ(object.material.model_name(), "metal_blinn");
@@ -166,7 +166,7 @@ TEST(Scenes, MetalFiguresUseThePapersLights) {
     }
     EXPECT_EQ(fig12.lights[1].intensity, 0.4);
 
-    const Scene fig13 = load_scene_file(scene_path("fig13.json"));
+    const Scene fig13 = load_scene_file(scene_path("fig13.json"), LoadContext::trusted());
     ASSERT_EQ(fig13.lights.size(), 2u);
     for (const auto& object : fig13.objects) {
         ASSERT_EQ(object.material.model_name(), "metal_phong");

@@ -1,4 +1,4 @@
-// Shader compile and link failures (issue 6): the exception carries the GL
+// Shader compile and link failures: the exception carries the GL
 // driver's log with the composed source's string numbers rewritten to glsl/
 // file names and lines (gl/shader_source.h), and nothing crashes. The broken
 // shaders are made from the real ones through the composer's own #define

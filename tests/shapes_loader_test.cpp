@@ -29,7 +29,7 @@ json base_doc() {
       ]})");
 }
 
-Scene load(const json& doc) { return scene_from_json(doc, "scene.json"); }
+Scene load(const json& doc) { return scene_from_json(doc, "scene.json", LoadContext::trusted()); }
 
 std::string error_after(const std::function<void(json&)>& edit) {
     json doc = base_doc();
@@ -163,7 +163,7 @@ TEST(ShapesLoader, TheScenesMeshesHaveATriangleBudget) {
 
 TEST(ShapesLoader, SceneToJsonRoundTripsEveryShape) {
     const Scene original = load(base_doc());
-    const json written = scene_to_json(original);
+    const json written = scene_to_json(original, PathWriting::absolute());
     const Scene reloaded = load(json::parse(written.dump()));
     ASSERT_EQ(reloaded.objects.size(), original.objects.size());
     for (std::size_t i = 0; i < original.objects.size(); ++i) {
@@ -183,7 +183,7 @@ TEST(ShapesLoader, SceneToJsonRoundTripsEveryShape) {
             EXPECT_EQ(a.radius, b.radius);
         }
     }
-    EXPECT_EQ(scene_to_json(reloaded).dump(), written.dump());  // a fixed point
+    EXPECT_EQ(scene_to_json(reloaded, PathWriting::absolute()).dump(), written.dump());  // a fixed point
     EXPECT_EQ(written["objects"][1]["shape"], "cube");
     EXPECT_FALSE(written["objects"][0].contains("segments"));
 }

@@ -1,6 +1,6 @@
 // The explorer's logarithmic sliders (explore/slider_scale.h): position
 // and value are inverses, every decade gets the same room, and the text keeps
-// three significant digits (issue 12: a weight of 4.5e-5 read "0.0000").
+// three significant digits (a weight of 4.5e-5 must not read "0.0000").
 #include "explore/slider_scale.h"
 
 #include <gtest/gtest.h>
@@ -38,7 +38,7 @@ TEST(SliderScale, TextKeepsThreeSignificantDigits) {
     EXPECT_EQ(significant_text(1234.4), "1234");
 }
 
-// Issue 20, item 4: a light's intensity on 4 decades (0.001 ... 10, 0 at
+// A light's intensity on 4 decades (0.001 ... 10, 0 at
 // the left end): from 0.4 the fill's 4:1 ratio (0.25) is a short, sure move.
 TEST(SliderScale, IntensityHasFourDecadesAndRoomBetweenFillValues) {
     EXPECT_DOUBLE_EQ(log_slider_floor(0.0, 10.0, kIntensityDecades), 1e-3);

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The Slurm recipe of docs/grading.md, run for real (issue 19 item 11): starts a
+# The Slurm recipe of docs/grading.md, run for real: starts a
 # one-node Slurm cluster of its own on localhost (every file in a temporary
 # folder, SLURM_CONF pointing there, auth/none; nothing in /etc touched), grades
 # a class with scripts/slurm/submit in 3 shards, and checks that the merged

@@ -102,7 +102,7 @@ json scene_with(const json& material) {
 
 std::string problem(const json& material) {
     try {
-        scene_from_json(scene_with(material), "t.json");
+        scene_from_json(scene_with(material), "t.json", LoadContext::trusted());
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -111,17 +111,21 @@ std::string problem(const json& material) {
 
 TEST(SpectralColours, LoadsWritesAndShowsItsD65Colour) {
     const json spectrum = {{"nm", {380, 500, 600, 780}}, {"values", {0.1, 0.2, 0.7, 0.9}}};
-    const Scene scene = scene_from_json(scene_with({{"model", "metal_phong"}, {"color_spectrum", spectrum}}), "t.json");
+    const Scene scene = scene_from_json(scene_with({{"model", "metal_phong"}, {"color_spectrum", spectrum}}), "t.json",
+                                        LoadContext::trusted());
     const Material& m = scene.objects[0].material;
     ASSERT_NE(m.colour_spectrum(), nullptr);
     EXPECT_EQ(m.colour_spectrum()->nm, (std::vector<double>{380, 500, 600, 780}));
     EXPECT_NEAR(m.colour_spectrum()->at(550.0), 0.45, 1e-12);
     const dvec3 d65 = spectrum_d65_rgb(*m.colour_spectrum());
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.vec3("color")[c], std::clamp(d65[c], 0.0, 1.0), 1e-12);
-    const json written = scene_to_json(scene)["objects"][0]["material"];
+    const json written = scene_to_json(scene, PathWriting::absolute())["objects"][0]["material"];
     EXPECT_EQ(written["color_spectrum"], spectrum);
     EXPECT_FALSE(written.contains("color"));
-    EXPECT_EQ(scene_from_json(scene_to_json(scene), "t.json").objects[0].material, m);
+    EXPECT_EQ(scene_from_json(scene_to_json(scene, PathWriting::absolute()), "t.json", LoadContext::trusted())
+                  .objects[0]
+                  .material,
+              m);
 }
 
 TEST(SpectralColours, ModelSwitchesKeepTheSpectrumWhereAColourTakesOne) {
@@ -139,20 +143,26 @@ TEST(SpectralColours, ModelSwitchesKeepTheSpectrumWhereAColourTakesOne) {
 TEST(SpectralColours, ClassicModelsTakeKdAsASpectrumLoadWriteAndDefaultKaToItsD65Colour) {
     const json spectrum = {{"nm", {380, 500, 600, 780}}, {"values", {0.1, 0.2, 0.7, 0.9}}};
     for (const char* model : {"lambert", "oren_nayar", "phong", "microfacet", "ward", "heidrich_seidel"}) {
-        const Scene scene = scene_from_json(scene_with({{"model", model}, {"kd_spectrum", spectrum}}), "t.json");
+        const Scene scene = scene_from_json(scene_with({{"model", model}, {"kd_spectrum", spectrum}}), "t.json",
+                                            LoadContext::trusted());
         const Material& m = scene.objects[0].material;
         ASSERT_NE(m.colour_spectrum(), nullptr) << model;
         const dvec3 d65 = spectrum_d65_rgb(*m.colour_spectrum());
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.vec3("kd")[c], std::clamp(d65[c], 0.0, 1.0), 1e-12) << model;
         EXPECT_EQ(m.vec3("ka"), m.vec3("kd")) << model << ": ka defaults to kd";
-        const json written = scene_to_json(scene)["objects"][0]["material"];
+        const json written = scene_to_json(scene, PathWriting::absolute())["objects"][0]["material"];
         EXPECT_EQ(written["kd_spectrum"], spectrum) << model;
         EXPECT_FALSE(written.contains("kd")) << model;
-        EXPECT_EQ(scene_from_json(scene_to_json(scene), "t.json").objects[0].material, m) << model;
+        EXPECT_EQ(scene_from_json(scene_to_json(scene, PathWriting::absolute()), "t.json", LoadContext::trusted())
+                      .objects[0]
+                      .material,
+                  m)
+            << model;
     }
     // Without it a classic material is written as before.
-    const Scene plain = scene_from_json(scene_with({{"model", "phong"}, {"kd", {0.5, 0.5, 0.5}}}), "t.json");
-    EXPECT_FALSE(scene_to_json(plain)["objects"][0]["material"].contains("kd_spectrum"));
+    const Scene plain =
+        scene_from_json(scene_with({{"model", "phong"}, {"kd", {0.5, 0.5, 0.5}}}), "t.json", LoadContext::trusted());
+    EXPECT_FALSE(scene_to_json(plain, PathWriting::absolute())["objects"][0]["material"].contains("kd_spectrum"));
 }
 
 TEST(SpectralColours, AClassicKdSpectrumIsItsColourPerLightInTheReference) {

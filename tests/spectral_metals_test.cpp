@@ -177,15 +177,19 @@ json scene_with(const json& material) {
 
 TEST(SpectralMetals, ConductorAndFresnelRoundTripAndOldScenesWriteAsBefore) {
     const json given = {{"model", "metal"}, {"conductor", "silver"}, {"fresnel", "full"}};
-    const Scene scene = scene_from_json(scene_with(given), "t.json");
-    const json written = scene_to_json(scene)["objects"][0]["material"];
+    const Scene scene = scene_from_json(scene_with(given), "t.json", LoadContext::trusted());
+    const json written = scene_to_json(scene, PathWriting::absolute())["objects"][0]["material"];
     EXPECT_EQ(written["conductor"], "silver");
     EXPECT_EQ(written["fresnel"], "full");
     EXPECT_FALSE(written.contains("color"));
-    EXPECT_EQ(scene_from_json(scene_to_json(scene), "t.json").objects[0].material, scene.objects[0].material);
+    EXPECT_EQ(scene_from_json(scene_to_json(scene, PathWriting::absolute()), "t.json", LoadContext::trusted())
+                  .objects[0]
+                  .material,
+              scene.objects[0].material);
 
     const json plain = {{"model", "metal"}, {"color", {0.9, 0.6, 0.4}}};
-    const json plain_written = scene_to_json(scene_from_json(scene_with(plain), "t.json"))["objects"][0]["material"];
+    const json plain_written = scene_to_json(scene_from_json(scene_with(plain), "t.json", LoadContext::trusted()),
+                                             PathWriting::absolute())["objects"][0]["material"];
     EXPECT_FALSE(plain_written.contains("conductor"));
     EXPECT_FALSE(plain_written.contains("fresnel"));
     EXPECT_TRUE(plain_written.contains("color"));
@@ -194,7 +198,7 @@ TEST(SpectralMetals, ConductorAndFresnelRoundTripAndOldScenesWriteAsBefore) {
 TEST(SpectralMetals, InvalidFieldsAreOneLineNamingTheObjectAndField) {
     auto problem = [](const json& material) {
         try {
-            scene_from_json(scene_with(material), "t.json");
+            scene_from_json(scene_with(material), "t.json", LoadContext::trusted());
         } catch (const SceneError& e) {
             return std::string(e.what());
         }

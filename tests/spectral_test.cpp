@@ -1,4 +1,4 @@
-// Spectral lights (docs/spec.md#71-spectral-lights, issue 22): the CGATS reader,
+// Spectral lights (docs/spec.md#71-spectral-lights): the CGATS reader,
 // the CIE data from colord-data, Planck's law to XYZ to linear sRGB, and the
 // scene format's "temperature_k" and "illuminant".
 #include "reference/reference.h"
@@ -90,7 +90,7 @@ TEST(Spectral, D65OnAWhiteLambertSurfaceIsWhite) {
       "lights": [{"type": "directional", "direction": [0, 0, 1], "intensity": 1, "illuminant": "D65"}],
       "objects": [{"shape": "sphere", "center": [0, 0, 0], "radius": 1,
                    "material": {"model": "lambert", "kd": [1, 1, 1], "ka": [0, 0, 0]}}]})");
-    const Scene scene = scene_from_json(doc, "d65.json");
+    const Scene scene = scene_from_json(doc, "d65.json", LoadContext::trusted());
     const ref::ReferenceImage image = ref::render_reference(scene);
     const std::size_t centre = (16 * 33 + 16) * 3;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(image.rgb[centre + c], 1.0, 1e-4) << "channel " << c;
@@ -174,7 +174,7 @@ json scene_with_lights(const json& lights) {
 
 std::string load_error(const json& doc) {
     try {
-        scene_from_json(doc, "s.json");
+        scene_from_json(doc, "s.json", LoadContext::trusted());
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -186,7 +186,7 @@ TEST(SpectralScene, KelvinAndIlluminantLightsGetTheirRgbAndSaveAsWritten) {
         {{{"type", "directional"}, {"direction", {1, 1, 1}}, {"name", "key"}, {"temperature_k", 3200}},
          {{"type", "directional"}, {"direction", {-1, 0, 1}}, {"illuminant", "F11"}},
          {{"type", "directional"}, {"direction", {0, 1, 1}}, {"color", {1, 0.5, 0.25}}}});
-    const Scene scene = scene_from_json(doc, "s.json");
+    const Scene scene = scene_from_json(doc, "s.json", LoadContext::trusted());
     EXPECT_EQ(scene.lights[0].temperature_k, 3200.0);
     EXPECT_EQ(scene.lights[0].color, spectral::temperature_rgb(3200.0));
     EXPECT_GT(scene.lights[0].color.r, 1.0);  // luminance 1: a warm light's red exceeds 1
@@ -194,12 +194,12 @@ TEST(SpectralScene, KelvinAndIlluminantLightsGetTheirRgbAndSaveAsWritten) {
     EXPECT_EQ(scene.lights[1].color, spectral::illuminant_rgb("F11"));
     EXPECT_EQ(scene.lights[2].color, glm::dvec3(1, 0.5, 0.25));
 
-    const json saved = scene_to_json(scene);
+    const json saved = scene_to_json(scene, PathWriting::absolute());
     EXPECT_EQ(saved["lights"][0]["temperature_k"], 3200.0);
     EXPECT_FALSE(saved["lights"][0].contains("color"));
     EXPECT_EQ(saved["lights"][1]["illuminant"], "F11");
     EXPECT_FALSE(saved["lights"][1].contains("color"));
-    const Scene again = scene_from_json(saved, "saved.json");
+    const Scene again = scene_from_json(saved, "saved.json", LoadContext::trusted());
     for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(again.lights[i].color, scene.lights[i].color) << i;
 }
 

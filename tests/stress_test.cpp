@@ -1,4 +1,4 @@
-// Numerical stress test (issue 4, part 2; documented in docs/stress.md).
+// Numerical stress test (documented in docs/stress.md).
 // Every model's GLSL runs on the GPU with ONE INPUT PER PIXEL
 // (glsl/passes/stress.frag via tests/support/stress_harness.h) over more than a
 // million random and extreme inputs, and the double reference runs on exactly

@@ -1,4 +1,4 @@
-// Issue 11, class 8: Mesa's shader cache on a full (or unwritable) disk. Mesa
+// Mesa's shader cache on a full (or unwritable) disk. Mesa
 // maps its cache index; on a full filesystem a write through the mapping was
 // a SIGBUS that killed render and batch without a word. Now the run goes on
 // without the cache, with a one-line note, and the same pixels; should a

@@ -1,7 +1,6 @@
-// Issue 11: untrusted scene files and manifests, read by `render` and
-// `batch`. Classes 1 (crashes), 4 (inputs that are not regular files), 5
-// (memory before validation), 6 (error lines), 9 (NUL in a path) and 11
-// (numbers in messages). Every case asserts the exit status, the message,
+// Untrusted scene files and manifests, read by `render` and `batch`:
+// crashes, inputs that are not regular files, memory before validation,
+// error lines, a NUL in a path and numbers in messages. Every case asserts the exit status, the message,
 // that no file is created or changed and no temporary is left, and bounds on
 // time and peak memory (untrusted_harness.h). Outputs: untrusted_output_test.
 #include "test_support.h"

@@ -1,4 +1,4 @@
-// Issue 11, classes 2 and 3: outputs that would destroy inputs, outputs that
+// Outputs that would destroy inputs, outputs that
 // clash with each other however they are named, and outputs that are not
 // regular files. Before anything is written every output is resolved and
 // checked against every input and output of the run; a clash names both

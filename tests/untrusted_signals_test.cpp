@@ -1,4 +1,4 @@
-// Issue 11, class 7: SIGINT, SIGTERM and SIGHUP handled alike by `render` and
+// SIGINT, SIGTERM and SIGHUP handled alike by `render` and
 // `batch`, wherever they land (during a write, during a slow scene):
 // temporaries removed, finished files kept, the process ended by the signal
 // within about a second, one line saying how far it got.

@@ -1,4 +1,4 @@
-// Issue 11, class 10: one legal scene must not stall a class. `--scene-timeout`
+// One legal scene must not stall a class. `--scene-timeout`
 // gives render and batch a per-scene time budget, checked by the renderer
 // between draw chunks: a scene over it is one line and skipped, the batch goes
 // on, and every scene within it gives the same bytes as without a budget.

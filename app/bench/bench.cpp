@@ -131,7 +131,7 @@ private:
     void say(const std::string& text) { std::fprintf(stderr, "bench: %s\n", text.c_str()); }
 
     NamedScene load(const std::string& file) {
-        return {file, load_scene_file((fs::path(scenes_dir_) / file).string())};
+        return {file, load_scene_file((fs::path(scenes_dir_) / file).string(), LoadContext::trusted())};
     }
 
     void load_scenes() {
@@ -167,7 +167,7 @@ private:
                 if (o.material.has("color"))
                     o.material.set_vec3("color", glm::clamp(o.material.vec3("color") * (0.8 + 0.001 * i), 0.0, 1.0));
             const std::string name = "scene" + std::to_string(i);
-            write_text(tmp.file(name + ".json"), scene_to_json(s).dump(2));
+            write_text(tmp.file(name + ".json"), scene_to_json(s, PathWriting::absolute()).dump(2));
             manifest.push_back({{"scene", name + ".json"}, {"out", name + "_batch.png"}});
             scene_files.push_back(tmp.file(name + ".json"));
         }
@@ -408,7 +408,7 @@ void run_bench(const BenchOptions& options) {
         return;
     }
     if (!options.latency_only) run_figures_bench(options);
-    // The explorer latency section (issue 12): its own context, after the rest.
+    // The explorer latency section and the explorer core's costs: their own context, after the rest.
     const std::string latency = explorer_latency(options.backend).markdown() + "\n" + explorer_core_cost().markdown();
     fs::create_directories(options.out);
     write_file_atomic((fs::path(options.out) / "latency.md").string(), latency.data(), latency.size());

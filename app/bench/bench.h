@@ -1,4 +1,4 @@
-// `m3055 bench`: run time against error (issue 4, part 1).
+// `m3055 bench`: run time against error.
 #pragma once
 
 #include "gl/context.h"

@@ -20,16 +20,19 @@ namespace fs = std::filesystem;
 
 std::string find_gnuplot() { return find_program("gnuplot"); }
 
-int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script,
-                const std::string& out, const std::string& log) {
+int run_gnuplot(const std::string& gnuplot, const std::string& script, const std::string& out,
+                const std::string& log) {
+    // A single-quoted gnuplot string: a quote in the path is written twice.
+    std::string quoted_out;
+    for (const char c : out) quoted_out += c == '\'' ? std::string("''") : std::string(1, c);
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("bench: fork failed");
     if (pid == 0) {
         const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd < 0 || chdir(dir.c_str()) != 0) _exit(127);
+        if (fd < 0) _exit(127);
         dup2(fd, 1);
         dup2(fd, 2);
-        std::string program = gnuplot, e = "-e", set_out = "out='" + out + "'", file = script;
+        std::string program = gnuplot, e = "-e", set_out = "out='" + quoted_out + "'", file = script;
         char* argv[] = {program.data(), e.data(), set_out.data(), file.data(), nullptr};
         execv(program.c_str(), argv);
         _exit(127);
@@ -56,7 +59,8 @@ PlotOutcome write_plot(const std::string& dir, const std::vector<PlotPoint>& poi
     // gnuplot writes its output as it goes: draw into a temporary name, then rename.
     const std::string partial = ".bench.png." + std::to_string(getpid()) + ".partial";
     const fs::path partial_path = fs::path(dir) / partial, log = fs::path(dir) / (partial + ".log");
-    const int status = run_gnuplot(gnuplot, dir, "bench.gp", partial, log.string());
+    const int status =
+        run_gnuplot(gnuplot, (fs::path(dir) / "bench.gp").string(), partial_path.string(), log.string());
     const std::string message = status == 0 ? "" : first_line(log.string());
     std::error_code ignored;
     fs::remove(log, ignored);

@@ -126,7 +126,7 @@ LatencyReport explorer_latency(Backend backend) {
 }
 
 std::string LatencyReport::markdown() const {
-    std::string md = "## Explorer latency (issue 12)\n\n";
+    std::string md = "## Explorer latency\n\n";
     md += "Edit to finished pixels (render + glFinish) per step of a scripted session: every model, every light "
           "type and preset, 3 object additions, 50 slider moves; 512 x 320 x 5 bits; " + device +
           "; Mesa's shader cache off.\n\n";

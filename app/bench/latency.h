@@ -1,9 +1,9 @@
-// `m3055 bench`'s explorer latency section (issue 12): a scripted session
+// `m3055 bench`'s explorer latency section: a scripted session
 // through every model, every light type and preset, 3 object additions and 50
 // slider moves, each step timed from the edit to finished pixels (render +
 // glFinish, as the explorer draws a frame), once compiling each new shader
-// specialization before drawing (before issue 12) and once drawing with the
-// general program while the specialized one waits for idle time (after).
+// specialization before drawing (as the explorer first did) and once drawing
+// with the general program while the specialized one waits for idle time.
 #pragma once
 
 #include "gl/context.h"

@@ -32,9 +32,9 @@ std::string gnuplot_script(const std::vector<PlotPoint>& points, const std::stri
 
 // gnuplot on $PATH, or "".
 std::string find_gnuplot();
-// `gnuplot -e "out='OUT'" SCRIPT` in `dir`, stdout and stderr into `log`;
-// returns the exit status (127: it could not be started).
-int run_gnuplot(const std::string& gnuplot, const std::string& dir, const std::string& script,
+// `gnuplot -e "out='OUT'" SCRIPT`, stdout and stderr into `log`; returns the
+// exit status (127: it could not be started).
+int run_gnuplot(const std::string& gnuplot, const std::string& script,
                 const std::string& out, const std::string& log);
 // The first line of `path` with text in it (gnuplot's error message).
 std::string first_line(const std::string& path);

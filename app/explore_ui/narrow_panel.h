@@ -1,7 +1,7 @@
 // The side panel when it is narrower than its usual kSideWidth (three panes at
 // 1:1 at 1280 x 720 leave it 244 px; at 1920 x 1080 one pane at 3x leaves it
 // and the plots under it a 376-px column, explore/layout.h): no label or text may
-// be cut (issue 20 item 6), so labelled widgets put their label on a line of
+// be cut, so labelled widgets put their label on a line of
 // its own above them and take the whole width, and rows of buttons wrap.
 // On a panel of the usual width everything is drawn as before (same labels,
 // same IDs, same rows).

@@ -1,4 +1,4 @@
-// The scanline profile (issue 12): A's display levels along one row, per
+// The scanline profile: A's display levels along one row, per
 // channel, as a step plot, so the M3055's 32 steps are seen as steps. The
 // numbers are renderer/analysis/pixel_probe.h's row_profile of the display
 // readback the pixel probe uses.

@@ -241,7 +241,7 @@ bool lobe_editor(const char* id, std::vector<Lobe>* lobes, const LobeForm& form,
         if (tooltip_due() && !form.value_help.empty())
             ImGui::SetTooltip("%s, %s", form.value_help.c_str(), form.value.text().c_str());
         // The remove button only where a lobe may go (else "+ lobe" would
-        // join this row, past the panel's edge: issue 20's "+ lob").
+        // join this row, past the panel's edge, cut to "+ lob").
         bool removed = false;
         if (static_cast<int>(lobes->size()) > min_lobes) {
             ImGui::SameLine();

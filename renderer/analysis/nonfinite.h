@@ -1,4 +1,4 @@
-// Pixels of a render that are not finite numbers (issue 19 item 3): any .brdf
+// Pixels of a render that are not finite numbers: any .brdf
 // material can make NaN or infinite values, which the display's quantization
 // turns into some level or other; grading fails the image check on them,
 // the explorer warns and its probe marks them, and

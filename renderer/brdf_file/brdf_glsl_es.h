@@ -1,5 +1,5 @@
 // A .brdf file's shader block, written in desktop GLSL, translated to GLSL ES
-// 3.00 (WebGL2, issue 21). Desktop GLSL (4.20 §4.1.10, "Implicit
+// 3.00 (WebGL2). Desktop GLSL (4.20 §4.1.10, "Implicit
 // Conversions") converts int -> float, int -> uint and uint -> float (and
 // their vectors) where an operator, an initializer, an assignment, a return
 // or a function's argument needs it; GLSL ES 3.00 has no implicit conversion

@@ -73,10 +73,11 @@ std::string BrdfModel::field(std::string_view name) const {
     return std::string();
 }
 
-const BrdfModel& load_brdf_model(const std::string& path) {
+const BrdfModel& load_brdf_model(const io::InputPath& file_name) {
+    const std::string& path = file_name.path;
     std::string text;
     try {
-        text = io::read_input_file(path, std::size_t(1) << 20);
+        text = io::read_input_file(file_name, std::size_t(1) << 20);
     } catch (const io::InputError& e) {
         throw BrdfError(e.what());
     }
@@ -85,7 +86,7 @@ const BrdfModel& load_brdf_model(const std::string& path) {
     const std::string key = (ec ? path : canonical.string()) + "\n" + text;
     for (const Loaded& l : loaded())
         if (l.key == key) return l.model;
-    BrdfFile file = parse_brdf(text, text::quote_name(path));
+    BrdfFile file = parse_brdf(text, text::quote_name(file_name.shown));
     ModelTable& table = mutable_model_table();
     const int id = static_cast<int>(table.models().size());  // the id add() gives it
     const ModelSpec* spec = nullptr;
@@ -97,6 +98,8 @@ const BrdfModel& load_brdf_model(const std::string& path) {
     loaded().push_back({BrdfModel{spec, std::move(file), path}, key});
     return loaded().back().model;
 }
+
+const BrdfModel& load_brdf_model(const std::string& path) { return load_brdf_model(io::InputPath::as_given(path)); }
 
 const BrdfModel* find_brdf_model(const ModelSpec& spec) {
     for (const Loaded& l : loaded())

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "brdf_file/brdf_file.h"
+#include "io/input_path.h"
 #include "models/material.h"
 
 #include <string>
@@ -19,7 +20,7 @@ struct ModelSpec;
 struct BrdfModel {
     const ModelSpec* spec = nullptr;
     BrdfFile file;
-    std::string path;  // as given to load_brdf_model
+    std::string path;  // where load_brdf_model read it (InputPath::path)
     // The table parameter holding the file's parameter `name` ("" if none).
     std::string field(std::string_view name) const;
 };
@@ -28,6 +29,8 @@ struct BrdfModel {
 // new or changed). Throws BrdfError ("FILE:LINE: problem"). Call from the
 // thread that renders (models/model_table.h).
 const BrdfModel& load_brdf_model(const std::string& path);
+// The same for a file opened at `file.path`, its messages naming `file.shown`.
+const BrdfModel& load_brdf_model(const io::InputPath& file);
 
 // The file behind a table entry; nullptr for a built-in model.
 const BrdfModel* find_brdf_model(const ModelSpec& spec);

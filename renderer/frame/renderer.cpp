@@ -2,49 +2,23 @@
 
 #include "frame/frame_sequence.h"
 #include "geometry/mesh.h"
-#include "gl/gl_object.h"
 #include "gl/program.h"
-#include "models/model_spec.h"
 #include "passes/camera_frame.h"
+#include "passes/draw_chunks.h"
 #include "passes/frame_targets.h"
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
+#include "passes/sphere_pass.h"
 #include "passes/translucent_blend.h"
 #include "models/material.h"
 #include "scene/presets.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
-#include <cmath>
 #include <set>
 #include <stdexcept>
 
 namespace m3055 {
-namespace {
-
-// Per-instance data of the sphere quads (glsl/passes/sphere.vert).
-struct SphereInstance {
-    float sphere[4];  // centre, radius
-    float rect[4];    // NDC rectangle
-    int material;     // material record index = object index
-};
-
-// Back-to-front key of a sphere: the power of the eye with respect to it,
-// |eye - c|^2 - r^2. For disjoint spheres the radical plane separates them, and
-// the eye is on the side of the sphere with the smaller power, so this order is
-// exact per pixel (sorting centres by distance is not, for unequal radii).
-// Orthographic: the eye is at infinity along -f, where the order is by the
-// centres' depth along f, then by the power.
-double far_to_near_key(const CameraFrame& frame, const Object& object) {
-    const dvec3 d = object.center - frame.position;
-    if (frame.projection == Projection::orthographic) return glm::dot(d, frame.forward);
-    return glm::dot(d, d) - object.radius * object.radius;
-}
-
-}  // namespace
-
 namespace {
 // Every pass of the general programs: opaque and translucent, spheres and
 // meshes, directional, point and spot lights.
@@ -81,8 +55,7 @@ struct Renderer::Impl {
     ProgramCache& programs;
     FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
-    GlBuffer instance_buffer;
-    GlVertexArray sphere_vao;
+    SpherePass spheres;    // passes/sphere_pass.h
     ShaderMode shader_mode = ShaderMode::specialized;
     TranslucentBlend blend;       // set_translucent_blend; default_translucent_blend at first
     TranslucentBlender blender;   // the two-pass draws
@@ -93,26 +66,7 @@ struct Renderer::Impl {
 
     Impl(const GlApi& api, std::unique_ptr<ProgramCache> own, ProgramCache* shared)
         : gl(api), own_programs(std::move(own)), programs(shared ? *shared : *own_programs), targets(api, programs),
-          meshes(api), instance_buffer(api), sphere_vao(api), blend(default_translucent_blend(api)), blender(api) {
-        gl.BindVertexArray(sphere_vao.id());
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
-        for (unsigned attribute = 0; attribute < 3; ++attribute) {
-            gl.EnableVertexAttribArray(attribute);
-            gl.VertexAttribDivisor(attribute, 1);
-        }
-        point_instances(0);
-        gl.BindVertexArray(0);
-    }
-
-    // The sphere VAO's attributes start at instance `first` of the instance
-    // buffer (bound to GL_ARRAY_BUFFER): chunked draws have no base instance in GL 3.3.
-    void point_instances(std::size_t first) {
-        const GLsizei stride = sizeof(SphereInstance);
-        const std::size_t base = first * sizeof(SphereInstance);
-        gl.VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, (void*)(base + offsetof(SphereInstance, sphere)));
-        gl.VertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, stride, (void*)(base + offsetof(SphereInstance, rect)));
-        gl.VertexAttribIPointer(2, 1, GL_INT, stride, (void*)(base + offsetof(SphereInstance, material)));
-    }
+          meshes(api), spheres(api), blend(default_translucent_blend(api)), blender(api) {}
 
     // Draws the opaque meshes, or the index range of one translucent mesh
     // (`only`), in chunks, deadline or not: llvmpipe keeps every triangle's
@@ -151,106 +105,20 @@ struct Renderer::Impl {
         return programs.get({key.vertex, key.fragment, general});
     }
 
-    // Instances [first, first + count) of `instances` (the buffer's). With the
-    // two-pass blend, in groups of consecutive spheres whose quads, one pixel
-    // wider, do not overlap: no pixel is covered twice in a group (a sphere's
-    // quad covers a pixel once), so a multiply and an add draw per group are
-    // exact without the stencil's layers, whose cost grows with the overlap
-    // (2000 overlapping spheres: 51 s in layers against 1 s dual-source). A
-    // group is at most kMaxGroup spheres, which bounds the overlap tests.
-    void draw_instances(const std::vector<SphereInstance>& instances, std::size_t first, std::size_t count,
-                        unsigned two_pass_program) {
-        if (!two_pass_program) {
-            point_instances(first);
-            gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count));
-            return;
-        }
-        constexpr std::size_t kMaxGroup = 256;
-        const float margin_x = 2.0f / float(targets.width()), margin_y = 2.0f / float(targets.height());
-        auto apart = [&](const float* a, const float* b) {  // NDC rectangles {x0, y0, x1, y1}
-            return a[2] + margin_x < b[0] || b[2] + margin_x < a[0] || a[3] + margin_y < b[1] ||
-                   b[3] + margin_y < a[1];
-        };
-        for (std::size_t start = first, end; start < first + count; start = end) {
-            for (end = start + 1; end < first + count && end - start < kMaxGroup; ++end) {
-                bool overlaps = false;
-                for (std::size_t i = start; i < end && !overlaps; ++i)
-                    overlaps = !apart(instances[i].rect, instances[end].rect);
-                if (overlaps) break;
-            }
-            point_instances(start);
-            const GLsizei n = GLsizei(end - start);
-            blender.draw_two_pass(two_pass_program, [&] { gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n); },
-                                  true);
-        }
-    }
-
-    // `two_pass`: a translucent run drawn with the two-pass blend.
+    // A run of spheres with `program`; `two_pass`: a translucent run drawn with the two-pass blend.
     void draw_spheres(unsigned program, const std::vector<SphereInstance>& instances, const FrameSequence& sequence,
                       bool two_pass = false) {
         if (instances.empty()) return;
         sequence.use_program(program);
-        gl.BindVertexArray(sphere_vao.id());
-        gl.BindBuffer(GL_ARRAY_BUFFER, instance_buffer.id());
-        gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(SphereInstance)), instances.data(),
-                      GL_STREAM_DRAW);
-        const unsigned two_pass_program = two_pass ? program : 0;
-        // Instances are drawn, and blended, in buffer order: back to front.
-        if (!deadline && !two_pass) return gl.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances.size()));
-        if (!deadline) {
-            const Rewind rewind{*this};
-            return draw_instances(instances, 0, instances.size(), two_pass_program);
-        }
-        std::vector<DrawSpan> spans;
-        for (std::size_t i = 0; i < instances.size(); ++i)
-            spans.push_back(chunks->span_of(i, 1, 1, instances[i].rect, std::size_t(sequence.lights().count)));
-        const Rewind rewind{*this};
-        chunks->run(plan_chunks(spans, kChunkWork, 1), [&](std::size_t first, std::size_t count) {
-            draw_instances(instances, first, count, two_pass_program);
-        });
-    }
-
-    struct Rewind {  // the next draw starts at instance 0 again, even after a RenderTimeout
-        Impl& impl;
-        ~Rewind() { impl.point_instances(0); }
-    };
-
-    // The spheres on screen by pass: opaque ones, and translucent ones sorted far to near.
-    struct SphereSets {
-        std::vector<SphereInstance> opaque;
-        std::vector<const Object*> opaque_objects, translucent_objects;
-        std::vector<std::pair<double, SphereInstance>> translucent;  // (far_to_near_key, instance), sorted
-    };
-
-    SphereSets sort_spheres(const Scene& scene, const CameraFrame& frame) const {
-        SphereSets sets;
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            const Object& object = scene.objects[i];
-            if (object.shape != Shape::sphere) continue;  // a mesh: MeshPass
-            auto rect = sphere_ndc_rect(frame, object.center, object.radius);
-            if (!rect) continue;
-            SphereInstance instance{{float(object.center.x), float(object.center.y), float(object.center.z),
-                                     float(object.radius)},
-                                    {(*rect)[0], (*rect)[1], (*rect)[2], (*rect)[3]},
-                                    int(i)};
-            if (is_translucent(object.material)) {
-                sets.translucent.emplace_back(far_to_near_key(frame, object), instance);
-                sets.translucent_objects.push_back(&object);
-            } else {
-                sets.opaque.push_back(instance);
-                sets.opaque_objects.push_back(&object);
-            }
-        }
-        std::stable_sort(sets.translucent.begin(), sets.translucent.end(),
-                         [](const auto& a, const auto& b) { return a.first > b.first; });
-        return sets;
+        spheres.draw(instances, deadline ? &*chunks : nullptr, std::size_t(sequence.lights().count),
+                     two_pass ? &blender : nullptr, program, targets.width(), targets.height());
     }
 
     // Pass 1: opaque spheres and meshes, with depth.
-    void draw_opaque(const Scene& scene, const SphereSets& spheres, const FrameSequence& sequence) {
-        if (!spheres.opaque.empty()) {
-            const auto defines = specialization_defines(shader_mode, spheres.opaque_objects, scene.lights);
-            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), spheres.opaque,
+    void draw_opaque(const Scene& scene, const SphereSets& sets, const FrameSequence& sequence) {
+        if (!sets.opaque.empty()) {
+            const auto defines = specialization_defines(shader_mode, sets.opaque_objects, scene.lights);
+            draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), sets.opaque,
                          sequence);
         }
         if (!meshes.opaque_objects().empty()) {
@@ -265,12 +133,12 @@ struct Renderer::Impl {
     // dst = src0 + src1 * dst: dual-source blending, or the same in two draws
     // per layer (passes/translucent_blend.h). Spheres and meshes merged far to
     // near: runs of spheres between meshes. Skipped when there are none.
-    void draw_translucent(const Scene& scene, const SphereSets& spheres, const FrameSequence& sequence) {
-        if (spheres.translucent.empty() && meshes.translucent().empty()) return;
+    void draw_translucent(const Scene& scene, const SphereSets& sets, const FrameSequence& sequence) {
+        if (sets.translucent.empty() && meshes.translucent().empty()) return;
         gl.DepthMask(GL_FALSE);
         blender.begin(blend);
         const bool two_pass = blend == TranslucentBlend::two_pass;
-        auto defines = specialization_defines(shader_mode, spheres.translucent_objects, scene.lights);
+        auto defines = specialization_defines(shader_mode, sets.translucent_objects, scene.lights);
         defines.push_back("TRANSLUCENT_PASS");
         auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
         mesh_defines.push_back("TRANSLUCENT_PASS");
@@ -281,7 +149,7 @@ struct Renderer::Impl {
         std::vector<MeshPass::Translucent> mesh_order = meshes.translucent();
         std::stable_sort(mesh_order.begin(), mesh_order.end(),
                          [](const auto& a, const auto& b) { return a.key > b.key; });
-        const auto& sorted = spheres.translucent;
+        const auto& sorted = sets.translucent;
         std::size_t next_sphere = 0;
         for (std::size_t m = 0; m <= mesh_order.size(); ++m) {
             std::vector<SphereInstance> run;
@@ -326,13 +194,13 @@ struct Renderer::Impl {
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
         chunks->check_deadline();  // loading the scene may have taken it all
         FrameSequence sequence(gl, targets, scene);
-        const SphereSets spheres = sort_spheres(scene, sequence.camera());
+        const SphereSets sets = sort_spheres(scene, sequence.camera());
         meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
         targets.set_stencil(blend == TranslucentBlend::two_pass);
         sequence.begin();  // background and depth cleared
-        draw_opaque(scene, spheres, sequence);
-        draw_translucent(scene, spheres, sequence);
+        draw_opaque(scene, sets, sequence);
+        draw_translucent(scene, sets, sequence);
         sequence.finish();  // Pass 3: the display's levels
     }
 };

@@ -8,8 +8,8 @@
 
 #include "gl/gl_api.h"
 #include "gl/program.h"
+#include "frame/render_error.h"
 #include "image/image.h"
-#include "passes/draw_chunks.h"  // RenderTimeout
 #include "passes/shader_plan.h"
 #include "passes/translucent_blend.h"
 #include "scene/scene.h"
@@ -33,8 +33,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Renders `scene` at scene.display.width x height. Throws std::runtime_error
-    // with the GL log (shader file name and line) if a program fails to build.
+    // Renders `scene` at scene.display.width x height. Throws ShaderError with
+    // the GL log (shader file name and line) if a program fails to build, and
+    // RenderTimeout past a deadline (frame/render_error.h).
     void render(const Scene& scene);
 
     // Specialized programs (the default) are compiled per scene shape and
@@ -47,7 +48,7 @@ public:
     // blending in the context, gives two_pass).
     void set_translucent_blend(TranslucentBlend blend);
     TranslucentBlend translucent_blend() const;
-    // A time budget for the following renders (issue 11, class 10): with a
+    // A time budget for the following renders: with a
     // deadline, each draw is split into chunks of bounded work
     // (passes/draw_chunks.h), the GPU is waited for between them, and render()
     // throws RenderTimeout at the first boundary past the deadline. The pixels

@@ -3,6 +3,7 @@
 
 #include "gl/gl_api.h"
 #include "gl/gl_object.h"
+#include "gl/shader_error.h"
 
 #include <cstdint>
 #include <map>
@@ -19,14 +20,6 @@ struct ProgramKey {
     // it): the generated GLSL changes when a model is added at run time.
     std::uint64_t table_revision = 0;
     bool operator<(const ProgramKey& other) const;
-};
-
-// A program that does not compile or link: a broken build or driver, never an
-// input file. what() is the GL log, several lines, each naming glsl/FILE:LINE;
-// the commands print it whole (other errors are one line, io/message_text.h).
-class ShaderError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
 };
 
 // How every command (and the page) prints an error: "m3055: " and what() on

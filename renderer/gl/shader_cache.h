@@ -1,4 +1,4 @@
-// Mesa's on-disk shader cache on a disk that is full (issue 11, class 8).
+// Mesa's on-disk shader cache on a disk that is full.
 // Mesa maps its cache index file into memory; when the filesystem cannot
 // allocate the pages, the first write through that mapping is a SIGBUS, which
 // ends the process without a word. Checked before the first GL context is

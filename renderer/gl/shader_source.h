@@ -24,7 +24,7 @@ using ExtraSources = std::vector<std::pair<std::string, std::string>>;
 // desktop program compiles. es: "#version 300 es" with highp defaults for
 // float, int and sampler2D (GLSL ES 3.00 has no default float precision in
 // fragment shaders, and float textures need highp samplers) and M3055_GLSL_ES
-// defined: what WebGL2 compiles (issue 21).
+// defined: what WebGL2 compiles.
 enum class GlslTarget { desktop, es };
 // What this build's contexts compile: WebGL2's in the browser build (Emscripten).
 #ifdef __EMSCRIPTEN__

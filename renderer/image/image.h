@@ -3,6 +3,8 @@
 // failed run leaves no partial file and never destroys an existing one.
 #pragma once
 
+#include "io/input_path.h"
+
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -64,5 +66,8 @@ FileContents pfm_file(const std::string& path, const RgbFloatImage& image);
 // Readers, for tests and tools. Throw ImageError on failure.
 Rgb8Image read_png(const std::string& path);
 RgbFloatImage read_pfm(const std::string& path);
+// The same for a file opened at `file.path`, every message naming `file.shown`.
+Rgb8Image read_png(const io::InputPath& file);
+RgbFloatImage read_pfm(const io::InputPath& file);
 
 }  // namespace m3055

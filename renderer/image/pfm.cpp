@@ -79,11 +79,11 @@ private:
     std::size_t pos_ = 0;
 };
 
-std::vector<std::uint8_t> read_all(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ImageError(path + ": cannot open: " + std::strerror(errno));
+std::vector<std::uint8_t> read_all(const io::InputPath& file) {
+    std::ifstream in(file.path, std::ios::binary);
+    if (!in) throw ImageError(file.shown + ": cannot open: " + std::strerror(errno));
     std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw ImageError(path + ": cannot read: " + std::strerror(errno));
+    if (in.bad()) throw ImageError(file.shown + ": cannot read: " + std::strerror(errno));
     return bytes;
 }
 
@@ -135,9 +135,11 @@ void write_pfm(const std::string& path, const RgbFloatImage& image) {
     write_file_atomic(path, bytes.data(), bytes.size());
 }
 
-RgbFloatImage read_pfm(const std::string& path) {
-    const std::vector<std::uint8_t> bytes = read_all(path);
-    HeaderReader header(bytes, path);
+RgbFloatImage read_pfm(const std::string& path) { return read_pfm(io::InputPath::as_given(path)); }
+
+RgbFloatImage read_pfm(const io::InputPath& file) {
+    const std::vector<std::uint8_t> bytes = read_all(file);
+    HeaderReader header(bytes, file.shown);
     const std::string magic = header.token("magic");
     if (magic != "PF" && magic != "Pf") header.reject("magic is '" + magic.substr(0, 8) + "', not PF or Pf");
     const int channels = magic == "PF" ? 3 : 1;

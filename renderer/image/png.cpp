@@ -101,13 +101,15 @@ void write_png(const std::string& path, const Rgb8Image& image) {
     write_file_atomic(path, bytes.data(), bytes.size());
 }
 
-Rgb8Image read_png(const std::string& path) {
+Rgb8Image read_png(const std::string& path) { return read_png(io::InputPath::as_given(path)); }
+
+Rgb8Image read_png(const io::InputPath& file) {
     int width = 0, height = 0, channels_in_file = 0;
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
-        stbi_load(path.c_str(), &width, &height, &channels_in_file, 3), stbi_image_free);
+        stbi_load(file.path.c_str(), &width, &height, &channels_in_file, 3), stbi_image_free);
     if (!data) {
         const char* reason = stbi_failure_reason();
-        throw ImageError(path + ": cannot read PNG: " + (reason ? reason : "unknown error"));
+        throw ImageError(file.shown + ": cannot read PNG: " + (reason ? reason : "unknown error"));
     }
     Rgb8Image image;
     image.width = width;

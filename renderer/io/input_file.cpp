@@ -49,24 +49,26 @@ const char* describe_file_type(unsigned mode) {
     }
 }
 
-std::string read_input_file(const std::string& path, std::size_t max_bytes) {
-    if (path.empty()) fail(path, "cannot read file: the name is empty");
-    if (path.find('\0') != std::string::npos) fail(path, "cannot read file: the name holds a NUL character");
+std::string read_input_file(const InputPath& file_name, std::size_t max_bytes) {
+    const std::string& path = file_name.path;
+    const std::string& shown = file_name.shown;
+    if (shown.empty()) fail(shown, "cannot read file: the name is empty");
+    if (path.find('\0') != std::string::npos) fail(shown, "cannot read file: the name holds a NUL character");
     struct stat named {};
-    if (::stat(path.c_str(), &named) != 0) fail(path, std::string("cannot read file: ") + std::strerror(errno));
+    if (::stat(path.c_str(), &named) != 0) fail(shown, std::string("cannot read file: ") + std::strerror(errno));
     if (!S_ISREG(named.st_mode))
-        fail(path, std::string("cannot read file: it is ") + describe_file_type(named.st_mode) + ", not a regular file");
-    check_size(path, std::size_t(named.st_size), max_bytes);
+        fail(shown, std::string("cannot read file: it is ") + describe_file_type(named.st_mode) + ", not a regular file");
+    check_size(shown, std::size_t(named.st_size), max_bytes);
 
     // O_NONBLOCK: should the name have been swapped for a FIFO since stat(),
     // open() still returns at once; fstat() then tells.
     const Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC)};
-    if (file.fd < 0) fail(path, std::string("cannot read file: ") + std::strerror(errno));
+    if (file.fd < 0) fail(shown, std::string("cannot read file: ") + std::strerror(errno));
     struct stat opened {};
-    if (::fstat(file.fd, &opened) != 0) fail(path, std::string("cannot read file: ") + std::strerror(errno));
+    if (::fstat(file.fd, &opened) != 0) fail(shown, std::string("cannot read file: ") + std::strerror(errno));
     if (!S_ISREG(opened.st_mode))
-        fail(path, std::string("cannot read file: it is ") + describe_file_type(opened.st_mode) + ", not a regular file");
-    check_size(path, std::size_t(opened.st_size), max_bytes);
+        fail(shown, std::string("cannot read file: it is ") + describe_file_type(opened.st_mode) + ", not a regular file");
+    check_size(shown, std::size_t(opened.st_size), max_bytes);
 
     // Sized from fstat, read to the end (or one byte past the limit, for files
     // such as those in /proc that report size 0 or grow while being read).
@@ -77,13 +79,17 @@ std::string read_input_file(const std::string& path, std::size_t max_bytes) {
         const ssize_t got = ::read(file.fd, buffer, sizeof buffer);
         if (got < 0) {
             if (errno == EINTR) continue;
-            fail(path, std::string("cannot read file: ") + std::strerror(errno));
+            fail(shown, std::string("cannot read file: ") + std::strerror(errno));
         }
         if (got == 0) break;
         text.append(buffer, std::size_t(got));
-        check_size(path, text.size(), max_bytes);
+        check_size(shown, text.size(), max_bytes);
     }
     return text;
+}
+
+std::string read_input_file(const std::string& path, std::size_t max_bytes) {
+    return read_input_file(InputPath::as_given(path), max_bytes);
 }
 
 }  // namespace m3055::io

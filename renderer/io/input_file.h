@@ -2,6 +2,8 @@
 // path names, the read neither blocks nor runs on without end.
 #pragma once
 
+#include "io/input_path.h"
+
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -26,6 +28,8 @@ public:
 // before anything is read, and the read stops there should it grow meanwhile.
 // Throws InputError naming the file and the reason.
 std::string read_input_file(const std::string& path, std::size_t max_bytes = kMaxInputBytes);
+// The same for a file opened at `file.path`, every message naming `file.shown`.
+std::string read_input_file(const InputPath& file, std::size_t max_bytes = kMaxInputBytes);
 
 // "a FIFO", "a character device", "a folder", ... for a stat mode.
 const char* describe_file_type(unsigned mode);

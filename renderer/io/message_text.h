@@ -1,5 +1,5 @@
 // Text that goes into an error message: one line, valid UTF-8, bounded.
-// Scene files, manifests and file names are untrusted (issue 11): a name may
+// Scene files, manifests and file names are untrusted: a name may
 // hold a newline, a scene may be UTF-16 or Latin-1, a value may be 10 MB
 // long. Every message is built from these pieces, so whatever the input, a
 // terminal or a log gets one readable line of at most kMaxLineBytes.

@@ -1,5 +1,5 @@
 // The files one run reads and writes, checked together before anything is
-// written (issue 11): no output may be an input or another output of the run,
+// written: no output may be an input or another output of the run,
 // however it is named (relative or absolute, through a symlinked folder, a
 // hard link, a second name on a case-insensitive disk), and an output goes
 // only to a regular file or a new name.

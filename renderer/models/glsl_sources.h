@@ -1,5 +1,5 @@
 // The glsl/ folder, embedded into the binary at build time
-// (cmake/embed_glsl.cmake), so the program needs no shader files at run time.
+// (cmake/embed_files.cmake), so the program needs no shader files at run time.
 #pragma once
 
 #include <string>

@@ -1,10 +1,11 @@
 // Draws split into chunks of bounded work, so that a render with a deadline
-// (Renderer::set_deadline, issue 11 class 10) can stop between them: a legal
+// (Renderer::set_deadline) can stop between them: a legal
 // scene of 100 000 overlapping screen-filling translucent spheres under 16
 // spot lights would take hours in one draw call on llvmpipe.
 #pragma once
 
 #include "gl/gl_api.h"
+#include "passes/render_timeout.h"
 
 #include <chrono>
 #include <cstddef>
@@ -13,12 +14,6 @@
 #include <vector>
 
 namespace m3055 {
-
-// A render passed its deadline (Renderer::set_deadline); the image is unfinished.
-class RenderTimeout : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // Estimated work, in shaded pixel-lights: a fragment shaded under L lights
 // costs 1 + L. A chunk holds at most kChunkWork: the slowest shading measured

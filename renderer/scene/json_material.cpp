@@ -92,9 +92,9 @@ json lobes_json(const LobeList& lobes, const std::string& key) {
 
 }  // namespace
 
-Material read_material(const Node& node) {
+Material read_material(const Node& node, const SceneFiles& files) {
     node.expect_object();
-    if (is_brdf_material(node)) return read_brdf_material(node);
+    if (is_brdf_material(node)) return read_brdf_material(node, files);
     const ModelTable& table = model_table();
     // The models a scene names: every entry but the .brdf files' (named "brdf" + "file").
     std::vector<std::string> names;
@@ -112,9 +112,9 @@ Material read_material(const Node& node) {
     return material;
 }
 
-json material_json(const Material& material) {
+json material_json(const Material& material, const PathWriting& writing) {
     const ModelSpec& spec = material.model();
-    if (spec.family == Family::brdf) return brdf_material_json(material);
+    if (spec.family == Family::brdf) return brdf_material_json(material, writing);
     json out = {{"model", spec.name}};
     // Left out: a parameter at its default that scenes need not give, and one
     // that a given replacement stands in for ("color" of a conductor).

@@ -13,7 +13,7 @@ namespace {
 
 // What nlohmann::json allocates, in bytes with glibc's malloc (a 16-byte
 // header, 16-byte rounding) on a 64-bit system. An estimate, on the high side,
-// of the document a text would become; tests/json_parse_memory_test.cpp holds
+// of the document a text would become; tests/json_parse_test.cpp holds
 // it against the measured peak.
 constexpr std::size_t kSlot = 16;        // one json value inside an array's buffer
 constexpr std::size_t kArray = 32 + 16;  // new std::vector, and its buffer's header

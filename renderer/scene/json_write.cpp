@@ -69,13 +69,13 @@ json light_json(const Light& light) {
 
 }  // namespace
 
-json scene_to_json(const Scene& scene) {
+json scene_to_json(const Scene& scene, const PathWriting& writing) {
     json lights = json::array();
     for (const Light& light : scene.lights) lights.push_back(light_json(light));
     json objects = json::array();
     for (const Object& object : scene.objects) {
         json entry = scene_json::shape_json(object);
-        entry["material"] = scene_json::material_json(object.material);
+        entry["material"] = scene_json::material_json(object.material, writing);
         objects.push_back(std::move(entry));
     }
     json out = {{"display", display_json(scene.display)},

@@ -2,17 +2,15 @@
 // scene_json::Node so that each error is one line "SOURCE: json.path: problem".
 #include "scene/load.h"
 
-#include "scene/shape_limits.h"
 #include "io/input_file.h"
-#include "scene/json_brdf.h"
-
-#include <filesystem>
 #include "io/message_text.h"
 #include "models/model_table.h"
 #include "scene/json_material.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
+#include "scene/referenced_file.h"
+#include "scene/shape_limits.h"
 #include "spectral/blackbody.h"
 #include "spectral/cie_data.h"
 #include "spectral/colorimetry.h"
@@ -21,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace m3055 {
 
@@ -231,17 +230,16 @@ Light read_light(const Node& node) {
 
 // ---- objects (materials: scene/json_material.cpp) ---------------------------
 
-Object read_object(const Node& node) {
+Object read_object(const Node& node, const scene_json::SceneFiles& files) {
     node.expect_object();
     Object object;
     scene_json::read_shape(node, object);  // shape, centre and the shape's own keys
-    object.material = scene_json::read_material(node.required("material"));
+    object.material = scene_json::read_material(node.required("material"), files);
     return object;
 }
 
-}  // namespace
-
-Scene scene_from_json(const json& doc, const std::string& source) {
+// A scene whose named files are found as `files` says.
+Scene read_scene(const json& doc, const std::string& source, const scene_json::SceneFiles& files) {
     const Node root(doc, "", source);
     root.expect_object();
     root.check_keys({"display", "background", "ambient", "camera", "lights", "objects"});
@@ -260,7 +258,7 @@ Scene scene_from_json(const json& doc, const std::string& source) {
     scene.objects.reserve(count);
     std::size_t triangles = 0;
     for (std::size_t i = 0; i < count; ++i) {
-        scene.objects.push_back(read_object(objects.at(i)));
+        scene.objects.push_back(read_object(objects.at(i), files));
         // Bounded so that no scene file can exhaust memory with meshes.
         triangles += triangle_count(scene.objects.back());
         if (triangles > kMaxSceneTriangles)
@@ -270,20 +268,25 @@ Scene scene_from_json(const json& doc, const std::string& source) {
     return scene;
 }
 
-Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+}  // namespace
+
+Scene scene_from_json(const json& doc, const std::string& source, const LoadContext& context) {
+    return read_scene(doc, source, {context, ""});
+}
+
+Scene load_scene_file(const std::string& path, const LoadContext& context, const std::vector<Override>& overrides) {
     // The file name as every message shows it: quoted with escapes when it
     // holds a newline or invalid UTF-8, its middle cut when long.
     const std::string source = text::quote_name(path);
     json doc;
     try {
-        doc = scene_json::parse_document(io::read_input_file(path), source);
+        doc = scene_json::parse_document(io::read_input_file(io::InputPath::in_folder(context.folder, path)), source);
     } catch (const io::InputError& error) {
         throw SceneError(error.what());
     }
     apply_overrides(doc, overrides, source);
-    // .brdf files named by the scene are relative to its folder.
-    const scene_json::BrdfScope brdf(std::filesystem::path(path).parent_path().string(), true);
-    return scene_from_json(doc, source);
+    // The files the scene names are relative to its folder.
+    return read_scene(doc, source, {context, std::filesystem::path(path).parent_path().string()});
 }
 
 }  // namespace m3055

@@ -3,6 +3,7 @@
 //   scene.json: objects[0].material.m: must be in [0, 10000], got -3
 #pragma once
 
+#include "scene/load_context.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -35,15 +36,18 @@ void apply_overrides(nlohmann::json& doc, const std::vector<Override>& overrides
                      const std::string& source);
 
 // Validates a JSON document and builds the Scene. `source` is the file name used
-// as the prefix of error messages.
-Scene scene_from_json(const nlohmann::json& doc, const std::string& source);
+// as the prefix of error messages; the files the scene names are relative to
+// `context.folder` and read as `context` allows (scene/load_context.h).
+Scene scene_from_json(const nlohmann::json& doc, const std::string& source, const LoadContext& context);
 
-// Reads, applies overrides, validates. Throws SceneError on any problem
-// (unreadable file, invalid JSON, validation failure).
-Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
+// Reads, applies overrides, validates. `path` and the files the scene names
+// (relative to the scene file's folder) are read as `context` says. Throws
+// SceneError on any problem (unreadable file, invalid JSON, validation
+// failure, a named file refused).
+Scene load_scene_file(const std::string& path, const LoadContext& context, const std::vector<Override>& overrides = {});
 
 // Serializes a Scene back to JSON in the docs/spec.md#7-scene-files format (round-trips
-// through scene_from_json). Used by the explorer's save.
-nlohmann::json scene_to_json(const Scene& scene);
+// through scene_from_json), the files it names written as `writing` says.
+nlohmann::json scene_to_json(const Scene& scene, const PathWriting& writing);
 
 }  // namespace m3055

@@ -22,7 +22,7 @@ public:
 struct BatchItem {
     std::size_t entry = 0;        // its index in the manifest
     std::string scene, out, raw;  // joined to the manifest's folder; raw may be empty
-    std::string problem;          // why it must be skipped (app/batch.h: check_batch_files), or ""
+    std::string problem;          // why it must be skipped (batch/run_batch.h: check_batch_files), or ""
 };
 
 // Reads and validates the whole manifest before anything is rendered, so a

@@ -1,5 +1,5 @@
 // The measured metals' data files, data/conductors/NAME.nk, embedded into the
-// binary at build time (cmake/embed_conductors.cmake), sorted by name.
+// binary at build time (cmake/embed_files.cmake), sorted by name.
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // libFuzzer target over the .brdf parser and the GLSL wrapper made from a
-// parsed file (issue 13); the property is tests/fuzz/brdf_fuzz_check.h. Built
+// parsed file; the property is tests/fuzz/brdf_fuzz_check.h. Built
 // only with clang and -DM3055_FUZZ=ON; run by scripts/fuzz after the scene
 // loader's target.
 #include "brdf_fuzz_check.h"

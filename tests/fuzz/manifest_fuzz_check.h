@@ -1,4 +1,4 @@
-// What the fuzzer checks on a batch manifest (issue 11), and the dispatch
+// What the fuzzer checks on a batch manifest, and the dispatch
 // between the two kinds of input one libFuzzer target takes:
 //     #manifest
 //     [{"scene": "a.json", "out": "a.png"}, ...]

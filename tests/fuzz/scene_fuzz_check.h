@@ -144,7 +144,7 @@ inline std::string check_loaded_scene(const Scene& scene) {
         }
     }
     if (!problem.empty()) return problem;
-    const std::string walked = first_non_finite(scene_to_json(scene));
+    const std::string walked = first_non_finite(scene_to_json(scene, PathWriting::absolute()));
     if (!walked.empty()) return "scene_to_json: " + walked + " is not finite";
     return "";
 }
@@ -181,7 +181,7 @@ inline std::string check_scene_input(const std::uint8_t* data, std::size_t size)
     try {
         nlohmann::json doc = scene_json::parse_document(input.scene, kSource);
         apply_overrides(doc, overrides, kSource);
-        scene = scene_from_json(doc, kSource);
+        scene = scene_from_json(doc, kSource, LoadContext::trusted());
     } catch (const SceneError& error) {
         return check_error_message(error.what(), true);
     } catch (const std::exception& error) {
@@ -190,9 +190,10 @@ inline std::string check_scene_input(const std::uint8_t* data, std::size_t size)
     if (std::string problem = check_loaded_scene(scene); !problem.empty()) return problem;
     // What the explorer saves must load again, to the same scene.
     try {
-        const nlohmann::json saved = scene_to_json(scene);
-        const Scene reloaded = scene_from_json(saved, kSource);
-        if (scene_to_json(reloaded) != saved) return "scene_to_json does not round-trip: " + saved.dump();
+        const nlohmann::json saved = scene_to_json(scene, PathWriting::absolute());
+        const Scene reloaded = scene_from_json(saved, kSource, LoadContext::trusted());
+        if (scene_to_json(reloaded, PathWriting::absolute()) != saved)
+            return "scene_to_json does not round-trip: " + saved.dump();
     } catch (const std::exception& error) {
         return std::string("a saved scene does not reload: ") + error.what();
     }

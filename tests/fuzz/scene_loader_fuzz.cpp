@@ -1,5 +1,5 @@
-// libFuzzer target over the scene loader and the `--set` override parser
-// (issue 6) and the batch manifest loader (issue 11): an input starting with
+// libFuzzer target over the scene loader, the `--set` override parser and
+// the batch manifest loader: an input starting with
 // "#manifest" is a manifest (manifest_fuzz_check.h). Built only with clang and
 // -DM3055_FUZZ=ON; run by scripts/fuzz. The properties live in the headers so
 // that ctest re-checks every committed regression input

@@ -9,7 +9,7 @@
  * forks, so what wait4 reports here is the child's own peak.
  * SIGINT, SIGTERM, SIGHUP and SIGBUS sent to the launcher are passed on to
  * the child, so tests can interrupt the program through it (SIGBUS: the last
- * resort of issue 11, class 8, tested by hand). */
+ * resort against a full disk under the shader cache, tested by hand). */
 #define _GNU_SOURCE
 #include <errno.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-// What every hostile-input test asserts (issue 11, "Tests and evidence"):
+// What every hostile-input test asserts:
 // the exit status, the message (every stderr line one line of valid UTF-8,
 // at most 300 bytes), no file created, every pre-existing file byte-identical,
 // no temporary left, and bounds on time and peak memory measured through
@@ -45,7 +45,7 @@ RunResult expect_refused(const std::string& folder, const std::vector<std::strin
 void write_scene(const std::string& path, const std::string& name = "spec_example.json", int width = 64,
                  int height = 40);
 
-// A legal scene that stalls a renderer (issue 11, class 10): `spheres`
+// A legal scene that stalls a renderer: `spheres`
 // overlapping screen-filling translucent spheres under 16 spot lights. 20 000
 // take minutes at 512 x 320, far over any time budget the tests give. (The
 // object limit, 100 000, took 8 s to load in the sanitizer build before a

@@ -1,8 +1,9 @@
-// `m3055 batch`: many scenes in one process (issue 4, "Batch capture"); the
+// `m3055 batch`: many scenes in one process, through one Capture; the
 // manifest format is in scene/manifest.h.
 #pragma once
 
-#include "capture.h"
+#include "capture/capture.h"
+#include "scene/load_context.h"
 #include "scene/manifest.h"
 
 #include <functional>
@@ -24,7 +25,7 @@ using BatchProgress = std::function<void(std::size_t index, const BatchItem& ite
 
 struct BatchOptions {
     unsigned encoder_threads = 0;  // 0: one per core
-    double scene_timeout_s = 0;    // each scene's time budget (capture.h: scene_deadline); 0: none
+    double scene_timeout_s = 0;    // each scene's time budget (capture/capture.h: scene_deadline); 0: none
     // Bytes of finished images (display, PNG, raw floats) waiting to be
     // written; a scene is read back only when its images fit beside them, or
     // when none are waiting (docs/limits.md: the memory bound of batch).
@@ -33,13 +34,14 @@ struct BatchOptions {
     // place (app/interrupt.h counts them there, so its count is exact).
     std::function<void()> on_written;
     // Called (on the rendering thread) for a scene whose render has NaN or
-    // infinite pixels, with the warning line (capture.h: nonfinite_warning);
+    // infinite pixels, with the warning line (capture/capture.h: nonfinite_warning);
     // the scene is written all the same and does not count as failed.
     std::function<void(std::size_t index, const BatchItem& item, const std::string& warning)> warned;
 };
 
 // Renders every item with one context and renderer, made by `capture` when
-// the first scene is drawn (never, when no scene loads). First every scene is
+// the first scene is drawn (never, when no scene loads); each scene is loaded
+// as `scenes` allows (LoadContext::for_class). First every scene is
 // loaded once without a context: an item with a `problem`, or whose scene
 // fails to load, is reported then (so every such line comes first, and a
 // hostile scene costs only its own loading). Then the rest are rendered in
@@ -51,6 +53,6 @@ struct BatchOptions {
 // image_memory_budget. An interrupt ends the process wherever it is
 // (app/interrupt.h).
 std::size_t run_batch(const std::function<Capture&()>& capture, const std::vector<BatchItem>& items,
-                      const BatchProgress& progress, const BatchOptions& options = {});
+                      const LoadContext& scenes, const BatchProgress& progress, const BatchOptions& options = {});
 
 }  // namespace m3055

@@ -1,4 +1,4 @@
-#include "io/scene_inputs.h"
+#include "batch/scene_inputs.h"
 
 #include "io/message_text.h"
 
@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace m3055::io {
+namespace m3055 {
 
 namespace fs = std::filesystem;
 
@@ -59,4 +59,4 @@ std::string output_for(const std::string& scene, const std::string& out_dir, con
     return (fs::path(out_dir) / fs::path(scene).stem()).string() + extension;
 }
 
-}  // namespace m3055::io
+}  // namespace m3055

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace m3055::io {
+namespace m3055 {
 
 // Throws std::runtime_error with one line for a folder that cannot be read or
 // a pattern or name that matches nothing.
@@ -17,4 +17,4 @@ std::vector<std::string> expand_scene_inputs(const std::vector<std::string>& inp
 // "DIR/NAME.png" for "some/where/NAME.json" (`extension` with its dot).
 std::string output_for(const std::string& scene, const std::string& out_dir, const std::string& extension);
 
-}  // namespace m3055::io
+}  // namespace m3055

@@ -1,5 +1,5 @@
-// Headless capture shared by `render`, `figures` (and later `batch`): one
-// context and renderer, reused for many scenes.
+// Headless capture shared by `render`, `figures`, `batch`, `compare` and
+// `grade`: one context and renderer, reused for many scenes.
 #pragma once
 
 #include "gl/context.h"
@@ -21,7 +21,7 @@ namespace m3055 {
 void write_capture_files(const std::string& png_path, const Rgb8Image& display, const std::string& raw_path,
                          const RgbFloatImage& raw, const std::function<void()>& committed = {});
 
-// A scene's time budget (`--scene-timeout SECONDS`, issue 11 class 10): from
+// A scene's time budget (`--scene-timeout SECONDS`): from
 // when it starts loading to its last draw; encoding and writing the files are
 // not counted (bounded by the display's size). 0: no limit.
 std::optional<std::chrono::steady_clock::time_point> scene_deadline(std::chrono::steady_clock::time_point start,
@@ -35,7 +35,9 @@ std::string nonfinite_warning(const std::string& scene_path, const NonFinite& no
 
 class Capture {
 public:
-    explicit Capture(Backend backend);
+    // `context`: made by the caller, who decides what the process does
+    // before its first context (app/headless_context.h).
+    explicit Capture(std::unique_ptr<HeadlessContext> context);
     // Renders `scene` and writes the PNG (and the PFM when raw_path is not
     // empty), each atomically. Throws on any failure; writes nothing then.
     // `nonfinite`, when given: the render's NaN and infinite pixels, counted.

@@ -1,6 +1,6 @@
-#include "batch.h"
+#include "batch/run_batch.h"
 
-#include "gl/program.h"
+#include "frame/render_error.h"
 #include "image/image.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
@@ -110,7 +110,7 @@ std::size_t images_in_flight(int width, int height, bool raw) {
 // no GL context yet. A broken or hostile scene is refused at the memory cost
 // of loading it alone (docs/limits.md), its line comes at once, and a
 // manifest of broken scenes never starts a context. Returns each item's error.
-std::vector<std::string> check_scenes(const std::vector<BatchItem>& items) {
+std::vector<std::string> check_scenes(const std::vector<BatchItem>& items, const LoadContext& scenes) {
     std::vector<std::string> errors(items.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (!items[i].problem.empty()) {
@@ -118,7 +118,7 @@ std::vector<std::string> check_scenes(const std::vector<BatchItem>& items) {
             continue;
         }
         try {
-            load_scene_file(items[i].scene);
+            load_scene_file(items[i].scene, scenes);
         } catch (const std::exception& e) {
             errors[i] = e.what();
         }
@@ -134,9 +134,9 @@ std::vector<std::string> check_scenes(const std::vector<BatchItem>& items) {
 }  // namespace
 
 std::size_t run_batch(const std::function<Capture&()>& capture, const std::vector<BatchItem>& items,
-                      const BatchProgress& progress, const BatchOptions& options) {
+                      const LoadContext& scenes, const BatchProgress& progress, const BatchOptions& options) {
     std::size_t failures = 0;
-    const std::vector<std::string> errors = check_scenes(items);
+    const std::vector<std::string> errors = check_scenes(items, scenes);
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (errors[i].empty()) continue;
         ++failures;
@@ -172,7 +172,7 @@ std::size_t run_batch(const std::function<Capture&()>& capture, const std::vecto
         std::promise<std::string> failed;
         try {
             const auto start = std::chrono::steady_clock::now();
-            const Scene scene = load_scene_file(item.scene);
+            const Scene scene = load_scene_file(item.scene, scenes);
             Renderer& renderer = capture().renderer();
             renderer.set_deadline(scene_deadline(start, options.scene_timeout_s));
             try {

@@ -1,31 +1,14 @@
-#include "capture.h"
+#include "capture/capture.h"
 
-#include "interrupt.h"
-#include "progress.h"
-
-#include "gl/shader_cache.h"
 #include "image/image.h"
 #include "io/message_text.h"
 
-#include <iostream>
+#include <utility>
 
 namespace m3055 {
 
-namespace {
-
-// Before the first context: a shader cache on a full or unwritable disk is
-// switched off (Mesa would die of SIGBUS writing it), with a one-line note.
-std::unique_ptr<HeadlessContext> make_context(Backend backend) {
-    const std::string note = disable_shader_cache_if_unusable();
-    if (!note.empty()) std::cerr << error_line(note) << "\n";
-    report_bus_errors(mesa_shader_cache_folder());
-    return HeadlessContext::create(backend);
-}
-
-}  // namespace
-
-Capture::Capture(Backend backend)
-    : context_(make_context(backend)), renderer_(std::make_unique<Renderer>(context_->gl())) {}
+Capture::Capture(std::unique_ptr<HeadlessContext> context)
+    : context_(std::move(context)), renderer_(std::make_unique<Renderer>(context_->gl())) {}
 
 void Capture::render_to_files(const Scene& scene, const std::string& png_path, const std::string& raw_path,
                               const std::function<void()>& committed, NonFinite* nonfinite) {
