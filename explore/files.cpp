@@ -3,6 +3,7 @@
 #include "explore/edits.h"
 #include "explore/figure_scenes.h"
 #include "explore/operations.h"
+#include "frame/renderer.h"
 #include "image/image.h"
 #include "scene/load.h"
 
@@ -32,6 +33,7 @@ bool apply(Explorer& e, const command::LoadScene& c) {
     Scene scene;
     try {
         scene = load_scene_file(c.path, LoadContext::trusted());
+        require_drawable(scene, c.path);
     } catch (const std::exception& error) {  // SceneError names file and JSON path
         messages.error = messages.load_error = error.what();
         if (c.error_dialog) e.view.dialog = Dialog::load_error;

@@ -74,6 +74,21 @@ TEST(Batch, BadSceneIsReportedAndSkippedOthersStillRender) {
     EXPECT_NE(result.err.find("2 of 4 scenes failed"), std::string::npos) << result.err;
 }
 
+TEST(Batch, ALightTheGpuDoesNotDrawYetIsReportedBeforeAnythingRenders) {
+    TempDir dir;
+    write_scene(dir.file("good.json"), "spec_example.json", 64, 40);
+    nlohmann::json sky = nlohmann::json::parse(read_text(source_path("scenes/spec_example.json")));
+    sky["lights"].push_back({{"type", "sky"}, {"intensity", 0.3}});
+    write_text(dir.file("sky.json"), sky.dump());
+    write_text(dir.file("m.json"), R"([{"scene": "sky.json", "out": "sky.png"}, {"scene": "good.json", "out": "good.png"}])");
+    const RunResult result = run_m3055({"batch", dir.file("m.json")});
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_TRUE(file_exists(dir.file("good.png")));
+    EXPECT_FALSE(file_exists(dir.file("sky.png")));
+    EXPECT_NE(result.err.find("sky.json: lights[1].type: sky lights are not drawn by this build yet\n"), std::string::npos)
+        << result.err;
+}
+
 TEST(Batch, PathsAreRelativeToTheManifestsFolder) {
     TempDir dir;
     fs::create_directories(dir.file("jobs"));

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace m3055 {
 namespace {
@@ -59,6 +60,17 @@ TEST(KeyToFillRatio, SaysWhichLightIsMissing) {
     EXPECT_EQ(key_to_fill_ratio(with_lights({named("fill", 1.0)})).problem, "no light named \"key\"");
     EXPECT_EQ(key_to_fill_ratio(with_lights({named("key", 1.0), named("back", 1.0)})).problem,
               "no light named \"fill\"");
+}
+
+TEST(KeyToFillRatio, OfAnAreaOrSkyLightIsNotComputedYetAndSaysSo) {
+    Light key = named("key", 1.0), fill = named("fill", 0.5);
+    key.type = LightType::rect;
+    EXPECT_EQ(key_to_fill_ratio(with_lights({key, fill})).problem,
+              "the key light is a rect light: its illuminance is not computed by this build yet");
+    fill.type = LightType::sky;
+    EXPECT_EQ(key_to_fill_ratio(with_lights({named("key", 1.0), fill})).problem,
+              "the fill light is a sky light: its illuminance is not computed by this build yet");
+    EXPECT_THROW(illuminance_at(fill, dvec3(0.0)), std::invalid_argument);
 }
 
 TEST(KeyToFillRatio, OfTheThreePointPresetsIsTwoAndAHalfToOne) {

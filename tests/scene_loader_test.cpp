@@ -365,7 +365,7 @@ TEST(SceneLoader, EveryErrorClassGivesItsExactOneLineMessage) {
          "scene.json: camera.up: must not be parallel to the view direction (default [0, 1, 0])"},
         {"up zero", [](json& d) { d["camera"]["up"] = {0, 0, 0}; }, "scene.json: camera.up: must be non-zero"},
         {"light type", [](json& d) { d["lights"][0]["type"] = "area"; },
-         "scene.json: lights[0].type: must be \"directional\", \"point\" or \"spot\", got \"area\""},
+         "scene.json: lights[0].type: must be \"directional\", \"point\", \"spot\", \"rect\", \"disk\" or \"sky\", got \"area\""},
         {"attenuation on a directional light", [](json& d) { d["lights"][0]["attenuation"] = "inverse"; },
          "scene.json: lights[0].attenuation: only for point and spot lights"},
         {"direction on a point light",

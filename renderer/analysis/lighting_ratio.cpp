@@ -1,11 +1,13 @@
 #include "analysis/lighting_ratio.h"
 
 #include "reference/reference.h"
+#include "scene/area_light.h"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace m3055 {
 
@@ -20,9 +22,19 @@ int light_named(const Scene& scene, const char* name) {
     return -1;
 }
 
+// Why `light`'s illuminance is not computed, or "": an area or sky light's
+// would be an integral over the emitter, which this function does not do yet.
+std::string no_illuminance(const Light& light, const char* role) {
+    if (!is_area_light(light.type)) return {};
+    return std::string("the ") + role + " light is a " + to_string(light.type) +
+           " light: its illuminance is not computed by this build yet";
+}
+
 }  // namespace
 
 double illuminance_at(const Light& light, const dvec3& point) {
+    if (const std::string problem = no_illuminance(light, "given"); !problem.empty())
+        throw std::invalid_argument(problem);
     // ref::sample_light's scale is a_l c_l att C_spot: the same numbers the shading uses.
     return luminance(ref::sample_light(light, point).scale);
 }
@@ -53,6 +65,9 @@ KeyFillRatio key_to_fill_ratio(const Scene& scene, const dvec3& subject) {
     r.fill = light_named(scene, "fill");
     if (r.key < 0) return r.problem = "no light named \"key\"", r;
     if (r.fill < 0) return r.problem = "no light named \"fill\"", r;
+    r.problem = no_illuminance(scene.lights[std::size_t(r.key)], "key");
+    if (r.problem.empty()) r.problem = no_illuminance(scene.lights[std::size_t(r.fill)], "fill");
+    if (!r.ok()) return r;
     r.key_illuminance = illuminance_at(scene.lights[std::size_t(r.key)], subject);
     r.fill_illuminance = illuminance_at(scene.lights[std::size_t(r.fill)], subject);
     if (!(r.fill_illuminance > 0.0)) return r.problem = "the fill light gives no light at the subject", r;

@@ -1,6 +1,7 @@
 #include "batch/run_batch.h"
 
 #include "frame/render_error.h"
+#include "frame/renderer.h"
 #include "image/image.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
@@ -118,7 +119,7 @@ std::vector<std::string> check_scenes(const std::vector<BatchItem>& items, const
             continue;
         }
         try {
-            load_scene_file(items[i].scene, scenes);
+            require_drawable(load_scene_file(items[i].scene, scenes), items[i].scene);
         } catch (const std::exception& e) {
             errors[i] = e.what();
         }

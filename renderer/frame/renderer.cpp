@@ -6,12 +6,15 @@
 #include "passes/camera_frame.h"
 #include "passes/draw_chunks.h"
 #include "passes/frame_targets.h"
+#include "passes/light_uniforms.h"
 #include "passes/mesh_pass.h"
 #include "passes/shader_plan.h"
 #include "passes/sphere_bounds.h"
 #include "passes/sphere_pass.h"
 #include "passes/translucent_blend.h"
 #include "models/material.h"
+#include "io/message_text.h"
+#include "scene/load.h"
 #include "scene/presets.h"
 
 #include <algorithm>
@@ -191,6 +194,7 @@ struct Renderer::Impl {
     }
 
     void draw_scene(const Scene& scene) {
+        if (const auto problem = undrawn_light(scene.lights)) throw std::invalid_argument(*problem);
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
         chunks->check_deadline();  // loading the scene may have taken it all
         FrameSequence sequence(gl, targets, scene);
@@ -204,6 +208,11 @@ struct Renderer::Impl {
         sequence.finish();  // Pass 3: the display's levels
     }
 };
+
+void require_drawable(const Scene& scene, const std::string& scene_path) {
+    if (const auto problem = undrawn_light(scene.lights))
+        throw SceneError(text::quote_name(scene_path) + ": " + *problem);
+}
 
 Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
     : impl_(std::make_unique<Impl>(gl, nullptr, &programs)) {}

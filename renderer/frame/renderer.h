@@ -22,6 +22,13 @@
 
 namespace m3055 {
 
+// Throws SceneError "FILE: lights[2].type: rect lights are not drawn by this
+// build yet" (the file named as the loader names it) for a scene whose lights
+// the shaders cannot draw yet (passes/light_uniforms.h: undrawn_light), which
+// render() refuses; the renders of files check it where they load them, so the
+// message names the file.
+void require_drawable(const Scene& scene, const std::string& scene_path);
+
 class Renderer {
 public:
     // Programs come from `programs`, the context's one cache, shared with
@@ -34,8 +41,9 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     // Renders `scene` at scene.display.width x height. Throws ShaderError with
-    // the GL log (shader file name and line) if a program fails to build, and
-    // RenderTimeout past a deadline (frame/render_error.h).
+    // the GL log (shader file name and line) if a program fails to build,
+    // RenderTimeout past a deadline (frame/render_error.h), and
+    // std::invalid_argument for lights it cannot draw (require_drawable).
     void render(const Scene& scene);
 
     // Specialized programs (the default) are compiled per scene shape and

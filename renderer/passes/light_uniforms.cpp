@@ -1,10 +1,25 @@
 #include "passes/light_uniforms.h"
 
+#include "scene/area_light.h"
+
+#include <stdexcept>
+
 namespace m3055 {
+
+std::optional<std::string> undrawn_light(const std::vector<Light>& lights) {
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::string path = "lights[" + std::to_string(i) + "]";
+        if (is_area_light(lights[i].type))
+            return path + ".type: " + to_string(lights[i].type) + " lights are not drawn by this build yet";
+        if (lights[i].shadow) return path + ".shadow: shadows are not drawn by this build yet";
+    }
+    return std::nullopt;
+}
 
 LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient) {
     LightUniforms u;
     for (int c = 0; c < 3; ++c) u.global_ambient[c] = float(global_ambient[c]);
+    if (const auto problem = undrawn_light(lights)) throw std::logic_error(*problem);
     for (const auto& light : lights) {
         if (!reaches_shader(light)) continue;
         const dvec3 scale = light.intensity * light.color;

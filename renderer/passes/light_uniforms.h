@@ -5,6 +5,8 @@
 #include "gl/gl_api.h"
 #include "scene/scene.h"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace m3055 {
@@ -21,7 +23,15 @@ struct LightUniforms {
 // shader's light i is the i-th such light of the scene.
 inline bool reaches_shader(const Light& light) { return light.enabled && light.intensity > 0.0; }
 
-// `global_ambient` is Scene::ambient (the lecture's L_glob).
+// The first light the shaders cannot draw yet, as "lights[2].type: rect lights
+// are not drawn by this build yet" (rect, disk and sky lights) or "lights[0].shadow:
+// shadows are not drawn by this build yet", or nothing. The CPU reference draws
+// them (docs/spec.md#75-area-lights-the-sky-and-shadows); Renderer::render refuses
+// them rather than drawing something else.
+std::optional<std::string> undrawn_light(const std::vector<Light>& lights);
+
+// `global_ambient` is Scene::ambient (the lecture's L_glob). Throws
+// std::logic_error for a light undrawn_light names.
 LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient = dvec3(0.0));
 
 // Sets the u_light_* uniforms of the program in use.

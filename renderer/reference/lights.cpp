@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace m3055::ref {
 
@@ -24,6 +26,8 @@ LightSample sample_light(const Light& light, const dvec3& P) {
     LightSample sample;
     sample.scale = dvec3(0.0);
     sample.L = dvec3(0.0);
+    if (light.type != LightType::directional && light.type != LightType::point && light.type != LightType::spot)
+        throw std::logic_error(std::string(to_string(light.type)) + " lights are not sampled by the reference yet");
 
     if (light.type == LightType::directional) {
         sample.L = light.direction;  // unit, from the surface towards the light

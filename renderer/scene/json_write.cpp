@@ -5,6 +5,7 @@
 // loader would reject them); they come back as the struct defaults.
 #include "scene/load.h"
 
+#include "scene/json_lights.h"
 #include "scene/json_material.h"
 #include "scene/json_shapes.h"
 
@@ -17,12 +18,6 @@ using nlohmann::json;
 namespace {
 
 json vec(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
-
-json lobes_json(const std::vector<Lobe>& lobes, const char* key) {
-    json out = json::array();
-    for (const Lobe& lobe : lobes) out.push_back({{"w", lobe.w}, {key, lobe.m}});
-    return out;
-}
 
 json display_json(const Display& display) {
     return {{"width", display.width}, {"height", display.height}, {"bits", display.bits},
@@ -41,37 +36,11 @@ json camera_json(const Camera& camera) {
     return out;
 }
 
-json light_json(const Light& light) {
-    json out = {{"type", to_string(light.type)}, {"intensity", light.intensity}, {"enabled", light.enabled}};
-    // A spectral light is written as its spectrum, which the loader turns back into the same colour.
-    if (light.temperature_k > 0.0)
-        out["temperature_k"] = light.temperature_k;
-    else if (!light.illuminant.empty())
-        out["illuminant"] = light.illuminant;
-    else
-        out["color"] = vec(light.color);
-    if (light.type == LightType::directional) {
-        out["direction"] = vec(light.direction);
-    } else {
-        out["position"] = vec(light.position);
-        out["attenuation"] = json::array({light.att_constant, light.att_linear, light.att_quadratic});
-    }
-    if (light.type == LightType::spot) {
-        out["spot_direction"] = vec(light.spot_direction);
-        out["spot_exponent"] = light.spot_exponent;
-    }
-    if (light.ambient != dvec3(0.0)) out["ambient"] = vec(light.ambient);  // absent = none
-    if (!light.name.empty()) out["name"] = light.name;
-    if (!light.lobes.empty())
-        out["lobes"] = lobes_json(light.lobes, light.lobe_kind == LobeKind::beckmann ? "m" : "n");
-    return out;
-}
-
 }  // namespace
 
 json scene_to_json(const Scene& scene, const PathWriting& writing) {
     json lights = json::array();
-    for (const Light& light : scene.lights) lights.push_back(light_json(light));
+    for (const Light& light : scene.lights) lights.push_back(scene_json::light_json(light));
     json objects = json::array();
     for (const Object& object : scene.objects) {
         json entry = scene_json::shape_json(object);

@@ -4,16 +4,13 @@
 
 #include "io/input_file.h"
 #include "io/message_text.h"
-#include "models/model_table.h"
+#include "scene/json_lights.h"
 #include "scene/json_material.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
 #include "scene/referenced_file.h"
 #include "scene/shape_limits.h"
-#include "spectral/blackbody.h"
-#include "spectral/cie_data.h"
-#include "spectral/colorimetry.h"
 
 #include <glm/geometric.hpp>
 
@@ -33,8 +30,6 @@ using scene_json::Range;
 namespace {
 
 constexpr std::size_t kMaxObjects = 100000;
-
-const Range kExponent = closed(0.0, 10000.0);  // spot exponent
 
 // ---- display ----------------------------------------------------------------
 
@@ -92,142 +87,6 @@ Camera read_camera(const Node& node) {
     return camera;
 }
 
-// ---- lobes ------------------------------------------------------------------
-
-// A light's own lobes replace the material's for the models that read them
-// (ModelSpec::light_lobes), so they have those models' ranges.
-const LobeForm& light_lobe_form(LobeKind kind) {
-    for (const ModelSpec& spec : model_table().models())
-        if (spec.light_lobes == kind) return spec.param("lobes").forms.at(0);
-    throw std::logic_error("no model of the table reads light lobes of this kind");
-}
-
-// A light's own lobes: all Beckmann {"w","m"} or all exponent {"w","n"}.
-void read_light_lobes(const Node& node, Light& light) {
-    const std::size_t count = node.array_size(1, kMaxLobes, "1 to 4 lobes");
-    for (std::size_t i = 0; i < count; ++i) {
-        const Node entry = node.at(i);
-        entry.expect_object();
-        entry.check_keys({"w", "m", "n"});
-        if (entry.has("m") == entry.has("n")) entry.fail("must have exactly one of \"m\" and \"n\"");
-        const LobeKind kind = entry.has("m") ? LobeKind::beckmann : LobeKind::exponent;
-        const std::string key = kind == LobeKind::beckmann ? "m" : "n";
-        if (i == 0) {
-            light.lobe_kind = kind;
-        } else if (kind != light.lobe_kind) {
-            entry.child(key).fail("all lobes of a light must use the same key (lobes[0] uses \"" +
-                                  std::string(kind == LobeKind::beckmann ? "n" : "m") + "\")");
-        }
-        const LobeForm& form = light_lobe_form(kind);
-        Lobe lobe;
-        lobe.w = entry.required("w").number_in(form.weight);
-        lobe.m = entry.child(key).number_in(form.value);
-        light.lobes.push_back(lobe);
-    }
-}
-
-// ---- lights -----------------------------------------------------------------
-
-// A light's "name": 1 to 64 bytes of printable UTF-8.
-std::string read_light_name(const Node& node) {
-    if (!node.value().is_string()) node.fail("must be a string");
-    const std::string& name = node.value().get_ref<const std::string&>();
-    if (name.empty() || name.size() > 64) node.fail("must be 1 to 64 bytes long");
-    const bool control = std::any_of(name.begin(), name.end(), [](char c) {
-        return static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
-    });
-    if (control || !text::is_valid_utf8(name)) node.fail("must be UTF-8 text without control characters");
-    return name;
-}
-
-void read_attenuation(const Node& node, Light& light) {
-    const json& value = node.value();
-    if (value.is_string()) {
-        const std::size_t which = node.one_of({"constant", "inverse", "physical"});
-        light.att_constant = which == 0 ? 1.0 : 0.0;
-        light.att_linear = which == 1 ? 1.0 : 0.0;
-        light.att_quadratic = which == 2 ? 1.0 : 0.0;
-        return;
-    }
-    if (!value.is_array() || value.size() != 3 ||
-        !std::all_of(value.begin(), value.end(), [](const json& e) { return e.is_number(); }))
-        node.fail("must be an array of 3 numbers [S_c, S_l, S_q] or \"constant\", \"inverse\" or \"physical\"");
-    const dvec3 s = node.vec3_in(closed(0.0, 1e6));
-    if (s.x == 0.0 && s.y == 0.0 && s.z == 0.0) node.fail("must not be all zero");
-    light.att_constant = s.x;
-    light.att_linear = s.y;
-    light.att_quadratic = s.z;
-}
-
-// The light's colour: "color" (RGB), "temperature_k" (a black body) or
-// "illuminant" (a CIE standard illuminant), at most one of them
-// (docs/spec.md#71-spectral-lights). A spectral light's RGB is computed here,
-// once, so the GPU and the reference both use it.
-void read_light_color(const Node& node, Light& light) {
-    const char* given[] = {"color", "temperature_k", "illuminant"};
-    std::vector<std::string> present;
-    for (const char* key : given)
-        if (node.has(key)) present.push_back(key);
-    if (present.size() > 1) {
-        const std::string who = light.name.empty() ? "this light" : "light " + text::quote(light.name);
-        node.child(present[1]).fail(who + " gives both \"" + present[0] + "\" and \"" + present[1] +
-                                    "\"; give one colour");
-    }
-    if (node.has("color")) {
-        light.color = node.child("color").vec3_in(kUnit);
-        return;
-    }
-    if (!node.has("temperature_k") && !node.has("illuminant")) return;
-    const Node source = node.child(present[0]);
-    try {
-        if (node.has("temperature_k")) {
-            light.temperature_k = source.number_in(closed(spectral::kMinKelvin, spectral::kMaxKelvin));
-            light.color = spectral::temperature_rgb(light.temperature_k);
-        } else {
-            light.illuminant = spectral::illuminant_names()[source.one_of(spectral::illuminant_names())];
-            light.color = spectral::illuminant_rgb(light.illuminant);
-        }
-    } catch (const spectral::SpectralError& error) {
-        source.fail(std::string("cannot make its colour: ") + error.what());
-    }
-}
-
-Light read_light(const Node& node) {
-    node.expect_object();
-    Light light;
-    const std::size_t type = node.required("type").one_of({"directional", "point", "spot"});
-    light.type = type == 0 ? LightType::directional : type == 1 ? LightType::point : LightType::spot;
-    std::vector<std::string> allowed = {"name",    "type",  "intensity", "color",        "temperature_k",
-                                        "illuminant", "enabled", "lobes",    "ambient"};
-    if (light.type == LightType::directional) allowed.push_back("direction");
-    if (light.type != LightType::directional) allowed.insert(allowed.end(), {"position", "attenuation"});
-    if (light.type == LightType::spot) allowed.insert(allowed.end(), {"spot_direction", "spot_exponent"});
-    node.check_keys(allowed, [](const std::string& key) {
-        if (key == "direction") return std::string("only for directional lights");
-        if (key == "position" || key == "attenuation") return std::string("only for point and spot lights");
-        if (key == "spot_direction" || key == "spot_exponent") return std::string("only for spot lights");
-        return std::string();
-    });
-
-    if (light.type == LightType::directional) {
-        light.direction = node.required("direction").direction();
-    } else {
-        light.position = node.required("position").vec3_in(kCoordinate);
-        if (node.has("attenuation")) read_attenuation(node.child("attenuation"), light);
-    }
-    if (light.type == LightType::spot) {
-        light.spot_direction = node.required("spot_direction").direction();
-        if (node.has("spot_exponent")) light.spot_exponent = node.child("spot_exponent").number_in(kExponent);
-    }
-    if (node.has("intensity")) light.intensity = node.child("intensity").number_in(closed(0.0, 10.0));
-    if (node.has("name")) light.name = read_light_name(node.child("name"));
-    read_light_color(node, light);
-    if (node.has("enabled")) light.enabled = node.child("enabled").boolean();
-    if (node.has("ambient")) light.ambient = node.child("ambient").vec3_in(kUnit);  // classic models
-    if (node.has("lobes")) read_light_lobes(node.child("lobes"), light);
-    return light;
-}
-
 // ---- objects (materials: scene/json_material.cpp) ---------------------------
 
 Object read_object(const Node& node, const scene_json::SceneFiles& files) {
@@ -251,7 +110,7 @@ Scene read_scene(const json& doc, const std::string& source, const scene_json::S
     if (root.has("lights")) {
         const Node lights = root.child("lights");
         const std::size_t count = lights.array_size(0, kMaxLights, "at most 16 lights");
-        for (std::size_t i = 0; i < count; ++i) scene.lights.push_back(read_light(lights.at(i)));
+        for (std::size_t i = 0; i < count; ++i) scene.lights.push_back(scene_json::read_light(lights.at(i)));
     }
     const Node objects = root.required("objects");
     const std::size_t count = objects.array_size(0, kMaxObjects, "at most 100000 objects");

@@ -9,6 +9,9 @@ const char* to_string(LightType type) {
         case LightType::directional: return "directional";
         case LightType::point: return "point";
         case LightType::spot: return "spot";
+        case LightType::rect: return "rect";
+        case LightType::disk: return "disk";
+        case LightType::sky: return "sky";
     }
     return "?";
 }

@@ -34,7 +34,10 @@ struct Camera {
     double height = 2.5;      // orthographic only: world-space height of the view
 };
 
-enum class LightType { directional, point, spot };
+// directional, point and spot lights shine from one direction at a point; rect,
+// disk and sky lights from every direction in which a point sees them
+// (docs/spec.md#75-area-lights-the-sky-and-shadows; scene/area_light.h).
+enum class LightType { directional, point, spot, rect, disk, sky };
 
 struct Light {
     // Optional, shown in the explorer and kept on save: "key", "fill", "back"
@@ -43,7 +46,7 @@ struct Light {
     std::string name;
     LightType type = LightType::directional;
     dvec3 direction{0.0, 0.0, 1.0};  // directional: unit vector from the surface towards the light
-    dvec3 position{0.0, 0.0, 0.0};   // point, spot
+    dvec3 position{0.0, 0.0, 0.0};   // point, spot; rect, disk: the centre
     double intensity = 1.0;          // a_l in [0, 10]
     dvec3 color{1.0, 1.0, 1.0};      // c_l: in [0, 1]^3 as given, or made from the spectrum below
     // A spectral light (docs/spec.md#71-spectral-lights): a black body at
@@ -67,6 +70,18 @@ struct Light {
     std::vector<Lobe> lobes;
     LobeKind lobe_kind = LobeKind::beckmann;
     bool enabled = true;
+    // Area lights (docs/spec.md#75-area-lights-the-sky-and-shadows): a rect or
+    // disk emits from `position` towards the side `normal` points to; a rect's
+    // size[1] side runs along `up` made perpendicular to `normal`, its size[0]
+    // side along normal x up (scene/area_light.h: rect_frame); the sky is the
+    // hemisphere about `up`. Unit vectors; `up` as given (a rect's default is
+    // resolved by the loader), not yet made perpendicular.
+    dvec3 normal{0.0, 0.0, 1.0};         // rect, disk
+    dvec3 up{0.0, 1.0, 0.0};             // rect, sky
+    double size[2] = {1.0, 1.0};         // rect: its sides, [1e-6, 1e6] each
+    double radius = 1.0;                 // disk: [1e-6, 1e6]
+    // Objects block this light (every type; the sky: occlusion by the objects).
+    bool shadow = false;
 };
 
 // Spheres are exact (ray-cast); the other shapes are triangle meshes made by

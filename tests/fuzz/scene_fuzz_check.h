@@ -106,6 +106,12 @@ inline std::string check_loaded_scene(const Scene& scene) {
         finite(light.att_linear, at + ".att_linear");
         finite(light.att_quadratic, at + ".att_quadratic");
         finite(light.spot_exponent, at + ".spot_exponent");
+        finite3(light.normal, at + ".normal");
+        finite3(light.up, at + ".up");
+        // An area light's radiance is a c / area: its area must stay positive and finite.
+        if (!(light.size[0] > 0.0 && light.size[1] > 0.0 && light.radius > 0.0) ||
+            !std::isfinite(light.size[0] * light.size[1] + light.radius * light.radius))
+            return at + ": emitter size out of range";
         if (light.lobes.size() > std::size_t(kMaxLobes)) return at + ": too many lobes";
         for (const Lobe& lobe : light.lobes) {
             finite(lobe.w, at + ".lobes.w");
