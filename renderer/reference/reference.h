@@ -60,6 +60,30 @@ struct LightSample {
 };
 LightSample sample_light(const Light& light, const dvec3& P);
 
+// How area and sky lights are integrated (reference/area_quadrature.h): each
+// light at each point until the estimated error is below tolerance max(1,
+// |shaded colour|) (shadow_tolerance for a light with a shadow: the edge of a
+// shadow converges as the cells' size, not their sixth power), or max_cells
+// cells; Lambert surfaces under a rect or the sky (unshadowed) by their closed
+// forms, exactly, unless closed_forms is off.
+struct AreaQuadrature {
+    double tolerance = 1e-5;
+    double shadow_tolerance = 1e-4;
+    int max_cells = 4096;
+    bool closed_forms = true;
+};
+
+// What the quadrature did, summed over the points and lights integrated.
+struct AreaStats {
+    long long integrals = 0;    // (point, light) pairs integrated by quadrature
+    long long closed = 0;       // ... and by a closed form
+    long long cells = 0;        // cells they ended with
+    long long nodes = 0;        // model evaluations of one direction
+    long long rays = 0;         // visibility tests of one direction (shadows)
+    long long unconverged = 0;  // integrals that reached max_cells above the tolerance
+    double worst_error = 0.0;   // the largest final estimate, relative to max(1, |shaded colour|)
+};
+
 // ---- Models ------------------------------------------------------------------
 
 struct SurfacePoint {
