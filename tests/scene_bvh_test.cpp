@@ -84,7 +84,9 @@ TEST(SceneBvh, ASurfaceDoesNotHideItsOwnPoints) {
         dvec3 t = glm::normalize(glm::cross(N, dvec3(unit(rng), unit(rng), unit(rng))));
         const double lift = std::pow(10.0, -6.0 * (0.5 + 0.5 * unit(rng)));
         const dvec3 L = glm::normalize(t + lift * N);
-        if (L.y > 0.0) EXPECT_TRUE(bvh.sees(P, N, L, kFar)) << i;
+        if (L.y > 0.0) {
+            EXPECT_TRUE(bvh.sees(P, N, L, kFar)) << i;
+        }
         // A floor point away from the ball, light grazing the floor.
         const dvec3 Q(5 + unit(rng), -1, 5 + unit(rng));
         EXPECT_TRUE(bvh.sees(Q, {0, 1, 0}, glm::normalize(dvec3(unit(rng), lift, std::fabs(unit(rng)))), kFar)) << i;
