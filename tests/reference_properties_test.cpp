@@ -134,7 +134,7 @@ TEST(TranslucentModel, PowerZeroGivesConstantOpacityAtEveryAngle) {
             const Material mat = translucent({0.2, 0.5, 0.9}, t_n, 0.0);
             const SurfacePoint p = point_with({0, 0, 1}, {std::sqrt(1.0 - NoV * NoV), 0, NoV});
             // No lights: no highlight, so the transmittance is exactly 1 - t.
-            const TranslucentShade s = shade_translucent(mat, {}, p);
+            const TranslucentShade s = shade_translucent(mat, std::vector<Light>{}, p);
             expect_near(s.transmittance, dvec3(1.0 - t_n), kTight, "transmittance");
             expect_near(s.color, t_n * mat.number("d") * mat.vec3("color"), kTight, "colour");
         }
@@ -142,9 +142,9 @@ TEST(TranslucentModel, PowerZeroGivesConstantOpacityAtEveryAngle) {
 
 TEST(TranslucentModel, EdgeOnIsMoreOpaqueThanFacing) {
     const Material mat = translucent({0.2, 0.5, 0.9}, 0.8, 1.0);
-    const double facing = shade_translucent(mat, {}, point_with({0, 0, 1}, {0, 0, 1})).transmittance.x;
-    const double oblique = shade_translucent(mat, {}, point_with({0, 0, 1}, {0.8, 0, 0.6})).transmittance.x;
-    const double edge_on = shade_translucent(mat, {}, point_with({0, 0, 1}, {1, 0, 0})).transmittance.x;
+    const double facing = shade_translucent(mat, std::vector<Light>{}, point_with({0, 0, 1}, {0, 0, 1})).transmittance.x;
+    const double oblique = shade_translucent(mat, std::vector<Light>{}, point_with({0, 0, 1}, {0.8, 0, 0.6})).transmittance.x;
+    const double edge_on = shade_translucent(mat, std::vector<Light>{}, point_with({0, 0, 1}, {1, 0, 0})).transmittance.x;
     EXPECT_NEAR(facing, 1.0, kTight);        // t = 0: clear
     EXPECT_NEAR(oblique, 1.0 - 0.8 * 0.4, kTight);
     EXPECT_NEAR(edge_on, 1.0 - 0.8, kTight);  // t = t_n

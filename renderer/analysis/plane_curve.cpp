@@ -48,7 +48,7 @@ PlaneCurve plane_curve(const Material& material, const Light& light, double inci
         const ref::SurfacePoint point{dvec3(0.0), N, dvec3(std::sin(view * kDegree), std::cos(view * kDegree), 0.0)};
         dvec3 value(0.0);
         if (curve.translucent) {
-            const ref::TranslucentShade shade = ref::reference_hooks(material.model()).translucent(material, lights, point);
+            const ref::TranslucentShade shade = ref::shade_translucent_model(material, lights, point);
             value = shade.color + shade.transmittance * background;
         } else if (!curve.light_behind) {
             value = ref::shade_opaque(material, lights, point);

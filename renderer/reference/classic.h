@@ -112,6 +112,10 @@ dvec3 classic_brdf(const Material& material, const dvec3& N, const dvec3& L, con
 
 // The lecture's equation at a point (seed 003), the classic family's composer:
 //   I = L_glob K_amb + L_emi + sum_k C_spot,k { a_k ambient_k K_amb + att_k (I_diff,k + I_spec,k) }.
+// An area light's nodes add their I_diff + I_spec and no ambient (it has none).
+dvec3 shade_classic(const Material& material, const LitLights& lights, const SurfacePoint& point,
+                    const dvec3& global_ambient);
+// The same for a plain list of lights (every type, no shadows).
 dvec3 shade_classic(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
                     const dvec3& global_ambient);
 

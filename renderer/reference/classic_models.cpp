@@ -162,8 +162,8 @@ dvec3 classic_brdf(const Material& material, const dvec3& N, const dvec3& L, con
 // shade_classic_spectral): a microfacet conductor (docs/spec.md#72-measured-metals),
 // K_spec F the metal's C0 for each light at V.H, and/or a kd_spectrum
 // (#73-spectral-colours), K_diff its colour under each light; summed per wavelength.
-dvec3 shade_classic_spectral(const Material& material, const std::vector<Light>& lights,
-                             const SurfacePoint& point, const dvec3& global_ambient) {
+dvec3 shade_classic_spectral(const Material& material, const LitLights& lights, const SurfacePoint& point,
+                             const dvec3& global_ambient) {
     const bool metal = is_conductor(material);
     const ReflectanceSpectrum* kd_spectrum = material.colour_spectrum();
     Material white = material;  // a conductor: K_spec = 1 and F = 1, the C0 carries both
@@ -175,10 +175,11 @@ dvec3 shade_classic_spectral(const Material& material, const std::vector<Light>&
     const dvec3 ka = material.vec3("ka");
     dvec3 I = global_ambient * ka + material.vec3("emission");
     const double NoV = glm::dot(point.N, point.V);
-    for (const Light& light : lights) {
+    for (const LitLight& lit : lights) {
+        const Light& light = *lit.light;
         if (!light.enabled) continue;
-        const LightSample sample = sample_light(light, point.P);
-        I += sample.spot * light.intensity * light.ambient * ka;
+        const LightSample& sample = lit.sample;
+        if (!lit.node) I += sample.spot * light.intensity * light.ambient * ka;
         if (sample.scale == dvec3(0.0)) continue;
         const double NoL = glm::dot(point.N, sample.L);
         const double diffuse = hooks.classic_diffuse(material, NoL, NoV, glm::dot(sample.L, point.V));
@@ -192,17 +193,18 @@ dvec3 shade_classic_spectral(const Material& material, const std::vector<Light>&
 }
 
 // The lecture's equation over the lights (glsl/models/classic.glsl shade_classic).
-dvec3 shade_classic(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
+dvec3 shade_classic(const Material& material, const LitLights& lights, const SurfacePoint& point,
                     const dvec3& global_ambient) {
     if (is_spectral(material)) return shade_classic_spectral(material, lights, point, global_ambient);
     const dvec3 ka = material.vec3("ka");
     dvec3 I = global_ambient * ka + material.vec3("emission");
     const double NoV = glm::dot(point.N, point.V);
-    for (const Light& light : lights) {
+    for (const LitLight& lit : lights) {
+        const Light& light = *lit.light;
         if (!light.enabled) continue;
-        const LightSample sample = sample_light(light, point.P);
+        const LightSample& sample = lit.sample;
         // I_amb,k = C_spot,k a_k ambient_k (x) K_amb: spot-shaped, not attenuated (lecture).
-        I += sample.spot * light.intensity * light.ambient * ka;
+        if (!lit.node) I += sample.spot * light.intensity * light.ambient * ka;
         const double NoL = glm::dot(point.N, sample.L);
         // sample.scale = a_k c_k att_k C_spot,k
         I += sample.scale * classic_reflect(material, point.N, sample.L, point.V, NoL, NoV);

@@ -27,7 +27,8 @@ LightSample sample_light(const Light& light, const dvec3& P) {
     sample.scale = dvec3(0.0);
     sample.L = dvec3(0.0);
     if (light.type != LightType::directional && light.type != LightType::point && light.type != LightType::spot)
-        throw std::logic_error(std::string(to_string(light.type)) + " lights are not sampled by the reference yet");
+        throw std::logic_error(std::string(to_string(light.type)) +
+                               " lights have no one direction: the reference integrates them (reference/lit_point.h)");
 
     if (light.type == LightType::directional) {
         sample.L = light.direction;  // unit, from the surface towards the light
@@ -50,6 +51,13 @@ LightSample sample_light(const Light& light, const dvec3& P) {
     if (light.type == LightType::spot) factor *= sample.spot;
     sample.scale = light.intensity * factor * light.color;
     return sample;
+}
+
+LitLights sampled_lights(const std::vector<Light>& lights, const dvec3& P) {
+    LitLights lit;
+    lit.reserve(lights.size());
+    for (const Light& light : lights) lit.push_back({&light, sample_light(light, P), false});
+    return lit;
 }
 
 }  // namespace m3055::ref

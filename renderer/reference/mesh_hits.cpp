@@ -90,6 +90,52 @@ bool MeshIntersector::hit_triangle(const Ray& ray, std::uint32_t triangle, MeshH
     return true;
 }
 
+// Moeller-Trumbore from either side: det of either sign, t in (0, t_max).
+bool MeshIntersector::blocks(const Ray& ray, std::uint32_t triangle, double t_max) const {
+    const dvec3& a = mesh_.positions[mesh_.indices[3 * triangle]];
+    const dvec3 e1 = mesh_.positions[mesh_.indices[3 * triangle + 1]] - a;
+    const dvec3 e2 = mesh_.positions[mesh_.indices[3 * triangle + 2]] - a;
+    const dvec3 p = glm::cross(ray.dir, e2);
+    const double det = glm::dot(e1, p);
+    if (det == 0.0) return false;  // edge-on: the neighbours it shares edges with are met instead
+    const dvec3 s = ray.origin - a;
+    const double u = glm::dot(s, p) / det;
+    if (u < 0.0 || u > 1.0) return false;
+    const dvec3 q = glm::cross(s, e1);
+    const double v = glm::dot(ray.dir, q) / det;
+    if (v < 0.0 || u + v > 1.0) return false;
+    const double t = glm::dot(e2, q) / det;
+    return t > 0.0 && t < t_max;
+}
+
+bool MeshIntersector::any_hit(const Ray& ray, double t_max) const {
+    if (nodes_.empty()) return false;
+    const dvec3 inv_dir = 1.0 / ray.dir;
+    std::uint32_t stack[64];  // a median split of 4 million triangles is 21 levels deep
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (!hits_box(ray, inv_dir, node.lo, node.hi)) continue;
+        if (node.count == 0) {
+            stack[top++] = node.first;
+            stack[top++] = node.right;
+            continue;
+        }
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+            if (blocks(ray, order_[i], t_max)) return true;
+    }
+    return false;
+}
+
+dvec3 MeshIntersector::lo() const {
+    return nodes_.empty() ? dvec3(std::numeric_limits<double>::infinity()) : nodes_[0].lo;
+}
+
+dvec3 MeshIntersector::hi() const {
+    return nodes_.empty() ? dvec3(-std::numeric_limits<double>::infinity()) : nodes_[0].hi;
+}
+
 std::vector<MeshHit> MeshIntersector::intersect_all(const Ray& ray) const {
     std::vector<MeshHit> hits;
     if (nodes_.empty()) return hits;

@@ -29,6 +29,14 @@ public:
     // vertex shared by several triangles gives one hit there, not several.
     std::vector<MeshHit> intersect_all(const Ray& ray) const;
 
+    // Whether the ray meets a triangle from either side at t in (0, t_max)
+    // (t_max may be infinity): what blocks a shadow ray (reference/scene_bvh.h).
+    bool any_hit(const Ray& ray, double t_max) const;
+
+    // The box around every triangle (a point at infinity's box when there are none).
+    dvec3 lo() const;
+    dvec3 hi() const;
+
 private:
     struct Node {
         dvec3 lo, hi;           // bounding box
@@ -38,6 +46,7 @@ private:
     };
     std::uint32_t build(std::uint32_t begin, std::uint32_t end);
     bool hit_triangle(const Ray& ray, std::uint32_t triangle, MeshHit* hit) const;
+    bool blocks(const Ray& ray, std::uint32_t triangle, double t_max) const;
 
     geometry::Mesh mesh_;
     std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf

@@ -2,7 +2,8 @@
 // from the terms in terms.cpp; the C++ twin of glsl/models/highlight.glsl,
 // translucent.glsl, metal.glsl and shade.glsl, with the same names. Every
 // light l enters through its direction L_l and its scale a_l c_l att spot
-// (lights.cpp); a light with N.L_l <= 0 contributes nothing (docs/spec.md#4-paper-models).
+// (lights.cpp), or as a node of an area light's quadrature (lit_point.h); a
+// light with N.L_l <= 0 contributes nothing (docs/spec.md#4-paper-models).
 #include "reference/reference.h"
 #include "reference/hooks.h"
 #include "reference/classic.h"
@@ -11,6 +12,7 @@
 #include "models/model_spec.h"
 
 #include <glm/common.hpp>
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -53,33 +55,40 @@ struct HighlightParts {
     dvec3 keep;
 };
 
+// What one light leaves of the colour below white, 1 - s_l (eq. 4); for a node
+// of an area light, exp(-s), the limit of ever more, ever weaker lights
+// (docs/spec.md#75-area-lights-the-sky-and-shadows), in which the clamp never acts.
+dvec3 highlight_keep(double w, const LitLight& lit, double RoV, double m) {
+    if (!lit.node) return dvec3(1.0) - highlight_strength(w, lit.sample.scale, RoV, m);
+    return glm::exp(-w * lit.sample.scale * pow_safe(RoV, m));
+}
+
 // A colour spectrum (docs/spec.md#73-spectral-colours): each light's diffuse
 // share in its own C0, d in D65's: d C0_D65 + (1 - d) sum_l a_l c_l (N.L) C0_l.
-HighlightParts highlight_parts_spectral(const Material& material, const std::vector<Light>& lights,
+HighlightParts highlight_parts_spectral(const Material& material, const LitLights& lights,
                                         const SurfacePoint& point) {
     const double d = material.number("d"), w = material.number("w"), m = material.number("m");
     dvec3 diffuse(0.0), keep(1.0);
-    for (const Light& light : lights) {
-        const LightSample sample = sample_light(light, point.P);
+    for (const LitLight& lit : lights) {
+        const LightSample& sample = lit.sample;
         const double NoL = glm::dot(point.N, sample.L);
         if (!(NoL > 0.0) || sample.scale == dvec3(0.0)) continue;
-        diffuse += sample.scale * NoL * spectral_c0(material, &light, 1.0);
-        keep *= dvec3(1.0) - highlight_strength(w, sample.scale, mirror_RoV(sample.L, NoL, point), m);
+        diffuse += sample.scale * NoL * spectral_c0(material, lit.light, 1.0);
+        keep *= highlight_keep(w, lit, mirror_RoV(sample.L, NoL, point), m);
     }
     return {glm::min(d * spectral_c0(material, nullptr, 1.0) + (1.0 - d) * diffuse, dvec3(1.0)), keep};
 }
 
-HighlightParts highlight_parts(const Material& material, const std::vector<Light>& lights,
-                               const SurfacePoint& point) {
+HighlightParts highlight_parts(const Material& material, const LitLights& lights, const SurfacePoint& point) {
     if (is_spectral(material)) return highlight_parts_spectral(material, lights, point);
     const double d = material.number("d"), w = material.number("w"), m = material.number("m");
     dvec3 diffuse(0.0), keep(1.0);
-    for (const Light& light : lights) {
-        const LightSample sample = sample_light(light, point.P);
+    for (const LitLight& lit : lights) {
+        const LightSample& sample = lit.sample;
         const double NoL = glm::dot(point.N, sample.L);
         if (!(NoL > 0.0)) continue;  // docs/spec.md#4-paper-models: no diffuse, no highlight
         diffuse += sample.scale * NoL;
-        keep *= dvec3(1.0) - highlight_strength(w, sample.scale, mirror_RoV(sample.L, NoL, point), m);
+        keep *= highlight_keep(w, lit, mirror_RoV(sample.L, NoL, point), m);
     }
     return {glm::min((d + (1.0 - d) * diffuse) * material.vec3("color"), dvec3(1.0)), keep};
 }
@@ -88,7 +97,7 @@ HighlightParts highlight_parts(const Material& material, const std::vector<Light
 
 // ---- highlight (eq. 3-4) and translucent (eq. 5-8) -------------------------------
 
-dvec3 shade_highlight(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+dvec3 shade_highlight(const Material& material, const LitLights& lights, const SurfacePoint& point) {
     const HighlightParts parts = highlight_parts(material, lights, point);
     return highlight_to_white(parts.C1, parts.keep);
 }
@@ -96,8 +105,7 @@ dvec3 shade_highlight(const Material& material, const std::vector<Light>& lights
 // As a premultiplied "over": with keep = prod_l (1 - s_l) and t = Kay's
 // opacity, C = 1 - (1 - C1') keep, C1' = (1 - t) C_B + t C1 gives
 //   C = [(1 - keep) + keep t C1] + [keep (1 - t)] C_B.
-TranslucentShade shade_translucent(const Material& material, const std::vector<Light>& lights,
-                                   const SurfacePoint& point) {
+TranslucentShade shade_translucent(const Material& material, const LitLights& lights, const SurfacePoint& point) {
     const HighlightParts parts = highlight_parts(material, lights, point);
     const double t = kay_opacity(material.number("t_n"), material.number("t_p"), glm::dot(point.N, point.V));
     return {(dvec3(1.0) - parts.keep) + parts.keep * t * parts.C1, parts.keep * (1.0 - t)};
@@ -140,39 +148,39 @@ double metal_lobe_sum(const Material& material, const Light& light, const Surfac
 // A measured metal (docs/spec.md#72-measured-metals) or a colour spectrum (#73):
 // d C0_D65 + sum_l a_l c_l lobes_l C0_l(V.H), each C0 summed per wavelength here
 // (reference/conductor.h).
-dvec3 shade_conductor(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+dvec3 shade_conductor(const Material& material, const LitLights& lights, const SurfacePoint& point) {
     const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
     dvec3 sum(0.0);
-    for (const Light& light : lights) {
-        const LightSample sample = sample_light(light, point.P);
+    for (const LitLight& lit : lights) {
+        const LightSample& sample = lit.sample;
         const double NoL = glm::dot(point.N, sample.L);
         if (!(NoL > 0.0)) continue;
-        const double lobes = metal_lobe_sum(material, light, point, sample.L, NoL, NoV);
+        const double lobes = metal_lobe_sum(material, *lit.light, point, sample.L, NoL, NoV);
         if (lobes == 0.0 || sample.scale == dvec3(0.0)) continue;  // nothing to colour
         const double VoH = 0.5 * glm::length(sample.L + point.V);  // as beckmann_lobe_sum
-        sum += sample.scale * lobes * spectral_c0(material, &light, VoH);
+        sum += sample.scale * lobes * spectral_c0(material, lit.light, VoH);
     }
     return material.number("d") * spectral_c0(material, nullptr, 1.0) + sum;
 }
 
 // The metal family: C = { d + sum_l a_l c_l lobes_l } C0 over the lights with N.L > 0.
-dvec3 shade_metal(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point) {
+dvec3 shade_metal(const Material& material, const LitLights& lights, const SurfacePoint& point) {
     if (is_spectral(material)) return shade_conductor(material, lights, point);
     const double NoV = std::max(glm::dot(point.N, point.V), 0.0);
     dvec3 sum(0.0);
-    for (const Light& light : lights) {
-        const LightSample sample = sample_light(light, point.P);
+    for (const LitLight& lit : lights) {
+        const LightSample& sample = lit.sample;
         const double NoL = glm::dot(point.N, sample.L);
         if (!(NoL > 0.0)) continue;  // docs/spec.md#4-paper-models: no lobe
-        sum += sample.scale * metal_lobe_sum(material, light, point, sample.L, NoL, NoV);
+        sum += sample.scale * metal_lobe_sum(material, *lit.light, point, sample.L, NoL, NoV);
     }
     return (material.number("d") + sum) * material.vec3("color");
 }
 
 // ---- every model -------------------------------------------------------------------
 
-dvec3 shade_opaque(const Material& material, const std::vector<Light>& lights, const SurfacePoint& point,
-                   const dvec3& global_ambient) {
+dvec3 shade_opaque_lit(const Material& material, const LitLights& lights, const SurfacePoint& point,
+                       const dvec3& global_ambient) {
     const ModelSpec& model = material.model();
     switch (model.family) {
         case Family::classic: return shade_classic(material, lights, point, global_ambient);

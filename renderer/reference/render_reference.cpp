@@ -1,18 +1,23 @@
 // The whole reference image: one exact ray per pixel centre (docs/spec.md#3-geometry), the
 // nearest opaque front face (or the background), then the translucent front
-// faces in front of it composited back to front (docs/spec.md#42-translucent, Fig. 9).
+// faces in front of it composited back to front (docs/spec.md#42-translucent, Fig. 9),
+// every point lit with shadows and area lights (reference/lit_point.h).
 #include "reference/reference.h"
 #include "reference/hooks.h"
 
 #include "models/model_spec.h"
 
 #include "reference/mesh_hits.h"
+#include "reference/scene_bvh.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <limits>
 #include <memory>
+#include <thread>
 
 namespace m3055::ref {
 
@@ -25,23 +30,13 @@ struct Hit {
     dvec3 N = dvec3(0.0);   // meshes: the interpolated normal
 };
 
-// The meshes of the scene's non-sphere objects (null for spheres), built once.
-using Meshes = std::vector<std::unique_ptr<MeshIntersector>>;
-
-Meshes build_meshes(const Scene& scene) {
-    Meshes meshes(scene.objects.size());
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].shape != Shape::sphere)
-            meshes[i] = std::make_unique<MeshIntersector>(geometry::make_mesh(scene.objects[i]));
-    return meshes;
-}
-
 // Every front-face hit of the ray, nearest first (ties by object index, so the
-// order never depends on the sort's whims).
-std::vector<Hit> all_hits(const Scene& scene, const Meshes& meshes, const Ray& ray) {
+// order never depends on the sort's whims). The meshes are the scene's, made
+// once (reference/scene_bvh.h).
+std::vector<Hit> all_hits(const Scene& scene, const SceneBvh& bvh, const Ray& ray) {
     std::vector<Hit> hits;
     for (int i = 0; i < int(scene.objects.size()); ++i) {
-        if (meshes[i]) {
+        if (const MeshIntersector* mesh = bvh.mesh(std::size_t(i))) {
             // A mesh's own bounding sphere first: most rays miss most meshes.
             const Object& object = scene.objects[i];
             const double reach = geometry::bounding_radius(object) * (1 + 1e-9);
@@ -49,7 +44,7 @@ std::vector<Hit> all_hits(const Scene& scene, const Meshes& meshes, const Ray& r
             const double b = glm::dot(oc, ray.dir);
             if (glm::dot(oc, oc) > reach * reach && (b > 0 || glm::dot(oc - b * ray.dir, oc - b * ray.dir) > reach * reach))
                 continue;
-            for (const MeshHit& hit : meshes[i]->intersect_all(ray)) hits.push_back({hit.t, i, hit.part, hit.N});
+            for (const MeshHit& hit : mesh->intersect_all(ray)) hits.push_back({hit.t, i, hit.part, hit.N});
             continue;
         }
         double t = 0.0;
@@ -90,14 +85,14 @@ SurfacePoint surface_point(const Object& object, const Ray& ray, const Hit& hit)
     return point;
 }
 
-dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hits) {
+dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hits, const LightingOptions& options) {
     // The nearest opaque hit, or the background.
     dvec3 color = scene.background;
     double t_opaque = std::numeric_limits<double>::infinity();
     for (const Hit& hit : hits) {
         const Object& object = scene.objects[hit.object];
         if (is_translucent(object.material)) continue;
-        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit), scene.ambient);
+        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit), scene.ambient, options);
         t_opaque = hit.t;
         break;
     }
@@ -105,8 +100,8 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
         const Object& object = scene.objects[it->object];
         if (!is_translucent(object.material) || !(it->t < t_opaque)) continue;
-        const TranslucentShade shade = reference_hooks(object.material.model()).translucent(
-            object.material, scene.lights, surface_point(object, ray, *it));
+        const TranslucentShade shade =
+            shade_translucent_model(object.material, scene.lights, surface_point(object, ray, *it), options);
         color = shade.color + shade.transmittance * color;
     }
     return color;
@@ -114,25 +109,56 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
 
 }  // namespace
 
-ReferenceImage render_reference(const Scene& scene) {
+ReferenceImage render_reference(const Scene& scene) { return render_reference(scene, AreaQuadrature{}); }
+
+ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadrature, AreaStats* stats) {
     ReferenceImage image;
     image.width = scene.display.width;
     image.height = scene.display.height;
     image.rgb.assign(std::size_t(image.width) * image.height * 3, 0.0);
     image.coverage.assign(std::size_t(image.width) * image.height, 0);
-    const Meshes meshes = build_meshes(scene);
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            const Ray ray = camera_ray(scene.camera, image.width, image.height, x, y);
-            const std::vector<Hit> hits = all_hits(scene, meshes, ray);
-            const dvec3 c = shade_pixel(scene, ray, hits);
-            const std::size_t i = std::size_t(y) * image.width + x;
-            image.rgb[3 * i + 0] = c.r;
-            image.rgb[3 * i + 1] = c.g;
-            image.rgb[3 * i + 2] = c.b;
-            image.coverage[i] = coverage_signature(hits);
+    const SceneBvh bvh(scene);
+    // Each thread takes the next row; every pixel is computed alone, so the image is the same for any count.
+    const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+    std::vector<AreaStats> thread_stats(static_cast<std::size_t>(threads));
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+    std::atomic<int> next_row{0};
+    const auto work = [&](int k) {
+        try {
+            const LightingOptions options{&bvh, quadrature, stats ? &thread_stats[std::size_t(k)] : nullptr};
+            for (int y = next_row++; y < image.height; y = next_row++) {
+                for (int x = 0; x < image.width; ++x) {
+                    const Ray ray = camera_ray(scene.camera, image.width, image.height, x, y);
+                    const std::vector<Hit> hits = all_hits(scene, bvh, ray);
+                    const dvec3 c = shade_pixel(scene, ray, hits, options);
+                    const std::size_t i = std::size_t(y) * image.width + x;
+                    image.rgb[3 * i + 0] = c.r;
+                    image.rgb[3 * i + 1] = c.g;
+                    image.rgb[3 * i + 2] = c.b;
+                    image.coverage[i] = coverage_signature(hits);
+                }
+            }
+        } catch (...) {
+            errors[std::size_t(k)] = std::current_exception();
+            next_row = image.height;  // the others stop too
         }
-    }
+    };
+    std::vector<std::thread> pool;
+    for (int k = 1; k < threads; ++k) pool.emplace_back(work, k);
+    work(0);
+    for (std::thread& thread : pool) thread.join();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
+    if (stats)
+        for (const AreaStats& s : thread_stats) {
+            stats->integrals += s.integrals;
+            stats->closed += s.closed;
+            stats->cells += s.cells;
+            stats->nodes += s.nodes;
+            stats->rays += s.rays;
+            stats->unconverged += s.unconverged;
+            stats->worst_error = std::max(stats->worst_error, s.worst_error);
+        }
     return image;
 }
 
