@@ -1,5 +1,6 @@
 // `m3055 bench [--out DIR] [--quick]`: run time against error.
 #include "bench/bench.h"
+#include "bench/area_bench.h"
 #include "bench/brdf_bench.h"
 #include "commands.h"
 
@@ -12,6 +13,7 @@ void add_bench_command(CLI::App& app) {
         bench::BenchOptions bench;
         std::string backend = "auto";
         std::string brdf;  // --brdf DIR: only the .brdf section (app/bench/brdf_bench.h)
+        bool area = false;  // --area-lights: only the area lights' section (app/bench/area_bench.h)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -31,10 +33,15 @@ void add_bench_command(CLI::App& app) {
                         "Only the .brdf section: the files of DIR (tests/data/brdf) against their built-in "
                         "models, written to --out/brdf.md")
         ->excludes("--replot");
+    command->add_flag("--area-lights", options->area,
+                      "Only the area lights' section: their sampling's frame time against its error from the "
+                      "CPU reference, written to --out/area_lights.md and .csv")
+        ->excludes("--replot");
     command->callback([options]() {
         try {
             options->bench.backend = parse_backend(options->backend);
             if (!options->brdf.empty()) return bench::run_brdf_bench(options->bench, options->brdf);
+            if (options->area) return bench::run_area_bench(options->bench);
             bench::run_bench(options->bench);
         } catch (const std::exception& error) {
             std::cerr << "m3055: " << error.what() << "\n";

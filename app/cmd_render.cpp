@@ -53,7 +53,6 @@ void add_render_command(CLI::App& app) {
             if (const auto problems = files.check(); !problems.empty()) throw std::runtime_error(problems.begin()->second);
             const auto start = std::chrono::steady_clock::now();
             const Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
-            require_drawable(scene, options->scene);
             const auto loaded = std::chrono::steady_clock::now();
             Capture capture(make_headless_context(parse_backend(options->backend)));
             // The budget covers loading and drawing, not making the GL context.

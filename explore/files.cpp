@@ -3,7 +3,6 @@
 #include "explore/edits.h"
 #include "explore/figure_scenes.h"
 #include "explore/operations.h"
-#include "frame/renderer.h"
 #include "image/image.h"
 #include "scene/load.h"
 
@@ -33,7 +32,6 @@ bool apply(Explorer& e, const command::LoadScene& c) {
     Scene scene;
     try {
         scene = load_scene_file(c.path, LoadContext::trusted());
-        require_drawable(scene, c.path);
     } catch (const std::exception& error) {  // SceneError names file and JSON path
         messages.error = messages.load_error = error.what();
         if (c.error_dialog) e.view.dialog = Dialog::load_error;
@@ -173,9 +171,12 @@ void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path) {
     try {
         // The screenshot waits for the specialized program (as `m3055 render` uses).
         const bool deferring = renderer.defers_compiles();
+        const AreaSampling sampling = renderer.area_sampling();
         renderer.set_defer_compiles(false);
+        renderer.set_area_sampling(kRenderSampling);
         renderer.render(e.doc.scene);
         renderer.set_defer_compiles(deferring);
+        renderer.set_area_sampling(sampling);
         write_png(png, renderer.read_display());
         const std::string json = json_beside(png), text = scene_file_text(e);
         write_file_atomic(json, text.data(), text.size());

@@ -3,7 +3,6 @@
 #include "grading/diff_image.h"
 #include "grading/image_input.h"
 #include "frame/render_error.h"
-#include "frame/renderer.h"
 #include "image/image.h"
 #include "io/input_file.h"
 #include "io/message_text.h"
@@ -129,7 +128,6 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
     try {
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = load_scene_file(scene_path, submission);
-        require_drawable(scene, scene_path);
         std::optional<LevelImage> screenshot;
         std::string screenshot_error;
         if (!s.screenshot.empty()) try {

@@ -277,13 +277,6 @@ std::vector<BadCase> bad_cases() {
          "lights[0].direction: must be non-zero"},
         {"bad_projection", edited("\"perspective\"", "\"fisheye\""),
          "camera.projection: must be \"perspective\" or \"orthographic\", got \"fisheye\""},
-        // Loaded, and refused by the GPU path until it draws them (the CPU reference does).
-        {"rect_light_not_drawn_yet",
-         edited("\"type\": \"directional\", \"direction\": [1, 1, 1]",
-                "\"type\": \"rect\", \"position\": [0, 3, 0], \"normal\": [0, -1, 0], \"size\": [1, 1]"),
-         "lights[0].type: rect lights are not drawn by this build yet"},
-        {"shadow_not_drawn_yet", edited("\"intensity\": 1.0, \"color\"", "\"shadow\": true, \"intensity\": 1.0, \"color\""),
-         "lights[0].shadow: shadows are not drawn by this build yet"},
     };
 }
 

@@ -1,10 +1,10 @@
-// The lights as the shaders get them (passes/light_uniforms.h): which lights the
-// GPU path does not draw yet, named by their place in the scene.
+// The lights as the shaders get them (passes/light_uniforms.h): an area light's
+// frame and size, the shadow flags, and the work a light costs.
 #include "passes/light_uniforms.h"
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
+#include <cmath>
 
 namespace m3055 {
 namespace {
@@ -15,24 +15,67 @@ Light of_type(LightType type) {
     return light;
 }
 
-TEST(LightUniforms, AreaAndSkyLightsAndShadowsAreNamedAsNotDrawnYet) {
-    EXPECT_EQ(undrawn_light({of_type(LightType::directional), of_type(LightType::point), of_type(LightType::spot)}),
-              std::nullopt);
-    EXPECT_EQ(undrawn_light({of_type(LightType::point), of_type(LightType::rect)}),
-              "lights[1].type: rect lights are not drawn by this build yet");
-    EXPECT_EQ(undrawn_light({of_type(LightType::disk)}), "lights[0].type: disk lights are not drawn by this build yet");
-    Light sky = of_type(LightType::sky);
-    sky.enabled = false;  // refused all the same: the next engineer draws it, or it stays refused
-    EXPECT_EQ(undrawn_light({sky}), "lights[0].type: sky lights are not drawn by this build yet");
-    Light shadowed = of_type(LightType::spot);
-    shadowed.shadow = true;
-    EXPECT_EQ(undrawn_light({of_type(LightType::directional), shadowed}),
-              "lights[1].shadow: shadows are not drawn by this build yet");
+double length3(const float* v) { return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]); }
+
+TEST(LightUniforms, PlainLightsNeedNeitherAreaSamplingNorShadows) {
+    const LightUniforms u = pack_lights({of_type(LightType::directional), of_type(LightType::spot)});
+    EXPECT_EQ(u.count, 2);
+    EXPECT_FALSE(u.any_area);
+    EXPECT_FALSE(u.any_shadow);
+    EXPECT_EQ(u.work, 2u);
 }
 
-TEST(LightUniforms, PackingRefusesWhatItCannotDraw) {
-    EXPECT_EQ(pack_lights({of_type(LightType::point)}).count, 1);
-    EXPECT_THROW(pack_lights({of_type(LightType::rect)}), std::logic_error);
+TEST(LightUniforms, ARectCarriesItsHalfSidesAlongItsFrame) {
+    Light rect = of_type(LightType::rect);
+    rect.position = dvec3(1.0, 3.0, 0.0);
+    rect.normal = dvec3(0.0, -1.0, 0.0);
+    rect.up = dvec3(0.0, 0.0, -1.0);
+    rect.size[0] = 2.0;
+    rect.size[1] = 0.5;
+    const LightUniforms u = pack_lights({rect});
+    ASSERT_EQ(u.count, 1);
+    EXPECT_TRUE(u.any_area);
+    EXPECT_FLOAT_EQ(u.vector[3], float(shader_type(LightType::rect)));
+    EXPECT_FLOAT_EQ(u.vector[1], 3.0f);
+    EXPECT_NEAR(length3(&u.extent[0]), 1.0, 1e-6);   // size[0] / 2, along N x U
+    EXPECT_NEAR(length3(&u.extent[4]), 0.25, 1e-6);  // size[1] / 2, along U
+    EXPECT_NEAR(u.extent[6], -0.25, 1e-6);  // along U
+    // The scale is the radiance a c / area.
+    EXPECT_NEAR(u.scale[0], 1.0 / (2.0 * 0.5), 1e-6);
+}
+
+TEST(LightUniforms, ADisksAxesAreItsRadiusAcrossItsNormal) {
+    Light disk = of_type(LightType::disk);
+    disk.normal = dvec3(0.0, 0.0, 1.0);
+    disk.radius = 0.5;
+    const LightUniforms u = pack_lights({disk});
+    EXPECT_NEAR(length3(&u.extent[0]), 0.5, 1e-6);
+    EXPECT_NEAR(length3(&u.extent[4]), 0.5, 1e-6);
+    EXPECT_NEAR(u.extent[2], 0.0, 1e-6);  // both axes in the disk's plane
+    EXPECT_NEAR(u.extent[6], 0.0, 1e-6);
+}
+
+TEST(LightUniforms, ShadowFlagsAndTheWorkTheyCost) {
+    Light sky = of_type(LightType::sky);
+    sky.shadow = true;
+    Light point = of_type(LightType::point);
+    point.shadow = true;
+    const LightUniforms render = pack_lights({point, sky}, dvec3(0.0), kRenderSampling);
+    EXPECT_EQ(render.shadow, (std::vector<int>{1, 1}));
+    EXPECT_TRUE(render.any_shadow);
+    const LightUniforms fast = pack_lights({point, sky}, dvec3(0.0), kFastSampling);
+    EXPECT_GT(render.work, fast.work);
+    EXPECT_EQ(fast.work, (1u + 10u) + (1u + 10u * (4u + 4u)));
+}
+
+TEST(LightUniforms, DisabledLightsReachNoShaderWhateverTheirType) {
+    Light rect = of_type(LightType::rect);
+    rect.enabled = false;
+    Light dark = of_type(LightType::sky);
+    dark.intensity = 0.0;
+    const LightUniforms u = pack_lights({rect, dark});
+    EXPECT_EQ(u.count, 0);
+    EXPECT_FALSE(u.any_area);
 }
 
 }  // namespace

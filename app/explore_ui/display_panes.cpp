@@ -40,6 +40,10 @@ DisplayPanes::DisplayPanes(const GlApi& gl, bool compile_at_once) : gl_(gl) {
     renderer_a_ = std::make_unique<Renderer>(gl, *programs_);
     renderer_b_ = std::make_unique<Renderer>(gl, *programs_);
     compare_ = std::make_unique<CompareView>(gl);
+    // Area lights at their centres and 2 x 2 shadow rays: a frame while a slider
+    // moves (docs/lights.md); screenshots take the render's samples.
+    renderer_a_->set_area_sampling(kFastSampling);
+    renderer_b_->set_area_sampling(kFastSampling);
     // No stall on a new specialization (explore/display_renderers.h).
     if (!compile_at_once) {
         defer_compiles(*renderer_a_);

@@ -18,14 +18,14 @@ HighlightParts highlight_parts_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
     int table = int(mat.spectral_table);
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
-        LightSample light = light_sample(i, P);
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+        LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
         diffuse += light.scale * NoL * m3055_material_texel(table + 1 + i).rgb;
         vec3 R = 2.0 * NoL * N - light.L;
         float one_minus_RoV = one_minus_cos(R, V);
-        keep *= 1.0 - highlight_strength(mat.w, light.scale, cos_between(R, V), one_minus_RoV, mat.m);
+        keep *= HIGHLIGHT_KEEP(mat.w, light, cos_between(R, V), one_minus_RoV, mat.m);
     }
     HighlightParts parts;
     parts.C1 = min(mat.d * m3055_material_texel(table).rgb + (1.0 - mat.d) * diffuse, vec3(1.0));
@@ -37,14 +37,14 @@ HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
     if (mat.spectral_table >= 0.0) return highlight_parts_spectral(mat, P, N, V);
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) {
-        LightSample light = light_sample(i, P);
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+        LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
         diffuse += light.scale * NoL;
         vec3 R = 2.0 * NoL * N - light.L;
         float one_minus_RoV = one_minus_cos(R, V);
-        keep *= 1.0 - highlight_strength(mat.w, light.scale, cos_between(R, V), one_minus_RoV, mat.m);
+        keep *= HIGHLIGHT_KEEP(mat.w, light, cos_between(R, V), one_minus_RoV, mat.m);
     }
     HighlightParts parts;
     parts.C1 = min((mat.d + (1.0 - mat.d) * diffuse) * mat.color, vec3(1.0));

@@ -11,3 +11,13 @@ vec3 highlight_strength(float w, vec3 scale, float RoV, float one_minus_RoV, flo
 vec3 highlight_to_white(vec3 C1, vec3 keep) {
     return 1.0 - (1.0 - C1) * keep;
 }
+
+// What light sample `light` leaves of C1: 1 - s_l. A sample of an area or sky
+// light is one of ever more, ever weaker lights, whose product tends to
+// exp(-w integral L ((R.V)+)^m dw): the limit, and the clamp never acts
+// (docs/spec.md#75-area-lights-the-sky-and-shadows).
+#ifdef HAS_AREA_LIGHTS
+#define HIGHLIGHT_KEEP(w, light, RoV, one_minus_RoV, m) (light.area ? exp(-(w) * light.scale * pow_cos(RoV, one_minus_RoV, m)) : 1.0 - highlight_strength(w, light.scale, RoV, one_minus_RoV, m))
+#else
+#define HIGHLIGHT_KEEP(w, light, RoV, one_minus_RoV, m) (1.0 - highlight_strength(w, light.scale, RoV, one_minus_RoV, m))
+#endif

@@ -1,7 +1,6 @@
 #include "batch/run_batch.h"
 
 #include "frame/render_error.h"
-#include "frame/renderer.h"
 #include "image/image.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
@@ -119,7 +118,7 @@ std::vector<std::string> check_scenes(const std::vector<BatchItem>& items, const
             continue;
         }
         try {
-            require_drawable(load_scene_file(items[i].scene, scenes), items[i].scene);
+            load_scene_file(items[i].scene, scenes);
         } catch (const std::exception& e) {
             errors[i] = e.what();
         }

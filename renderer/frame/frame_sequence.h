@@ -18,8 +18,10 @@ namespace m3055 {
 
 class FrameSequence {
 public:
-    // `targets` and `scene` must outlive the sequence.
-    FrameSequence(const GlApi& gl, FrameTargets& targets, const Scene& scene);
+    // `targets` and `scene` must outlive the sequence. `sampling`: the area
+    // lights' (passes/light_uniforms.h).
+    FrameSequence(const GlApi& gl, FrameTargets& targets, const Scene& scene,
+                  AreaSampling sampling = kRenderSampling);
 
     const CameraFrame& camera() const { return camera_; }
     const LightUniforms& lights() const { return lights_; }

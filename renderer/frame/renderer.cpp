@@ -62,6 +62,7 @@ struct Renderer::Impl {
     ShaderMode shader_mode = ShaderMode::specialized;
     TranslucentBlend blend;       // set_translucent_blend; default_translucent_blend at first
     TranslucentBlender blender;   // the two-pass draws
+    AreaSampling sampling = kRenderSampling;  // set_area_sampling
     bool defer_compiles = false;         // set_defer_compiles
     std::set<ProgramKey> deferred;       // specialized programs not built yet (render_specialized)
     ChunkedDraws::Deadline deadline;  // set_deadline
@@ -103,6 +104,9 @@ struct Renderer::Impl {
             return programs.get(key);
         deferred.insert(key);
         std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
+        for (const char* feature : {"HAS_AREA_LIGHTS", "HAS_SHADOWS"})  // the scene's, as the key has them
+            if (std::find(key.defines.begin(), key.defines.end(), feature) != key.defines.end())
+                general.push_back(feature);
         if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
         if (translucent_pass && blend == TranslucentBlend::two_pass) general.push_back(kTwoPassBlendDefine);
         return programs.get({key.vertex, key.fragment, general});
@@ -113,7 +117,7 @@ struct Renderer::Impl {
                       bool two_pass = false) {
         if (instances.empty()) return;
         sequence.use_program(program);
-        spheres.draw(instances, deadline ? &*chunks : nullptr, std::size_t(sequence.lights().count),
+        spheres.draw(instances, deadline ? &*chunks : nullptr, sequence.lights().work,
                      two_pass ? &blender : nullptr, program, targets.width(), targets.height());
     }
 
@@ -127,7 +131,7 @@ struct Renderer::Impl {
         if (!meshes.opaque_objects().empty()) {
             const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
             sequence.use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false));
-            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), nullptr);
+            draw_meshes(sequence.camera(), sequence.lights().work, nullptr);
         }
     }
 
@@ -165,7 +169,7 @@ struct Renderer::Impl {
             if (m == mesh_order.size()) break;
             const unsigned mesh_program = program({"passes/mesh.vert", "passes/mesh.frag", mesh_defines}, true);
             sequence.use_program(mesh_program);
-            draw_meshes(sequence.camera(), std::size_t(sequence.lights().count), &mesh_order[m],
+            draw_meshes(sequence.camera(), sequence.lights().work, &mesh_order[m],
                         two_pass ? mesh_program : 0);
         }
         gl.Disable(GL_BLEND);
@@ -194,10 +198,9 @@ struct Renderer::Impl {
     }
 
     void draw_scene(const Scene& scene) {
-        if (const auto problem = undrawn_light(scene.lights)) throw std::invalid_argument(*problem);
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
         chunks->check_deadline();  // loading the scene may have taken it all
-        FrameSequence sequence(gl, targets, scene);
+        FrameSequence sequence(gl, targets, scene, sampling);
         const SphereSets sets = sort_spheres(scene, sequence.camera());
         meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
@@ -208,11 +211,6 @@ struct Renderer::Impl {
         sequence.finish();  // Pass 3: the display's levels
     }
 };
-
-void require_drawable(const Scene& scene, const std::string& scene_path) {
-    if (const auto problem = undrawn_light(scene.lights))
-        throw SceneError(text::quote_name(scene_path) + ": " + *problem);
-}
 
 Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
     : impl_(std::make_unique<Impl>(gl, nullptr, &programs)) {}
@@ -225,6 +223,10 @@ void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point>
 }
 void Renderer::set_translucent_blend(TranslucentBlend blend) { impl_->blend = blend; }
 TranslucentBlend Renderer::translucent_blend() const { return impl_->blend; }
+void Renderer::set_area_sampling(AreaSampling sampling) {
+    impl_->sampling = {std::max(sampling.light, 1), std::max(sampling.shadow, 2)};
+}
+AreaSampling Renderer::area_sampling() const { return impl_->sampling; }
 void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }
 bool Renderer::defers_compiles() const { return impl_->defer_compiles; }
 void Renderer::render_specialized(const Scene& scene) {

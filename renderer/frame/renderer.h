@@ -10,6 +10,7 @@
 #include "gl/program.h"
 #include "frame/render_error.h"
 #include "image/image.h"
+#include "passes/light_uniforms.h"
 #include "passes/shader_plan.h"
 #include "passes/translucent_blend.h"
 #include "scene/scene.h"
@@ -21,13 +22,6 @@
 #include <string>
 
 namespace m3055 {
-
-// Throws SceneError "FILE: lights[2].type: rect lights are not drawn by this
-// build yet" (the file named as the loader names it) for a scene whose lights
-// the shaders cannot draw yet (passes/light_uniforms.h: undrawn_light), which
-// render() refuses; the renders of files check it where they load them, so the
-// message names the file.
-void require_drawable(const Scene& scene, const std::string& scene_path);
 
 class Renderer {
 public:
@@ -42,9 +36,15 @@ public:
 
     // Renders `scene` at scene.display.width x height. Throws ShaderError with
     // the GL log (shader file name and line) if a program fails to build,
-    // RenderTimeout past a deadline (frame/render_error.h), and
-    // std::invalid_argument for lights it cannot draw (require_drawable).
+    // RenderTimeout past a deadline (frame/render_error.h).
     void render(const Scene& scene);
+
+    // How area and sky lights are sampled (passes/light_uniforms.h):
+    // kRenderSampling by default, what the command line renders with; the
+    // explorer takes kFastSampling while a slider moves. Scenes without area
+    // lights are the same under every sampling.
+    void set_area_sampling(AreaSampling sampling);
+    AreaSampling area_sampling() const;
 
     // Specialized programs (the default) are compiled per scene shape and
     // cached; general ones serve every scene. Both give the same pixels.

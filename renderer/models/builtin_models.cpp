@@ -92,6 +92,7 @@ ModelSpec highlight() {
     s.params = highlight_params();
     s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/highlight.glsl", s.glsl_hook = "shade_highlight";
+    s.glsl_lobe = "mat.m";
     return s;
 }
 
@@ -107,6 +108,7 @@ ModelSpec translucent() {
                               "Kay's falloff power: larger makes faces towards the viewer clearer", "eq. 6"));
     s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/translucent.glsl", s.glsl_hook = "shade_translucent";
+    s.glsl_lobe = "mat.m";
     return s;
 }
 
@@ -166,6 +168,7 @@ ModelSpec metal() {
                                           "Beckmann roughness m_j (eq. 13)"));
     s.summary = "metal after Cook-Torrance, a mixture of Beckmann lobes; F = C0";
     s.glsl_hook = "beckmann_lobe_sum";
+    s.glsl_lobe = "sharpest_lobe(mat, i, LIGHT_LOBES_BECKMANN)";
     return s;
 }
 
@@ -177,6 +180,7 @@ ModelSpec metal_blinn() {
                                           "exponent n_j on N.H"));
     s.summary = "cheap metal: lobes ((N.H)+)^n_j";
     s.glsl_hook = "blinn_lobe_sum";
+    s.glsl_lobe = "exponent_on_half_vector(sharpest_lobe(mat, i, LIGHT_LOBES_EXPONENT))";
     return s;
 }
 
@@ -186,6 +190,7 @@ ModelSpec metal_phong() {
                                           "exponent n_j on R.V"));
     s.summary = "cheap metal: lobes ((R.V)+)^n_j, falls off twice as fast as eq. 15";
     s.glsl_hook = "phong_lobe_sum";
+    s.glsl_lobe = "sharpest_lobe(mat, i, LIGHT_LOBES_EXPONENT)";
     return s;
 }
 
@@ -247,12 +252,14 @@ std::vector<ModelSpec> diffuse_models() {
 ModelSpec phong() {
     ModelSpec s = classic("phong", "Phong", "Phong 1975 (seed 001)", "Lambert + ((R.V)+)^n K_spec", true);
     s.params.push_back(shininess("exponent n on R.V: larger is a smaller, sharper highlight", "seed 001"));
+    s.glsl_lobe = "mat.shininess";
     return s;
 }
 
 ModelSpec blinn_phong() {
     ModelSpec s = classic("blinn_phong", "Blinn-Phong", "Blinn 1977 (seed 003)", "Lambert + ((N.H)+)^n K_spec", true);
     s.params.push_back(shininess("exponent n on N.H: larger is a smaller, sharper highlight", "seed 003"));
+    s.glsl_lobe = "exponent_on_half_vector(mat.shininess)";
     return s;
 }
 
@@ -302,6 +309,7 @@ ModelSpec microfacet() {
     metal.help = "a measured metal: K_spec F from its complex index n + i k under each light (ior unused)";
     s.params.push_back(metal);
     s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}, {"spectral_table", 1, no_spectral_table}};
+    s.glsl_lobe = "microfacet_lobe(mat)";
     return s;
 }
 
@@ -320,6 +328,7 @@ ModelSpec ward() {
     s.params.push_back(number("alpha_y", "alpha_y", closed(0.001, 1.0), 0.5,
                               "roughness along the bitangent N x T", "seed 002", true));
     s.params.push_back(tangent_axis());
+    s.glsl_lobe = "exponent_of_roughness(sqrt(mat.alpha_x * mat.alpha_y))";
     return s;
 }
 
@@ -402,6 +411,7 @@ ModelSpec principled() {
     s.glsl_file = "models/principled.glsl";
     s.glsl_hook = "diffuse_principled";
     s.glsl_specular = "specular_principled";
+    s.glsl_lobe = "exponent_of_roughness(max(mat.roughness * mat.roughness, 0.001))";
     // kd: K_diff for the composer; spectral_table: read by the composer, -1 (no spectra here).
     s.derived = {{"kd", 3, principled_kd}, {"spectral_table", 1, no_spectral_table}};
     return s;

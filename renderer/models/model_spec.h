@@ -113,6 +113,11 @@ struct ModelSpec {
     std::string glsl_file;  // glsl/ file defining the hook (included when the model is present)
     std::string glsl_hook;  // its GLSL function, with the family's signature (classic: the diffuse factor)
     std::string glsl_specular;  // classic: the specular hook ("" for a diffuse-only model)
+    // The Phong exponent e of a lobe ((R_V . L)+)^e about V's mirror direction R_V
+    // that the model's highlight resembles, as a GLSL expression of `mat` and the
+    // light `i` (helpers: glsl/common/lobe_hints.glsl); area lights draw samples
+    // from it as well as from the emitter. "": no highlight to draw from.
+    std::string glsl_lobe;
     std::vector<DerivedValue> derived;
     // GLSL the entry brings itself, (path, text) as the composer includes it
     // (run-time models: a .brdf file's code and its wrapper); built-in models

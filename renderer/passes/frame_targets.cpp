@@ -11,7 +11,7 @@ namespace m3055 {
 
 FrameTargets::FrameTargets(const GlApi& gl, ProgramCache& programs)
     : gl_(gl), programs_(programs), scene_(gl, 1, true, "scene"), display_texture_(gl), display_fbo_(gl),
-      materials_(gl), empty_vao_(gl) {}
+      materials_(gl), occluders_(gl), empty_vao_(gl) {}
 
 void FrameTargets::ensure_size(int width, int height) {
     if (width == scene_.width() && height == scene_.height()) return;
@@ -31,6 +31,10 @@ void FrameTargets::begin(const Scene& scene) {
     for (const Object& object : scene.objects) pack_material(object.material, records);
     append_spectral_tables(scene.objects, scene.lights, records);
     materials_.upload(records);
+    const bool shadows = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) {
+        return light.shadow && light.enabled && light.intensity > 0.0;
+    });
+    if (shadows) occluders_.upload(scene);
     const int w = width(), h = height();
     gl_.BindFramebuffer(GL_FRAMEBUFFER, scene_.framebuffer());
     gl_.Viewport(0, 0, w, h);

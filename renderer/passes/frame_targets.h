@@ -1,7 +1,8 @@
 // The plumbing of one frame, in one place for everything that renders a scene
 // (through frame/frame_sequence.h: the Renderer, and the benchmark's UV-sphere
 // renderer): the float scene target with its depth buffer (render_targets.h),
-// the display target, the material records (material_texture.h), the clear to
+// the display target, the material records (material_texture.h), the objects
+// as shadow rays meet them (occluders.h), the clear to
 // the background, the quantize pass (docs/spec.md#2-display) and the read-backs.
 #pragma once
 
@@ -10,6 +11,7 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "passes/material_texture.h"
+#include "passes/occluders.h"
 #include "passes/render_targets.h"
 #include "scene/scene.h"
 
@@ -23,6 +25,7 @@ public:
 
     // Starts a frame of `scene`: targets at the display's size (kept while the
     // size stays), the objects' material records uploaded (u_materials, unit 0),
+    // the occluders uploaded when a light casts shadows (u_occluders, unit 3),
     // the scene target bound, cleared to the background and depth 1, with depth
     // test LESS, depth writes on and blending off.
     void begin(const Scene& scene);
@@ -33,6 +36,8 @@ public:
 
     // Sets a program's material uniforms (the sampler's unit, the record stride); call after UseProgram.
     void set_material_uniforms(unsigned program) const;
+    // Sets a program's occluder uniforms (shadows); call after UseProgram.
+    void set_occluder_uniforms(unsigned program) const { occluders_.set_uniforms(program); }
 
     // The quantize pass (docs/spec.md#2-display: display bits, optional dither) from the scene
     // target into the display target; leaves framebuffer 0 bound.
@@ -55,6 +60,7 @@ private:
     GlTexture display_texture_;
     GlFramebuffer display_fbo_;
     MaterialTexture materials_;
+    OccluderTexture occluders_;
     GlVertexArray empty_vao_;  // the quantize pass's fullscreen triangle has no attributes
 };
 

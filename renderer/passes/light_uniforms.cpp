@@ -1,35 +1,61 @@
 #include "passes/light_uniforms.h"
 
+#include "geometry/mesh.h"
 #include "scene/area_light.h"
 
 #include <stdexcept>
 
 namespace m3055 {
 
-std::optional<std::string> undrawn_light(const std::vector<Light>& lights) {
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const std::string path = "lights[" + std::to_string(i) + "]";
-        if (is_area_light(lights[i].type))
-            return path + ".type: " + to_string(lights[i].type) + " lights are not drawn by this build yet";
-        if (lights[i].shadow) return path + ".shadow: shadows are not drawn by this build yet";
+int shader_type(LightType type) {
+    switch (type) {
+        case LightType::directional: return 0;
+        case LightType::point: return 1;
+        case LightType::spot: return 2;
+        case LightType::rect: return 3;
+        case LightType::disk: return 4;
+        case LightType::sky: return 5;
     }
-    return std::nullopt;
+    return 0;
 }
 
-LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient) {
+LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_ambient, AreaSampling sampling) {
     LightUniforms u;
     for (int c = 0; c < 3; ++c) u.global_ambient[c] = float(global_ambient[c]);
-    if (const auto problem = undrawn_light(lights)) throw std::logic_error(*problem);
+    u.sampling = sampling;
     for (const auto& light : lights) {
         if (!reaches_shader(light)) continue;
-        const dvec3 scale = light.intensity * light.color;
-        const dvec3 where = light.type == LightType::directional ? light.direction : light.position;
-        const float type = light.type == LightType::directional ? 0.f : light.type == LightType::point ? 1.f : 2.f;
+        const float type = float(shader_type(light.type));
+        // An area light's scale is its radiance, its vector the emitter's centre (the sky's: up), its
+        // spot direction the emitter's normal, and its extent the emitter's half-sides or radius axes.
+        const bool area = is_area_light(light.type);
+        const dvec3 scale = area ? radiance(light) : light.intensity * light.color;
+        const dvec3 where = light.type == LightType::directional ? light.direction
+                            : light.type == LightType::sky       ? light.up
+                                                                 : light.position;
+        const dvec3 facing = area ? light.normal : light.spot_direction;
         u.vector.insert(u.vector.end(), {float(where.x), float(where.y), float(where.z), type});
         u.scale.insert(u.scale.end(), {float(scale.r), float(scale.g), float(scale.b)});
-        u.spot.insert(u.spot.end(), {float(light.spot_direction.x), float(light.spot_direction.y),
-                                     float(light.spot_direction.z), float(light.spot_exponent)});
+        u.spot.insert(u.spot.end(), {float(facing.x), float(facing.y), float(facing.z), float(light.spot_exponent)});
         u.att.insert(u.att.end(), {float(light.att_constant), float(light.att_linear), float(light.att_quadratic)});
+        dvec3 e0(0.0), e1(0.0);
+        if (light.type == LightType::rect) {
+            const RectFrame frame = rect_frame(light);
+            e0 = 0.5 * light.size[0] * frame.side0;
+            e1 = 0.5 * light.size[1] * frame.side1;
+        } else if (light.type == LightType::disk) {
+            const geometry::AxisFrame frame = geometry::axis_frame(light.normal);
+            e0 = light.radius * frame.t;
+            e1 = light.radius * frame.b;
+        }
+        u.extent.insert(u.extent.end(), {float(e0.x), float(e0.y), float(e0.z), 0.f, float(e1.x), float(e1.y),
+                                         float(e1.z), 0.f});
+        u.shadow.push_back(light.shadow ? 1 : 0);
+        u.any_area = u.any_area || area;
+        u.any_shadow = u.any_shadow || light.shadow;
+        const std::size_t samples = area ? std::size_t(sampling.light * sampling.light) : 1;
+        const std::size_t rays = !light.shadow ? 0 : area ? std::size_t(4 + sampling.shadow * sampling.shadow) : 1;
+        u.work += samples + 10 * rays;
         float lobes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (std::size_t j = 0; j < light.lobes.size() && j < 4; ++j) {
             lobes[2 * j] = float(light.lobes[j].w);
@@ -58,6 +84,11 @@ void upload_lights(const GlApi& gl, unsigned program, const LightUniforms& light
     gl.Uniform1iv(location("u_light_lobe_count"), lights.count, lights.lobe_count.data());
     gl.Uniform1iv(location("u_light_lobe_kind"), lights.count, lights.lobe_kind.data());
     gl.Uniform4fv(location("u_light_lobes"), lights.count * 2, lights.lobes.data());
+    // Only in programs with area lights or shadows (-1 elsewhere: no-ops).
+    gl.Uniform4fv(location("u_light_extent"), lights.count * 2, lights.extent.data());
+    gl.Uniform1iv(location("u_light_shadow"), lights.count, lights.shadow.data());
+    gl.Uniform1i(location("u_area_samples"), lights.sampling.light);
+    gl.Uniform1i(location("u_shadow_samples"), lights.sampling.shadow);
 }
 
 }  // namespace m3055

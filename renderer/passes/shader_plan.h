@@ -21,4 +21,9 @@ enum class ShaderMode {
 std::vector<std::string> specialization_defines(ShaderMode mode, const std::vector<const Object*>& objects,
                                                 const std::vector<Light>& lights);
 
+// HAS_AREA_LIGHTS and/or HAS_SHADOWS where `lights` (enabled, intensity > 0)
+// have an area or sky light or a shadow: both modes add them, as programs
+// without them are exactly the programs from before these lights.
+std::vector<std::string> area_and_shadow_defines(const std::vector<Light>& lights);
+
 }  // namespace m3055

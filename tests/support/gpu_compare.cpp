@@ -36,7 +36,7 @@ const GlApi& shared_gl() { return gpu().context->gl(); }
 std::string Comparison::describe() const {
     std::ostringstream text;
     text << "interior pixels " << interior_pixels << ", max |diff| " << max_abs_diff << ", max scaled diff "
-         << max_scaled_diff << ", mean |diff| " << mean_abs_diff << ", same level " << same_level_share * 100
+         << max_scaled_diff << ", mean |diff| " << mean_abs_diff << ", mean diff " << mean_signed_diff << ", same level " << same_level_share * 100
          << "%, max level diff " << max_level_diff << ", non-finite " << nonfinite_values;
     return text.str();
 }
@@ -53,7 +53,7 @@ Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& refe
     const int w = display.width, h = display.height, bits = display.bits;
     Comparison result;
     long same = 0;
-    double sum = 0;
+    double sum = 0, signed_sum = 0;
     for (float value : raw.pixels)
         if (!std::isfinite(value)) ++result.nonfinite_values;
     for (int y = 0; y < h; ++y) {
@@ -68,6 +68,7 @@ Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& refe
                 result.max_abs_diff = std::max(result.max_abs_diff, diff);
                 result.max_scaled_diff = std::max(result.max_scaled_diff, diff / std::max(1.0, std::abs(expected)));
                 sum += diff;
+                signed_sum += actual - expected;
                 const int level_diff = std::abs(quantize_level(actual, bits) - quantize_level(expected, bits));
                 result.max_level_diff = std::max(result.max_level_diff, level_diff);
                 if (level_diff) same_level = false;
@@ -77,6 +78,7 @@ Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& refe
     }
     if (result.interior_pixels) {
         result.mean_abs_diff = sum / (3.0 * result.interior_pixels);
+        result.mean_signed_diff = signed_sum / (3.0 * result.interior_pixels);
         result.same_level_share = double(same) / result.interior_pixels;
     } else {
         result.same_level_share = 1.0;

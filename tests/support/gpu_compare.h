@@ -19,6 +19,7 @@ struct Comparison {
     double max_abs_diff = 0;     // over interior pixels, unquantized colour
     double max_scaled_diff = 0;  // |gpu - ref| / max(1, |ref|): what the tolerance bounds
     double mean_abs_diff = 0;
+    double mean_signed_diff = 0;  // gpu - ref: a bias, where mean |diff| is also noise
     double same_level_share = 0; // share of interior pixels on the same display level (all channels)
     int max_level_diff = 0;      // largest level difference on interior pixels
     long interior_pixels = 0;

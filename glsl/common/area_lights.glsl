@@ -1,0 +1,264 @@
+// Rect, disk and sky lights (docs/spec.md#75-area-lights-the-sky-and-shadows) as what
+// the models take: directional lights, one per sample of the emitter. What a
+// light adds is the integral of L(w) r(w) dw over the directions w in which
+// the point sees it, r being what a unit directional light from w adds; the
+// samples estimate it, and the models are the integrand untouched.
+//
+// The estimate (docs/lights.md). n x n strata of the unit square, the lattice
+// shifted by a per-pixel, per-light Cranley-Patterson rotation (so the error
+// is fine noise, not bands, and the same pixel gets the same samples in every
+// render, desktop and browser), mapped onto the emitter (uniform in area for a
+// rect or disk, cosine-weighted about N for the sky) and, for a model with a
+// highlight, onto a Phong lobe about V's mirror direction too; the two are
+// combined by the balance heuristic (common/lights.glsl: walk_direction).
+// Then every sample is scaled by E / E_s, E the exact projected solid angle
+// (what a Lambert surface integrates: Lambert's polygon formula for the rect
+// clipped to the horizon, the disk's boundary integral, the sky's lune) and
+// E_s the samples' own estimate of it. This ratio makes a Lambert term exact
+// whatever n, leaves the others consistent (the factor tends to 1), and with
+// shadows it is the ratio estimator of Heitz et al. 2018, "Combining analytic
+// direct illumination and stochastic shadows": analytic unshadowed light times
+// the sampled shadowed / unshadowed fraction. C++ twin: the reference
+// integrates the same emitters adaptively (reference/emitters.h).
+//
+// Precision. Lambert's formula sums one term per edge; for an emitter that
+// subtends little the terms cancel (float keeps 1e-7 of each), and the samples
+// are accurate there anyway (the integrand hardly varies across the light), so
+// below kExactMinSize the factor is 1. Edge angles by atan(|a x b|, a . b),
+// which keeps small angles that acos(a . b) loses.
+
+#include "common/constants.glsl"
+
+#define LIGHT_RECT 3
+#define LIGHT_DISK 4
+#define LIGHT_SKY 5
+
+uniform vec4 u_light_extent[MAX_LIGHTS * 2];  // rect: half-side vectors; disk: radius x two unit axes
+uniform int u_area_samples;                   // strata along each side of the square (n)
+
+// Below this angular size (extent / distance) the samples alone are used.
+const float kExactMinSize = 0.01;
+
+// One step of the PCG hash (O'Neill 2014; the RXS-M-XS output of Jarzynski
+// and Olano 2020, "Hash functions for GPU rendering").
+uint pcg_hash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// The rotation of light i's strata at this pixel, in [0, 1)^2.
+vec2 strata_rotation(int i) {
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint h = pcg_hash(pixel.x + pcg_hash(pixel.y + pcg_hash(uint(i))));
+    return vec2(float(h >> 8u), float(pcg_hash(h) >> 8u)) * (1.0 / 16777216.0);
+}
+
+// Sample k of n x n: its stratum's centre, shifted by `rotation` (mod 1).
+vec2 stratum_point(int k, int n, vec2 rotation) {
+    vec2 cell = vec2(float(k % n), float(k / n));
+    return fract((cell + 0.5) / float(n) + rotation);
+}
+
+// Shirley and Chiu 1997's concentric map from [0, 1)^2 to the unit disk
+// (area-preserving, so strata stay strata).
+vec2 concentric_disk(vec2 u) {
+    vec2 a = 2.0 * u - 1.0;
+    if (a.x == 0.0 && a.y == 0.0) return vec2(0.0);
+    float r, phi;
+    if (abs(a.x) > abs(a.y)) {
+        r = a.x;
+        phi = (PI / 4.0) * (a.y / a.x);
+    } else {
+        r = a.y;
+        phi = (PI / 2.0) - (PI / 4.0) * (a.x / a.y);
+    }
+    return r * vec2(cos(phi), sin(phi));
+}
+
+// A direction towards an emitter seen from P: the unit direction, the
+// density (per solid angle) with which the emitter's own sampling draws it
+// (0: it adds nothing), and how far the emitter is along it (< 0: infinitely).
+struct AreaSample {
+    vec3 L;
+    float pdf;
+    float distance;
+};
+
+// Two unit vectors completing the unit Z to a right-handed frame.
+void complete_frame(vec3 Z, out vec3 T, out vec3 B) {
+    T = normalize(abs(Z.x) > 0.5 ? cross(Z, vec3(0.0, 1.0, 0.0)) : cross(Z, vec3(1.0, 0.0, 0.0)));
+    B = cross(Z, T);
+}
+
+// A point X of a rect or disk of area `area` and unit normal `normal`, drawn uniformly in area.
+AreaSample emitter_sample(vec3 P, vec3 X, vec3 normal, float area) {
+    AreaSample s;
+    vec3 d = X - P;
+    float d2 = dot(d, d);
+    s.distance = sqrt(d2);
+    s.L = d / s.distance;
+    float cos_e = -dot(s.L, normal);  // one-sided: the back of the emitter gives nothing
+    s.pdf = cos_e > 0.0 ? d2 / (area * cos_e) : 0.0;
+    return s;
+}
+
+// The sky's density at w: cosine-weighted about N, none where the sky is not.
+float sky_pdf(vec3 N, vec3 up, vec3 w) {
+    float z = dot(N, w);
+    return (dot(w, up) > 0.0 && z > 0.0) ? z / PI : 0.0;
+}
+
+// The sky's sample from u: cosine-weighted about N.
+AreaSample sky_sample(vec3 N, vec3 up, vec2 u) {
+    vec2 disk = concentric_disk(u);
+    float z = sqrt(max(1.0 - dot(disk, disk), 0.0));
+    vec3 T, B;
+    complete_frame(N, T, B);
+    AreaSample s;
+    s.L = normalize(disk.x * T + disk.y * B + z * N);
+    s.distance = -1.0;
+    s.pdf = sky_pdf(N, up, s.L);
+    return s;
+}
+
+float emitter_area(int i, int type) {
+    float r0 = length(u_light_extent[2 * i].xyz), r1 = length(u_light_extent[2 * i + 1].xyz);
+    return type == LIGHT_RECT ? 4.0 * r0 * r1 : PI * r0 * r1;
+}
+
+// Sample k of n x n of area light i (of type `type`) from the point P of normal N.
+AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
+    vec2 u = stratum_point(k, n, rotation);
+    vec3 centre = u_light_vector[i].xyz;
+    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+    if (type == LIGHT_SKY) return sky_sample(N, centre, u);
+    vec3 normal = u_light_spot[i].xyz;
+    vec2 at = type == LIGHT_RECT ? 2.0 * u - 1.0 : concentric_disk(u);
+    return emitter_sample(P, centre + at.x * e0 + at.y * e1, normal, emitter_area(i, type));
+}
+
+// The density with which area_sample draws the direction w (0 where w misses
+// the emitter or meets its back), and the emitter's distance along w.
+AreaSample area_sample_towards(int i, int type, vec3 P, vec3 N, vec3 w) {
+    AreaSample s;
+    s.L = w;
+    s.distance = -1.0;
+    vec3 centre = u_light_vector[i].xyz;
+    if (type == LIGHT_SKY) {
+        s.pdf = sky_pdf(N, centre, w);
+        return s;
+    }
+    s.pdf = 0.0;
+    vec3 normal = u_light_spot[i].xyz;
+    float facing = -dot(w, normal);
+    if (facing <= 0.0) return s;
+    float t = dot(P - centre, normal) / facing;
+    if (t <= 0.0) return s;
+    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+    vec3 offset = P + t * w - centre;
+    vec2 at = vec2(dot(offset, e0) / dot(e0, e0), dot(offset, e1) / dot(e1, e1));
+    bool inside = type == LIGHT_RECT ? max(abs(at.x), abs(at.y)) <= 1.0 : dot(at, at) <= 1.0;
+    if (!inside) return s;
+    s.distance = t;
+    s.pdf = t * t / (emitter_area(i, type) * facing);
+    return s;
+}
+
+// A Phong lobe ((D . w)+)^e about the unit D, as a density over directions
+// ((e + 1) / 2 pi (D . w)^e) and a sample of it from u (Phong's inversion:
+// cos = u^(1 / (e + 1))). The models' highlights resemble such lobes about
+// V's mirror direction (generated/models.glsl: lobe_exponent); drawing
+// directions from them as well as from the emitter keeps a sharp highlight of
+// a large light from being a few bright pixels.
+float phong_lobe_pdf(vec3 w, vec3 D, float e) {
+    float c = dot(w, D);
+    return c > 0.0 ? (e + 1.0) / (2.0 * PI) * pow(c, e) : 0.0;
+}
+
+vec3 phong_lobe_direction(vec2 u, vec3 D, float e) {
+    float c = pow(max(u.x, 1e-30), 1.0 / (e + 1.0));
+    float s = sqrt(max(1.0 - c * c, 0.0));
+    float phi = 2.0 * PI * u.y;
+    vec3 T, B;
+    complete_frame(D, T, B);
+    return normalize(s * cos(phi) * T + s * sin(phi) * B + c * D);
+}
+
+// An edge's share of Lambert's formula, from a to b (directions from the
+// shaded point): the angle it subtends times N . (a x b) / |a x b|.
+float lambert_edge(vec3 a, vec3 b, vec3 N) {
+    vec3 c = cross(a, b);
+    float s = length(c);
+    return s > 0.0 ? atan(s, dot(a, b)) * dot(N, c) / s : 0.0;
+}
+
+// The projected solid angle of the rect with corners P + v[0..3] (in order)
+// above the horizon of N: Sutherland-Hodgman against N . x > 0 (a convex
+// quadrilateral keeps at most five corners), then Lambert's formula (Lambert
+// 1760; Arvo 1995, "Applications of irradiance tensors", eq. 1).
+float rect_projected_solid_angle(vec3 v0, vec3 v1, vec3 v2, vec3 v3, vec3 N) {
+    vec3 v[4] = vec3[4](v0, v1, v2, v3);
+    vec3 clipped[5];
+    int count = 0;
+    for (int j = 0; j < 4; ++j) {
+        vec3 a = v[j], b = v[(j + 1) % 4];
+        float ha = dot(N, a), hb = dot(N, b);
+        if (ha > 0.0) clipped[count++] = a;
+        if ((ha > 0.0) != (hb > 0.0)) clipped[count++] = a + (ha / (ha - hb)) * (b - a);
+    }
+    float sum = 0.0;
+    for (int j = 0; j < count; ++j) sum += lambert_edge(clipped[j], clipped[(j + 1) % count], N);
+    return 0.5 * abs(sum);
+}
+
+// Gauss-Legendre nodes and weights on [-1, 1], the positive half (16 points).
+const float kGaussX[8] = float[8](0.0950125098, 0.2816035508, 0.4580167777, 0.6178762444, 0.7554044084,
+                                  0.8656312024, 0.9445750231, 0.9894009350);
+const float kGaussW[8] = float[8](0.1894506105, 0.1826034150, 0.1691565194, 0.1495959888, 0.1246289713,
+                                  0.0951585117, 0.0622535239, 0.0271524594);
+
+// The disk's projected solid angle: its boundary integral
+// 1/2 oint N . (r x dr) / |r|^2 (Lambert's formula, the edge made a curve) over
+// the arc above the horizon, by Gauss-Legendre in the angle, closed by the
+// horizon's chord (a straight edge, exact). `c`: centre - P; e0, e1: radius x axes.
+float disk_projected_solid_angle(vec3 c, vec3 e0, vec3 e1, vec3 N) {
+    float hc = dot(N, c), h0 = dot(N, e0), h1 = dot(N, e1);
+    float rho = sqrt(h0 * h0 + h1 * h1);
+    if (hc <= -rho) return 0.0;
+    float t0 = 0.0, t1 = 2.0 * PI;
+    bool cut = hc < rho;
+    if (cut) {  // above the horizon where cos(t - phi) > -hc / rho
+        float phi = atan(h1, h0), half_arc = acos(clamp(-hc / rho, -1.0, 1.0));
+        t0 = phi - half_arc;
+        t1 = phi + half_arc;
+    }
+    float mid = 0.5 * (t0 + t1), half_len = 0.5 * (t1 - t0), sum = 0.0;
+    for (int j = 0; j < 16; ++j) {
+        float x = (j < 8 ? -1.0 : 1.0) * kGaussX[j % 8];
+        float t = mid + half_len * x;
+        vec3 r = c + cos(t) * e0 + sin(t) * e1;
+        vec3 dr = -sin(t) * e0 + cos(t) * e1;
+        sum += kGaussW[j % 8] * dot(N, cross(r, dr)) / dot(r, r);
+    }
+    sum *= half_len;
+    if (cut) sum += lambert_edge(c + cos(t1) * e0 + sin(t1) * e1, c + cos(t0) * e0 + sin(t0) * e1, N);
+    return 0.5 * abs(sum);
+}
+
+// E, the exact projected solid angle of area light i from P (N), or -1 where
+// the samples alone are used (kExactMinSize).
+float area_exact_projected(int i, int type, vec3 P, vec3 N) {
+    vec3 centre = u_light_vector[i].xyz;
+    if (type == LIGHT_SKY) return 0.5 * PI * (1.0 + clamp(dot(N, centre), -1.0, 1.0));
+    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+    vec3 c = centre - P;
+    if (max(length(e0), length(e1)) < kExactMinSize * length(c)) return -1.0;
+    if (type == LIGHT_RECT) return rect_projected_solid_angle(c - e0 - e1, c + e0 - e1, c + e0 + e1, c - e0 + e1, N);
+    return disk_projected_solid_angle(c, e0, e1, N);
+}
+
+// Whether P is in front of light i's emitter (a sky is in front of every point).
+bool faces_emitter(int i, int type, vec3 P) {
+    return type == LIGHT_SKY || dot(P - u_light_vector[i].xyz, u_light_spot[i].xyz) > 0.0;
+}

@@ -1,0 +1,40 @@
+// The models' highlights as Phong lobes ((R_V . L)+)^e about V's mirror
+// direction R_V, for area lights' second way of drawing directions
+// (common/lights.glsl). Only where samples go: any e gives the same converged
+// image, a close one converges faster. Each model's expression is its
+// ModelSpec::glsl_lobe (renderer/models/builtin_models.cpp).
+
+// (N.H)^n is (R_V . L)^(n / 4) near the peak (the half-angle doubles the angle).
+float exponent_on_half_vector(float n) {
+    return 0.25 * n;
+}
+
+// A roughness alpha's exp(-tan^2 / alpha^2) on N.H is about (N.H)^(2 / alpha^2).
+float exponent_of_roughness(float alpha) {
+    return exponent_on_half_vector(2.0 / max(alpha * alpha, 1e-6));
+}
+
+// The sharpest of a paper metal's lobes: light i's own (Fig. 11) or the material's.
+float sharpest_lobe(Material mat, int i, int kind) {
+    int own = light_lobe_count(i, kind);
+    int count = own > 0 ? own : mat.lobes_count;
+    float sharpest = 0.0;
+    for (int j = 0; j < count; ++j) {
+        vec2 lobe = own > 0 ? light_lobe(i, j) : mat.lobes[j];
+        if (lobe.x > 0.0)
+            sharpest = max(sharpest, kind == LIGHT_LOBES_BECKMANN ? exponent_of_roughness(lobe.y) : lobe.y);
+    }
+    return sharpest;
+}
+
+// The classic microfacet model's lobes: exponents (Blinn-Phong D) or roughnesses.
+float microfacet_lobe(Material mat) {
+    float sharpest = 0.0;
+    for (int j = 0; j < mat.lobes_count; ++j) {
+        float value = mat.lobes[j].y;
+        if (mat.lobes[j].x > 0.0)
+            sharpest = max(sharpest, mat.distribution == DISTRIBUTION_BLINN_PHONG ? exponent_on_half_vector(value)
+                                                                                  : exponent_of_roughness(value));
+    }
+    return sharpest;
+}

@@ -1,0 +1,149 @@
+#include "passes/occluders.h"
+
+#include "geometry/box_tree.h"
+#include "geometry/mesh.h"
+#include "passes/render_targets.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace m3055 {
+namespace {
+
+struct Primitive {
+    dvec3 a, b, c;     // a triangle's corners, or a sphere's centre in a
+    double radius = -1.0;  // >= 0: a sphere
+};
+
+// Boxes grown by a little more than float rounding, so the float box of the
+// shader holds its float primitive and a flat box (a plane's) has thickness.
+void pad(dvec3& lo, dvec3& hi) {
+    const double scale = std::max({1.0, std::fabs(lo.x), std::fabs(lo.y), std::fabs(lo.z), std::fabs(hi.x),
+                                   std::fabs(hi.y), std::fabs(hi.z)});
+    lo -= dvec3(1e-6 * scale);
+    hi += dvec3(1e-6 * scale);
+}
+
+void put(std::vector<float>& out, const dvec3& v, double w) {
+    out.insert(out.end(), {float(v.x), float(v.y), float(v.z), float(w)});
+}
+
+// The geometric fields of every object (materials left out): equal keys, equal occluders.
+std::string geometry_key(const Scene& scene) {
+    std::string key;
+    key.reserve(scene.objects.size() * 128);
+    auto add = [&](const void* p, std::size_t n) { key.append(static_cast<const char*>(p), n); };
+    for (const Object& o : scene.objects) {
+        const int shape = int(o.shape);
+        add(&shape, sizeof shape);
+        add(&o.center, sizeof o.center);
+        add(&o.radius, sizeof o.radius);
+        add(&o.axis, sizeof o.axis);
+        add(&o.size, sizeof o.size);
+        add(&o.rotation_deg, sizeof o.rotation_deg);
+        add(&o.height, sizeof o.height);
+        add(&o.capped, sizeof o.capped);
+        add(&o.major_radius, sizeof o.major_radius);
+        add(&o.minor_radius, sizeof o.minor_radius);
+        add(&o.segments, sizeof o.segments);
+    }
+    return key;
+}
+
+}  // namespace
+
+OccluderTexels pack_occluders(const Scene& scene) {
+    std::vector<Primitive> primitives;
+    std::vector<dvec3> lo, hi;
+    for (const Object& object : scene.objects) {
+        if (object.shape == Shape::sphere) {
+            primitives.push_back({object.center, {}, {}, object.radius});
+            lo.push_back(object.center - dvec3(object.radius));
+            hi.push_back(object.center + dvec3(object.radius));
+            pad(lo.back(), hi.back());
+            continue;
+        }
+        const geometry::Mesh mesh = geometry::make_mesh(object);
+        for (std::size_t t = 0; t < mesh.triangles(); ++t) {
+            const dvec3& a = mesh.positions[mesh.indices[3 * t]];
+            const dvec3& b = mesh.positions[mesh.indices[3 * t + 1]];
+            const dvec3& c = mesh.positions[mesh.indices[3 * t + 2]];
+            primitives.push_back({a, b, c, -1.0});
+            lo.push_back(glm::min(a, glm::min(b, c)));
+            hi.push_back(glm::max(a, glm::max(b, c)));
+            pad(lo.back(), hi.back());
+        }
+    }
+    OccluderTexels out;
+    if (primitives.empty()) return out;
+    const geometry::BoxTree tree = geometry::build_box_tree(lo, hi, kOccluderLeafSize, kOccluderMaxDepth);
+    out.depth = tree.depth;
+    out.texels.reserve(4 * (2 * tree.nodes.size() + 3 * primitives.size()));
+    // skip: the node after each subtree (the depth-first order's next node past it).
+    std::vector<std::uint32_t> skip(tree.nodes.size(), std::uint32_t(tree.nodes.size()));
+    for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
+        const geometry::BoxTree::Node& node = tree.nodes[n];
+        if (node.count) continue;
+        skip[n + 1] = node.second;     // the first child's subtree ends where the second begins
+        skip[node.second] = skip[n];   // the second child's where its parent's does
+    }
+    for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
+        const geometry::BoxTree::Node& node = tree.nodes[n];
+        if (node.count > std::uint32_t(kOccluderLeafSize)) throw std::logic_error("an occluder leaf over 4 primitives");
+        put(out.texels, node.lo, node.count ? double(4 * node.first + node.count - 1) : -1.0);
+        put(out.texels, node.hi, double(skip[n]));
+    }
+    out.primitives_at = int(2 * tree.nodes.size());
+    for (const std::uint32_t index : tree.order) {
+        const Primitive& p = primitives[index];
+        if (p.radius >= 0.0) {
+            put(out.texels, p.a, 1.0);
+            put(out.texels, dvec3(p.radius, 0.0, 0.0), 0.0);
+            put(out.texels, dvec3(0.0), 0.0);
+        } else {
+            put(out.texels, p.a, 0.0);
+            put(out.texels, p.b, 0.0);
+            put(out.texels, p.c, 0.0);
+        }
+    }
+    return out;
+}
+
+OccluderTexture::OccluderTexture(const GlApi& gl) : gl_(gl), texture_(gl) {}
+
+void OccluderTexture::upload(const Scene& scene) {
+    std::string key = geometry_key(scene);
+    if (uploaded_ && key == key_) return;
+    OccluderTexels packed = pack_occluders(scene);
+    if (packed.texels.empty()) packed.texels.assign(4, 0.0f);  // never an empty texture
+    const std::size_t texels = packed.texels.size() / 4, width = kOccluderTextureWidth;
+    const int rows = int((texels + width - 1) / width);
+    GLint max_size = 0;
+    gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (rows > max_size)
+        throw std::runtime_error("the shadows' occluders need " + std::to_string(rows) + " rows of " +
+                                 std::to_string(width) + " texels; GL_MAX_TEXTURE_SIZE is " +
+                                 std::to_string(max_size));
+    packed.texels.resize(std::size_t(rows) * width * 4, 0.0f);
+    gl_.ActiveTexture(GL_TEXTURE0 + kOccluderUnit);
+    define_texture_2d(gl_, texture_, kRgba32f, kOccluderTextureWidth, rows, packed.texels.data());
+    gl_.ActiveTexture(GL_TEXTURE0);
+    primitives_at_ = packed.primitives_at;
+    key_ = std::move(key);
+    uploaded_ = true;
+}
+
+void OccluderTexture::set_uniforms(unsigned program) const {
+    gl_.ActiveTexture(GL_TEXTURE0 + kOccluderUnit);
+    gl_.BindTexture(GL_TEXTURE_2D, uploaded_ ? texture_.id() : 0);
+    gl_.ActiveTexture(GL_TEXTURE0);
+    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluders"), kOccluderUnit);
+    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluder_width"), kOccluderTextureWidth);
+    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluder_primitives"), uploaded_ ? primitives_at_ : 0);
+}
+
+}  // namespace m3055

@@ -1,0 +1,51 @@
+// Every object of a scene as a shadow ray meets it (glsl/common/shadows.glsl):
+// spheres and the meshes' triangles (geometry/mesh.h, the same triangles the
+// mesh pass draws) under a bounding-volume hierarchy (geometry/box_tree.h),
+// packed into one RGBA32F texture on texture unit kOccluderUnit. Uploaded only
+// for scenes with a shadow, and rebuilt only when the objects' geometry
+// changes (a material edit keeps the tree).
+#pragma once
+
+#include "gl/gl_api.h"
+#include "gl/gl_object.h"
+#include "scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace m3055 {
+
+inline constexpr int kOccluderUnit = 3;
+inline constexpr int kOccluderTextureWidth = 4096;  // texels a row
+inline constexpr int kOccluderLeafSize = 4;   // at most 4: glsl/common/shadows.glsl's leaf code
+inline constexpr int kOccluderMaxDepth = 64;  // never reached: every split halves
+
+// The texels of glsl/common/shadows.glsl's layout: the nodes (two texels
+// each), then the primitives from texel `primitives_at` (three each).
+struct OccluderTexels {
+    std::vector<float> texels;  // RGBA
+    int primitives_at = 0;      // 0: no objects
+    int depth = 0;              // of the tree
+};
+OccluderTexels pack_occluders(const Scene& scene);
+
+class OccluderTexture {
+public:
+    explicit OccluderTexture(const GlApi& gl);
+
+    // Makes `scene`'s occluders current: packed and uploaded when its objects'
+    // geometry differs from the last upload's. Throws std::runtime_error when
+    // they need more rows than GL_MAX_TEXTURE_SIZE.
+    void upload(const Scene& scene);
+    // A program's occluder uniforms (binds the texture to kOccluderUnit).
+    void set_uniforms(unsigned program) const;
+
+private:
+    const GlApi& gl_;
+    GlTexture texture_;
+    std::string key_;            // the geometry of the last upload
+    bool uploaded_ = false;
+    int primitives_at_ = 0;
+};
+
+}  // namespace m3055
