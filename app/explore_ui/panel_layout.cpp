@@ -121,8 +121,9 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
     ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
     ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
-    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, shown %d x", d.width, d.height, d.bits, info.scale);
-    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, shrunk", d.width, d.height, d.bits);
+    const char* transform = d.view_transform == ViewTransform::srgb ? "sRGB" : "linear";
+    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, %s, shown %d x", d.width, d.height, d.bits, transform, info.scale);
+    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, %s, shrunk", d.width, d.height, d.bits, transform);
     tooltip("The display's size and bits, and its magnification: whole pixels, nearest-neighbour; shrunk (not "
             "whole pixels) when even 1:1 does not fit.");
     if (!info.compare_count.empty()) {

@@ -38,6 +38,17 @@ void display_section(Explorer& explorer, const FrameInfo& info) {
     ImGui::TextDisabled("%d levels", 1 << display.bits);
     if (checkbox("ordered dithering (4x4 Bayer)", &display.dither)) explorer.commands.push(command::SetDisplay{display, ""});
     tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
+    // The view transform: the M3055 showed levels of the linear value (the
+    // paper's figures); a modern display shows sRGB-encoded colour, as other tools do.
+    int transform = display.view_transform == ViewTransform::srgb ? 1 : 0;
+    if (ImGui::Combo(field("view transform").c_str(), &transform, "none (linear levels)\0sRGB\0")) {
+        display.view_transform = transform == 1 ? ViewTransform::srgb : ViewTransform::none;
+        explorer.commands.push(command::SetDisplay{display, ""});
+    }
+    tooltip("What the display does to a colour before its levels: none (the M3055, as the paper's figures: "
+            "levels of the linear value), or sRGB's encoding (IEC 61966-2-1), as other tools and screens show "
+            "colour: gold's (1.04, 0.73, 0.37) reads (255, 222, 163) instead of (255, 186, 93). Saved as "
+            "display.view_transform; m3055 render --view-transform.");
     dvec3 background = explorer.doc.scene.background;
     if (color_edit("background", &background)) explorer.commands.push(command::SetBackground{background});
     tooltip("the colour behind the objects, RGB in [0, 1]; translucent objects blend over it");

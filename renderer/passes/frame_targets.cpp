@@ -58,6 +58,7 @@ void FrameTargets::quantize(const Display& display) {
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_colour"), 0);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_bits"), display.bits);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_dither"), display.dither ? 1 : 0);
+    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_srgb"), display.view_transform == ViewTransform::srgb ? 1 : 0);
     gl_.BindVertexArray(empty_vao_.id());
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     gl_.BindVertexArray(0);

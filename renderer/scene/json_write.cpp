@@ -25,8 +25,9 @@ json lobes_json(const std::vector<Lobe>& lobes, const char* key) {
 }
 
 json display_json(const Display& display) {
-    return {{"width", display.width}, {"height", display.height}, {"bits", display.bits},
-            {"dither", display.dither}};
+    json out = {{"width", display.width}, {"height", display.height}, {"bits", display.bits}, {"dither", display.dither}};
+    if (display.view_transform != ViewTransform::none) out["view_transform"] = to_string(display.view_transform);  // absent = none
+    return out;
 }
 
 json camera_json(const Camera& camera) {

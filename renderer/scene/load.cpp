@@ -40,12 +40,15 @@ const Range kExponent = closed(0.0, 10000.0);  // spot exponent
 
 Display read_display(const Node& node) {
     node.expect_object();
-    node.check_keys({"width", "height", "bits", "dither"});
+    node.check_keys({"width", "height", "bits", "dither", "view_transform"});
     Display display;
     if (node.has("width")) display.width = node.child("width").whole_in(1, kMaxDisplaySize);
     if (node.has("height")) display.height = node.child("height").whole_in(1, kMaxDisplaySize);
     if (node.has("bits")) display.bits = node.child("bits").whole_in(1, 8);
     if (node.has("dither")) display.dither = node.child("dither").boolean();
+    if (node.has("view_transform"))
+        display.view_transform = node.child("view_transform").one_of({"none", "srgb"}) == 0 ? ViewTransform::none
+                                                                                           : ViewTransform::srgb;
     return display;
 }
 

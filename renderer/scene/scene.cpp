@@ -4,6 +4,10 @@
 
 namespace m3055 {
 
+const char* to_string(ViewTransform transform) {
+    return transform == ViewTransform::srgb ? "srgb" : "none";
+}
+
 const char* to_string(LightType type) {
     switch (type) {
         case LightType::directional: return "directional";

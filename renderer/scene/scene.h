@@ -14,12 +14,18 @@ namespace m3055 {
 
 using glm::dvec3;
 
+// docs/spec.md#2-display: what a display does to a linear value before its
+// levels: nothing (the M3055 showed levels of the linear value, as the paper's
+// figures do), or sRGB's encoding (IEC 61966-2-1), as other tools show colour.
+enum class ViewTransform { none, srgb };
+
 // docs/spec.md#2-display: the emulated display. The M3055 is 512 x 320, 5 bits a channel.
 struct Display {
     int width = 512;
     int height = 320;
     int bits = 5;         // 1..8 bits per channel
     bool dither = false;  // ordered (4x4 Bayer) dithering before quantization
+    ViewTransform view_transform = ViewTransform::none;
 };
 
 enum class Projection { perspective, orthographic };
@@ -104,6 +110,7 @@ inline constexpr int kMaxLights = 16;
 inline constexpr int kMaxDisplaySize = 8192;
 
 const char* to_string(LightType type);
+const char* to_string(ViewTransform transform);
 const char* to_string(Projection projection);
 const char* to_string(Shape shape);
 
