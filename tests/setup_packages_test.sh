@@ -56,12 +56,14 @@ def calls:
   elif .[0] == "trap" and (.[1] // "-" | startswith("-") | not) then {line: $line, program: "trap"}, {line: $line, code: .[1]}
   else {line: $line, program: .[0]} end
 JQ
-builtins="$(compgen -b; compgen -k)"
+declare -A builtin
+for word in $(compgen -b; compgen -k); do builtin[$word]=1; done
 shell_calls() {  # FILE...: prints "PROGRAM FILE:LINE" for each call
-  local file code functions ast
+  local file code ast word
   for file; do
     ast="$(shfmt --to-json <"$file")" || { fail "shfmt cannot parse $file"; continue; }
-    functions="$(jq -r '.. | objects | select(.Type? == "FuncDecl") | .Name.Value' <<<"$ast")"
+    local -A function=()
+    for word in $(jq -r '.. | objects | select(.Type? == "FuncDecl") | .Name.Value' <<<"$ast"); do function[$word]=1; done
     local queue=("$ast") lines=("") outer
     while ((${#queue[@]})); do
       ast="${queue[0]}" outer="${lines[0]}"
@@ -72,7 +74,7 @@ shell_calls() {  # FILE...: prints "PROGRAM FILE:LINE" for each call
           code="$(base64 -d <<<"$value")"
           queue+=("$(shfmt --to-json <<<"$code")") || fail "shfmt cannot parse the code on $file:$line"
           lines+=("$line")
-        elif [[ "$value" != *'$'* ]] && ! grep -qxF -- "$value" <<<"$functions"; then
+        elif [[ "$value" != *'$'* && -z "${function[$value]:-}" ]]; then
           echo "$value $file:$line"
         fi
       done < <(jq -r "$shell_calls_jq"' | if .code then ["code", .line, (.code | @base64)] else ["program", .line, .program] end | @tsv' <<<"$ast")
@@ -97,7 +99,7 @@ cmake_calls() { matches "COMMAND $name|find_program\([A-Z0-9_]+ $name" "$@"; }
 # run this way must be one of the files read above.
 called_here() {  # SCOPE NAME LOCATION
   local scope="$1" name="$2" where="$3"
-  grep -qxF -- "$name" <<<"$builtins" && return
+  [ -z "${builtin[$name]:-}" ] || return 0
   if [[ "$name" == */* ]]; then
     if [ -f "$name" ]; then
       [[ " ${run_shell[*]} ${test_shell[*]} " == *" $name "* ]] ||
@@ -146,28 +148,32 @@ done
 # 3. The package, where it is installed here, ships the program, or the
 # file it resolves to (an alternative, a merged /usr), or one of the packages
 # it depends on does (a metapackage: imagemagick, lld).
-owner() {  # PROGRAM: the package that ships the file it runs here
-  local path candidate
-  path="$(command -v "$1" || ls "/usr/sbin/$1" "/sbin/$1" 2>/dev/null | head -n 1)" || return 0
+owner() {  # PROGRAM: the package that ships the file it runs here, if any
+  local path candidate package
+  path="$(command -v "$1")" || path="$(compgen -G "/usr/sbin/$1")" || return 0
   path="$(readlink -f "$path")"
   for candidate in "$path" "${path#/usr}"; do
-    dpkg-query -S "$candidate" 2>/dev/null | grep -v '^diversion' | cut -d: -f1 | head -n 1 | grep . && return 0
+    package="$(dpkg-query -S "$candidate" 2>/dev/null | awk -F: '!/^diversion/ && !found { print $1; found = 1 }')"
+    [ -z "$package" ] || { echo "$package"; return 0; }
   done
-  return 0
 }
+installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null)" = "install ok installed" ]; }
 owns() {  # PACKAGE PROGRAM
-  local package dependencies
+  grep -qE "/s?bin/$2\$" <(dpkg-query -L "$1" 2>/dev/null) && return 0
+  local shipped_by dependencies package
   dependencies="$(dpkg-query -W -f='${Depends}, ${Pre-Depends}' "$1" | sed -E 's/ *\([^)]*\)//g; s/ *[|,] */\n/g')"
-  for package in "$1" $dependencies; do
-    dpkg-query -L "$package" 2>/dev/null | grep -qE "/s?bin/$2\$" && return 0
-    [ "$(owner "$2")" = "$package" ] && return 0
+  shipped_by="$(owner "$2")"
+  [ -z "$shipped_by" ] || { grep -qxF -- "$shipped_by" <<<"$1"$'\n'"$dependencies"; return; }
+  # Not from a package here (python3 from pyenv, say): one of the dependencies ships it.
+  for package in $dependencies; do
+    grep -qE "/s?bin/$2\$" <(dpkg-query -L "$package" 2>/dev/null) && return 0
   done
   return 1
 }
 for program in "${!package_of[@]}"; do
   package="${package_of[$program]}"
   [ "$package" = - ] && continue
-  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+  if ! installed "$package"; then
     echo "note: $package is not installed here: $table's $program -> $package not checked against dpkg"
   elif ! owns "$package" "$program"; then
     fail "$table: $program is not from $package here (dpkg -S: $(owner "$program"))"
@@ -178,7 +184,7 @@ done
 # unit: munge, slurmctld, slurmd) is for the tests only. (What these pull in
 # is checked by scripts/test-fresh-debian on a minimal system.)
 for package in $run_set; do
-  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+  if ! installed "$package"; then
     fail "$package (scripts/setup) is not installed here: cannot check that it has no service"
   elif service="$(dpkg-query -L "$package" | grep -E '^/etc/init\.d/.|^(/usr)?/lib/systemd/system/.*\.service$')"; then
     fail "scripts/setup (scripts/run) installs $package, which starts a service on install: $(echo $service)"
