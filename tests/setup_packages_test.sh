@@ -145,9 +145,9 @@ for program in "${!package_of[@]}"; do
   grep -q " $program " <<<"$calls" || fail "$table: $program is called nowhere any more"
 done
 
-# 3. The package, where it is installed here, ships the program, or the
-# file it resolves to (an alternative, a merged /usr), or one of the packages
-# it depends on does (a metapackage: imagemagick, lld).
+# 3. The package, where it is installed here, or one it depends on (a
+# metapackage: imagemagick, lld; python3's python3-minimal) ships the program,
+# or the file it resolves to (an alternative, a merged /usr).
 owner() {  # PROGRAM: the package that ships the file it runs here, if any
   local path candidate package
   path="$(command -v "$1")" || path="$(compgen -G "/usr/sbin/$1")" || return 0
@@ -160,15 +160,13 @@ owner() {  # PROGRAM: the package that ships the file it runs here, if any
 installed() { [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null)" = "install ok installed" ]; }
 owns() {  # PACKAGE PROGRAM
   grep -qE "/s?bin/$2\$" <(dpkg-query -L "$1" 2>/dev/null) && return 0
-  local shipped_by dependencies package
-  dependencies="$(dpkg-query -W -f='${Depends}, ${Pre-Depends}' "$1" | sed -E 's/ *\([^)]*\)//g; s/ *[|,] */\n/g')"
-  shipped_by="$(owner "$2")"
-  [ -z "$shipped_by" ] || { grep -qxF -- "$shipped_by" <<<"$1"$'\n'"$dependencies"; return; }
-  # Not from a package here (python3 from pyenv, say): one of the dependencies ships it.
-  for package in $dependencies; do
+  local packages package
+  packages="$1"$'\n'"$(dpkg-query -W -f='${Depends}, ${Pre-Depends}' "$1" | sed -E 's/ *\([^)]*\)//g; s/ *[|,] */\n/g')"
+  for package in $packages; do
     grep -qE "/s?bin/$2\$" <(dpkg-query -L "$package" 2>/dev/null) && return 0
   done
-  return 1
+  package="$(owner "$2")"
+  [ -n "$package" ] && grep -qxF -- "$package" <<<"$packages"
 }
 for program in "${!package_of[@]}"; do
   package="${package_of[$program]}"
