@@ -315,7 +315,7 @@ class ExplorerInput : public ::testing::Test {
 protected:
     void SetUp() override {
         for (const char* tool : {"Xvfb", "xdotool", "import"})
-            if (!on_path(tool)) GTEST_SKIP() << tool << " is not installed (scripts/setup installs it)";
+            if (!on_path(tool)) GTEST_SKIP() << tool << " is not installed (scripts/setup --for-tests installs it)";
     }
     // The spec example in a window on a screen of its own; false when anything failed.
     bool start(int screen_w, int screen_h, const std::vector<std::string>& extra = {}) {

@@ -191,7 +191,7 @@ TEST(Grade, KilledHalfwayLeavesNoTables) {
 }
 
 TEST(Grade, ReportOpensInHeadlessChromium) {
-    if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup installs it)";
+    if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup --for-tests installs it)";
     TempDir out;
     ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()}).exit_code, 0);
     // The page as shipped, plus a probe that counts the images that did not decode.
@@ -222,7 +222,7 @@ TEST(Grade, ReportOpensInHeadlessChromium) {
 }
 
 TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
-    if (!have_program("parallel")) GTEST_SKIP() << "GNU parallel is not installed (scripts/setup installs it)";
+    if (!have_program("parallel")) GTEST_SKIP() << "GNU parallel is not installed (scripts/setup --for-tests installs it)";
     TempDir dir;
     const std::string subs = dir.file("subs");
     fs::create_directories(subs);

@@ -12,7 +12,7 @@ m3055=$(realpath "$1")
 repo=$(cd "$(dirname "$0")/.." && pwd)
 for tool in slurmctld slurmd sbatch squeue scontrol sinfo; do
   if ! command -v "$tool" >/dev/null && ! [ -x "/usr/sbin/$tool" ]; then
-    echo "FAIL: $tool is not installed (Debian: slurmctld slurmd slurm-client, installed by scripts/setup)" >&2
+    echo "FAIL: $tool is not installed (Debian: slurmctld slurmd slurm-client, installed by scripts/setup --for-tests)" >&2
     exit 1
   fi
 done
