@@ -59,19 +59,27 @@ void print_folder(const nlohmann::json& folder) {
     }
 }
 
+// Every error of the assignment, one line each, then the lines that go with them.
+void print_errors(const grading::AssignmentCheck& check) {
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    for (const std::string& line : check.notes) std::cerr << error_line(line) << "\n";
+}
+
 // `grade --check ASSIGNMENT.json`: exit 0 when the assignment has no error and
 // its reference earns every point of its rules, 1 otherwise.
 bool run_check(const GradeOptions& options) {
-    const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    const grading::AssignmentRead read = grading::read_assignment(options.assignment);
+    const grading::Assignment& assignment = read.assignment;
     // A .brdf file is code: the reference runs it only when the teacher asks.
-    const grading::AssignmentCheck check =
-        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
-    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    const grading::AssignmentCheck check = grading::check_assignment(read, LoadContext::for_class(options.allow_brdf));
+    print_errors(check);
     for (const std::string& line : check.reference_fails) std::cerr << error_line(line) << "\n";
     const std::string name = text::quote_name(options.assignment);
     std::string summary = name + ": " + std::to_string(check.errors.size()) +
                           (check.errors.size() == 1 ? " error" : " errors");
-    if (check.reference_is_scene)
+    if (read.has_error_at("") || assignment.reference.empty() || check.reference_unreadable)
+        summary += "; the rules could not be checked against the reference";
+    else if (check.reference_is_scene)
         summary += "; the reference scores " + text::format_number(check.reference_score) + " of " +
                    text::format_number(assignment.max_score()) + " points";
     else
@@ -88,13 +96,13 @@ void run_grade(const GradeOptions& options) {
                      report.students.size() == 1 ? "" : "s", text::quote_name(options.out).c_str());
         return;
     }
-    const grading::Assignment assignment = grading::load_assignment(options.assignment);
-    // The assignment against its own reference: structural errors stop the
-    // run before anything is written; rules the reference fails are said.
+    const grading::AssignmentRead read = grading::read_assignment(options.assignment);
+    const grading::Assignment& assignment = read.assignment;
+    // The assignment against its own reference: any error stops the run
+    // before anything is written; rules the reference fails are said.
     // A .brdf file is code: the reference runs it only when the teacher asks.
-    const grading::AssignmentCheck check =
-        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
-    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    const grading::AssignmentCheck check = grading::check_assignment(read, LoadContext::for_class(options.allow_brdf));
+    print_errors(check);
     if (!check.errors.empty())
         throw std::runtime_error(text::quote_name(options.assignment) + ": " + std::to_string(check.errors.size()) +
                                  (check.errors.size() == 1 ? " error" : " errors") +

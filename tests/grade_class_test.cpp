@@ -31,6 +31,12 @@ std::map<std::string, json> by_student(const json& grades) {
     return out;
 }
 
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
 // alice's full-marks scene and dave's metal_blinn one, under other names.
 std::string good_scene() { return read_text(kSubmissions + "/alice.json"); }
 std::string weaker_scene() { return read_text(kSubmissions + "/dave.json"); }
@@ -625,7 +631,7 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_EQ(check.exit_code, 1);
     for (const std::string line : {
              "bad.json: image.fail_levels: 40 allows every difference on the reference's 5-bit display (at most 31 levels)",
-             "bad.json: rules[0].is: unknown model \"metall\" (highlight, translucent, metal,",
+             "bad.json: rules[0].is: unknown model \"metall\": not one of the model names below",
              "bad.json: rules[1].path: \"objects[0].material.dd\" is not in the reference scene",
              "bad.json: rules[2].path: \"objects[0].material\" is not a number in the reference scene",
              "bad.json: rules[3].object: no objects[5] in the reference scene (it has 1 object)",
@@ -638,6 +644,101 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_NE(grade.err.find("bad.json: 7 errors in the assignment (m3055 grade --check): nothing graded"),
               std::string::npos) << grade.err;
     EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+// Structure, ranges and meaning in one run: every problem once, the rule
+// with a structural error not checked again against the reference, and
+// `grade` refusing with the same lines.
+TEST(GradeCheck, EveryErrorAtOnceEachOnce) {
+    TempDir dir;
+    const std::string bad = write_assignment(dir, "bad.json", [](json& a) {
+        a["extra"] = 1;                     // structure
+        a["image"]["fail_percent"] = 101;   // range
+        a["rules"] = json::parse(R"([
+            {"rule": "eq14", "object": 5, "within_percent": 1, "points": 10},
+            {"rule": "light_count", "equals": 2.5, "points": 10},
+            {"rule": "warmer", "light": "Key", "than": "fill", "points": 10}])");
+        a.erase("pass");
+    });
+    const std::vector<std::string> lines = {
+        "bad.json: extra: is not a field here\n",
+        "bad.json: image.fail_percent: must be in [0, 100], got 101\n",
+        "bad.json: rules[1].equals: must be a whole number, got 2.5\n",
+        "bad.json: rules[0].object: no objects[5] in the reference scene (it has 1 object)\n",
+        "bad.json: rules[2].light: no light named \"Key\" in the reference scene (its lights: \"key\", \"fill\", "
+        "\"back\"); light names are case-sensitive\n"};
+    const RunResult check = run_m3055({"grade", "--check", bad});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string& line : lines) EXPECT_EQ(count_of(check.err, line), 1u) << line << check.err;
+    EXPECT_EQ(count_of(check.err, "rules[0]"), 1u) << "said once, not again as failed by the reference: " << check.err;
+    EXPECT_NE(check.err.find("bad.json: 5 errors; "), std::string::npos) << check.err;
+    const RunResult grade = run_m3055({"grade", bad, kSubmissions, "--out", dir.file("out")});
+    EXPECT_EQ(grade.exit_code, 1);
+    for (const std::string& line : lines) EXPECT_EQ(count_of(grade.err, line), 1u) << line << grade.err;
+    EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+// A start or reference file that is not there is an error naming its field;
+// the other problems are still said.
+TEST(GradeCheck, AMissingStartOrReferenceNamesItsField) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["start"] = "start.json";
+        a["rules"][0]["is"] = "metall";
+    });
+    const RunResult start = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(start.exit_code, 1);
+    EXPECT_NE(start.err.find("a.json: start: " + dir.file("start.json") + ": cannot read file: No such file"),
+              std::string::npos) << start.err;
+    EXPECT_NE(start.err.find("a.json: rules[0].is: unknown model \"metall\""), std::string::npos) << start.err;
+    fs::remove(dir.file("reference.json"));
+    const RunResult reference = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(reference.exit_code, 1);
+    EXPECT_NE(reference.err.find("a.json: reference: " + dir.file("reference.json") + ": cannot read file"),
+              std::string::npos) << reference.err;
+    EXPECT_NE(reference.err.find("a.json: start: "), std::string::npos) << reference.err;
+    EXPECT_NE(reference.err.find("3 errors; the rules could not be checked against the reference"), std::string::npos)
+        << reference.err;
+}
+
+// The model names an unknown one is checked against: every one, on a line of their own, never cut.
+TEST(GradeCheck, ModelNamesAreListedWhole) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) { a["rules"][0]["is"] = "metall"; });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    EXPECT_NE(check.err.find("\nm3055: model names: highlight, translucent, metal, metal_blinn, metal_phong, lambert, "
+                             "half_lambert, half_lambert_clamped, half_lambert_normalized, oren_nayar, minnaert, phong, "
+                             "blinn_phong, microfacet, ward, heidrich_seidel, principled\n"),
+              std::string::npos) << check.err;
+}
+
+// An "equals" rule on the conductor tells the measured gold the assignment
+// asks for from an RGB gold that renders alike: the RGB one no longer scores
+// full marks.
+TEST(GradeCheck, AnEqualsRuleTellsMeasuredGoldFromAnRgbGold) {
+    TempDir dir;
+    json reference = read_json(kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json");
+    reference["objects"][0]["material"].erase("color");
+    reference["objects"][0]["material"]["conductor"] = "gold";
+    write_text(dir.file("reference.json"), reference.dump());
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["image"]["fail_percent"] = 100;  // the image alone would not tell them apart
+        a["image"]["points"] = 0;
+        a["rules"] = json::parse(R"([{"rule": "model", "is": "metal", "points": 50},
+            {"rule": "equals", "path": "objects[0].material.conductor", "value": "gold", "points": 50}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 0) << check.err;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/rgb.json"), good_scene());
+    write_text(dir.file("subs/measured.json"), reference.dump());
+    ASSERT_EQ(run_m3055({"grade", a, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    EXPECT_EQ(s.at("measured")["score"], 100);
+    EXPECT_EQ(s.at("rgb")["score"], 50);
+    EXPECT_EQ(s.at("rgb")["reasons"][0], "rules[1] (equals): objects[0].material.conductor: not in the scene, wanted \"gold\"");
 }
 
 // The "temperature" rule: its light must be one of the reference's, and
@@ -667,7 +768,7 @@ TEST(GradeCheck, KeyToFillNeedsLightsNamedKeyAndFill) {
     const std::string a = write_assignment(dir, "a.json", [](json&) {});
     const RunResult check = run_m3055({"grade", "--check", a});
     EXPECT_EQ(check.exit_code, 1);
-    EXPECT_NE(check.err.find("key_to_fill compares the lights named \"key\" and \"fill\"; the reference scene's "
+    EXPECT_NE(check.err.find("key_to_fill compares the lights named \"key\" and \"fill\" (case-sensitive); the reference scene's "
                              "lights are \"main\", \"fill\", \"back\""),
               std::string::npos) << check.err;
 }
@@ -754,12 +855,6 @@ std::string dom_of(TempDir& dir, const std::string& page) {
                                 " --virtual-time-budget=5000 --dump-dom 'file://" + page + "' > " + dom + " 2>/dev/null";
     if (std::system(command.c_str()) != 0) return "";
     return read_text(dom);
-}
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
 }
 
 // Drives a copy of `page` in Chromium at 1280 x 900: `script` runs after the
