@@ -823,6 +823,11 @@ TEST(GradeRegion, ObjectsRegionLetsTheBackgroundChangeFreely) {
     EXPECT_EQ(c["same_pixels"], c["pixels"]);
     EXPECT_GT(c["pixels"].get<long>(), 1000);
     EXPECT_LT(c["pixels"].get<long>(), 512 * 320 / 2) << "the sphere, not the whole display";
+    // The display's own size, and which of its pixels were compared.
+    EXPECT_EQ(c["width"], 512);
+    EXPECT_EQ(c["height"], 320);
+    EXPECT_EQ(c["region"], "objects");
+    EXPECT_FALSE(whole.at("recoloured")["comparison"].contains("region"));
     const std::string reason = region.at("recoloured")["checks"][0]["reason"];
     EXPECT_EQ(reason.rfind("image: the objects' " + std::to_string(c["pixels"].get<long>()) + " pixels: 100.00 %", 0), 0u)
         << reason;
