@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace m3055 {
@@ -35,11 +36,12 @@ struct GradeOptions {
 void print_grade(const grading::Grade& grade) {
     const std::vector<std::string> reasons = grade.reasons();
     // The student as every output shows the name (grading/submissions.h: shown_name:
-    // one line of valid UTF-8, at most 4 x 255 bytes).
-    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", grade.student.c_str(),
-                 text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
-                 grade.missing ? "missing" : grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
-                 reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+    // one line of valid UTF-8, at most 4 x 255 bytes), and the result's one word
+    // (grade_outputs.h: result_of).
+    const char* result = grade.missing ? "missing" : !grade.broken.empty() ? "refused" : grade.passed ? "pass" : "fail";
+    std::fprintf(stderr, "m3055: %s: %s / %s %s%s%s\n", grade.student.c_str(),
+                 text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(), result,
+                 reasons.empty() ? "" : ": ", reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
     for (const std::string& note : grade.notes)
         std::fprintf(stderr, "  note: %s\n", text::one_line(note).c_str());
 }
@@ -126,18 +128,14 @@ void run_grade(const GradeOptions& options) {
         },
         run);
     print_folder(report.folder);
-    std::size_t passed = 0, missing = 0, refused = 0;
-    for (const auto& s : report.students) {
-        passed += s["passed"].get<bool>() ? 1 : 0;
-        missing += s["missing"].get<bool>() ? 1 : 0;
-        refused += !s["missing"].get<bool>() && !s["broken"].get<std::string>().empty() ? 1 : 0;
-    }
-    const std::size_t submitted = report.students.size() - missing;
-    std::string line = "m3055: graded " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
-    if (refused) line += " (" + std::to_string(refused) + " refused)";
+    std::map<std::string, std::size_t> results;  // pass, fail, refused, missing
+    for (const auto& s : report.students) ++results[grading::result_of(s)];
+    const std::size_t submitted = report.students.size() - results["missing"];
+    std::string line = "m3055: " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
     if (options.shard != "1/1") line += " of shard " + options.shard;
-    line += ", " + std::to_string(passed) + " passed";
-    if (missing) line += "; " + std::to_string(missing) + " on the roster with no submission";
+    line += ": " + std::to_string(results["pass"]) + " passed, " + std::to_string(results["fail"]) + " failed, " +
+            std::to_string(results["refused"]) + " refused (not graded)";
+    if (results["missing"]) line += "; " + std::to_string(results["missing"]) + " on the roster with no submission";
     std::fprintf(stderr, "%s; wrote %s\n", line.c_str(), text::quote_name(options.out + "/report.html").c_str());
 }
 

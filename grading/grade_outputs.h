@@ -30,6 +30,12 @@ nlohmann::json assignment_json(const Assignment& assignment);
 // were written (submissions.h: output_stem), or "" when none were.
 nlohmann::json grade_json(const Grade& grade, const std::string& image_stem);
 
+// What became of a student (a grade_json), one word meaning one thing in every
+// output: "pass" and "fail" (graded: at least the pass score, or below it),
+// "refused" (not graded: the submission could not be, and its reason says why;
+// 0 points), "missing" (on the roster, nothing submitted).
+std::string result_of(const nlohmann::json& student);
+
 std::string grades_csv(const GradeReport& report);
 std::string grades_json(const GradeReport& report);
 std::string gradescope_json(const GradeReport& report);

@@ -54,7 +54,7 @@ tr.hidden{display:none}
 #grades th,td.check{font-size:85%}#grades th{overflow-wrap:normal;word-break:normal}#grades th:first-child{min-width:6em}
 #grades td.reasons{min-width:11em}li.note{max-height:3.8em;overflow-y:auto}
 img{width:256px;image-rendering:pixelated;display:block}
-.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
+.pass{color:#060;font-weight:bold}.fail,.refused{color:#a00;font-weight:bold}.missing{color:#555;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
 #top{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}#top figcaption{font-size:90%;color:#444}#top figure{margin:0}
 #histogram svg{display:block;max-width:100%;height:auto}
@@ -70,11 +70,11 @@ ul{margin:0;padding-left:1.2em}
 )";
 
 // Click a header to sort by that column; numbers numerically (data-sort).
-// The filter (all / failed / refused / missing) and the search box hide rows.
+// The filter (all / not passed / fail / refused / missing) and the search box hide rows.
 constexpr const char* kScript = R"(<script>
 function m3055filter(){var f=document.getElementById('filter').value,q=document.getElementById('search').value.toLowerCase();
 [].forEach.call(document.querySelectorAll('#grades tbody tr'),function(r){
-var ok=(f==='all'||r.dataset.status===f||(f==='failed'&&r.dataset.status!=='pass'))&&r.cells[0].textContent.toLowerCase().indexOf(q)>=0;
+var ok=(f==='all'||r.dataset.status===f||(f==='not-passed'&&r.dataset.status!=='pass'))&&r.cells[0].textContent.toLowerCase().indexOf(q)>=0;
 r.classList.toggle('hidden',!ok);});
 var n=document.querySelectorAll('#grades tbody tr:not(.hidden)').length;document.getElementById('shown').textContent=n+(n===1?' row':' rows');}
 document.getElementById('filter').addEventListener('change',m3055filter);
@@ -143,16 +143,13 @@ std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& 
 std::string student_row(const json& s, const std::vector<std::string>& labels,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     const std::string name = s["student"].get<std::string>();
-    const bool passed = s["passed"].get<bool>();
     const double score = s["score"].get<double>();
-    const bool missing = s.value("missing", false), refused = !missing && !s["broken"].get<std::string>().empty();
-    const std::string status = missing ? "missing" : refused ? "refused" : passed ? "pass" : "fail";
+    const std::string status = result_of(s);
     std::string row = "<tr data-status=\"" + status + "\" data-student=\"" + escape_html(name) + "\"><td class=\"name\" data-sort=\"" + escape_html(name) + "\">" +
                       escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
-    const char* result = s.value("missing", false) ? "missing" : passed ? "pass" : "fail";
-    row += std::string("<td data-sort=\"") + result + "\" class=\"" + (passed ? "pass" : "fail") + "\">" + result + "</td>";
+    row += "<td data-sort=\"" + status + "\" class=\"" + status + "\">" + status + "</td>";
     // One column a check: passed or not, and the points.
     for (const std::string& label : labels) {
         const json* found = nullptr;
@@ -202,7 +199,7 @@ std::string percent_text(std::size_t part, std::size_t whole) {
 
 // The class at a glance: counts, mean, median, pass rate, each check's pass rate.
 std::string class_summary(const GradeReport& report, const std::vector<std::string>& labels, const std::string& reference_figure) {
-    std::size_t graded = 0, refused = 0, missing = 0, passed = 0;
+    std::size_t graded = 0, refused = 0, missing = 0, passed = 0, failed = 0;
     std::vector<double> scores;
     std::map<std::string, std::size_t> check_passed, check_total;
     for (const json& s : report.students) {
@@ -217,6 +214,7 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
             continue;
         }
         ++graded;
+        failed += s["passed"].get<bool>() ? 0 : 1;
         for (const json& c : s["checks"]) {
             ++check_total[c["label"].get<std::string>()];
             check_passed[c["label"].get<std::string>()] += c["ok"].get<bool>() ? 1 : 0;
@@ -238,7 +236,8 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
         out += "<tr><th>" + name + "</th><td class=\"num\" id=\"" + id + "\">" + value + "</td></tr>\n";
     };
     row("count-graded", "graded", std::to_string(graded));
-    row("count-refused", "refused (broken submissions, 0 points)", std::to_string(refused));
+    row("count-failed", "fail (graded, below the pass score)", std::to_string(failed));
+    row("count-refused", "refused (not graded: the submission could not be; 0 points)", std::to_string(refused));
     row("count-missing", "missing (on the roster, no submission)", std::to_string(missing));
     row("mean", "mean score (of the submissions)", scores.empty() ? "&mdash;" : score_text(mean));
     row("median", "median score", scores.empty() ? "&mdash;" : score_text(median));
@@ -311,17 +310,16 @@ std::string report_html(const GradeReport& report,
                         const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     const json& a = report.assignment;
     const std::string title = a["title"].get<std::string>();
-    std::size_t passed = 0, missing = 0;
-    for (const json& s : report.students) {
-        passed += s["passed"].get<bool>() ? 1 : 0;
-        missing += s.value("missing", false) ? 1 : 0;
-    }
-    const std::size_t submitted = report.students.size() - missing;
+    std::map<std::string, std::size_t> results;  // pass, fail, refused, missing
+    for (const json& s : report.students) ++results[result_of(s)];
+    const std::size_t missing = results["missing"], submitted = report.students.size() - missing;
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        escape_html(title) + ": grades</title>\n" + kStyle + "</head><body>\n";
     page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(submitted) +
-            (submitted == 1 ? " submission, " : " submissions, ") + std::to_string(passed) + " passed (at least " +
-            score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) + " points)" +
+            (submitted == 1 ? " submission: " : " submissions: ") + std::to_string(results["pass"]) +
+            " passed (at least " + score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) +
+            " points), " + std::to_string(results["fail"]) + " failed, " + std::to_string(results["refused"]) +
+            " refused (not graded)" +
             (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
             ". Click a column's header to sort, a picture to magnify it.</p>\n";
     const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
@@ -334,7 +332,8 @@ std::string report_html(const GradeReport& report,
     page += class_summary(report, labels, reference_figure);
     page += folder_sections(report.folder);
     page += "<div id=\"controls\"><label>Show <select id=\"filter\"><option value=\"all\">all</option>"
-            "<option value=\"failed\">failed</option><option value=\"refused\">refused</option>"
+            "<option value=\"not-passed\">not passed</option><option value=\"fail\">fail</option>"
+            "<option value=\"refused\">refused</option>"
             "<option value=\"missing\">missing</option></select></label> "
             "<label>Search <input id=\"search\" type=\"search\" placeholder=\"student name\"></label> "
             "<span id=\"shown\"></span></div>\n";
@@ -360,13 +359,17 @@ std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
     const json& a = report.assignment;
     const std::string name = s["student"].get<std::string>();
     const std::string title = a["title"].get<std::string>();
-    const bool missing = s.value("missing", false);
+    const std::string result = result_of(s);
+    // The result's word, said to the student.
+    const std::string said = result == "pass"      ? "passed"
+                             : result == "fail"    ? "failed"
+                             : result == "refused" ? "refused (not graded: the reason is below)"
+                                                   : "no submission";
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape_html(title) +
                        ": " + escape_html(name) + "</title>\n" + kStyle + "</head><body>\n";
     page += "<h1>" + escape_html(title) + "</h1>\n<h2 id=\"student\">" + escape_html(name) + "</h2>\n";
-    page += std::string("<p id=\"score\" class=\"") + (s["passed"].get<bool>() ? "pass" : "fail") + "\">" +
-            score_text(s["score"].get<double>()) + " of " + score_text(s["max"].get<double>()) + " points: " +
-            (missing ? "no submission" : s["passed"].get<bool>() ? "passed" : "not passed") + " (" +
+    page += "<p id=\"score\" class=\"" + result + "\">" + score_text(s["score"].get<double>()) + " of " +
+            score_text(s["max"].get<double>()) + " points: " + said + " (" +
             score_text(a["pass"].get<double>()) + " to pass)</p>\n";
     page += "<p>Click a picture to magnify it and flip between your render, the reference and the difference.</p>\n";
     page += "<table class=\"shots\" data-student=\"" + escape_html(name) +

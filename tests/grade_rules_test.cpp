@@ -337,7 +337,7 @@ TEST(GradeOutputs, NamesAndReasonsAreEscapedInHtmlAndCsv) {
     EXPECT_NE(html.find("<title>&lt;T&gt;: grades</title>"), std::string::npos);
     const std::string csv = grades_csv(report);
     // One record: the newline stays inside quotes, the formula is defused, quotes doubled.
-    EXPECT_EQ(csv, "student,score,max,result,reasons,notes\n<b>x&y</b>,0,10,fail,\"'=cmd(), \"\"quoted\"\"\nsecond line\",\n");
+    EXPECT_EQ(csv, "student,score,max,result,reasons,notes\n<b>x&y</b>,0,10,refused,\"'=cmd(), \"\"quoted\"\"\nsecond line\",\n");
 }
 
 TEST(GradeOutputs, Base64) {

@@ -89,7 +89,8 @@ TEST(Grade, OneSceneFileIsGradedAsInTheFolder) {
     TempDir dir;
     const RunResult one = run_m3055({"grade", kAssignment, kSubmissions + "/dave.json", "--out", dir.file("one")});
     ASSERT_EQ(one.exit_code, 0) << one.err;
-    EXPECT_NE(one.err.find("graded 1 submission, 0 passed"), std::string::npos) << one.err;
+    EXPECT_NE(one.err.find("m3055: 1 submission: 0 passed, 1 failed, 0 refused (not graded)"), std::string::npos)
+        << one.err;
     const RunResult all = run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("all")});
     ASSERT_EQ(all.exit_code, 0) << all.err;
     const auto alone = by_student(read_json(dir.file("one/grades.json")));
@@ -128,6 +129,36 @@ TEST(Grade, WorkedAssignmentScores) {
     EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
 }
 
+// "fail": graded, below the pass score; "refused": not graded (frank's scene
+// is out of range). The same word for the same student in every output.
+TEST(Grade, RefusedAndFailMeanOneThingInEveryOutput) {
+    TempDir out;
+    const RunResult run = run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::map<std::string, std::string> expected = {{"alice", "pass"}, {"carol", "fail"}, {"frank", "refused"}};
+    const std::string csv = read_text(out.file("grades.csv"));
+    const auto s = by_student(read_json(out.file("grades.json")));
+    const std::string report = read_text(out.file("report.html"));
+    for (const auto& [name, result] : expected) {
+        SCOPED_TRACE(name);
+        EXPECT_NE(csv.find("\n" + name + ","), std::string::npos);
+        const std::string row = csv.substr(csv.find("\n" + name + ",") + 1);
+        EXPECT_EQ(row.substr(0, row.find('\n')).find(",100," + result + ","), row.find(',', name.size() + 1)) << row;
+        EXPECT_EQ(s.at(name)["result"], result);
+        EXPECT_NE(run.err.find("m3055: " + name + ": "), std::string::npos);
+        const std::string line = run.err.substr(run.err.find("m3055: " + name + ": "));
+        EXPECT_NE(line.substr(0, line.find('\n')).find(" / 100 " + result), std::string::npos) << line;
+        EXPECT_NE(report.find("data-status=\"" + result + "\" data-student=\"" + name + "\""), std::string::npos);
+        EXPECT_NE(report.find("<td data-sort=\"" + result + "\" class=\"" + result + "\">" + result + "</td>"),
+                  std::string::npos);
+    }
+    EXPECT_NE(run.err.find("m3055: 6 submissions: 2 passed, 3 failed, 1 refused (not graded)"), std::string::npos) << run.err;
+    EXPECT_NE(report.find("id=\"count-failed\">3<"), std::string::npos);
+    EXPECT_NE(report.find("id=\"count-refused\">1<"), std::string::npos);
+    EXPECT_NE(read_text(out.file("feedback/frank.html")).find("0 of 100 points: refused (not graded"), std::string::npos);
+    EXPECT_NE(read_text(out.file("feedback/carol.html")).find("50 of 100 points: failed"), std::string::npos);
+}
+
 TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
     TempDir dir;
     const std::string subs = dir.file("subs");
@@ -145,6 +176,7 @@ TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
     write_brdf_submission(subs + "/brdfcode");      // code, and grade was not given --allow-brdf
     json assignment = read_json(kAssignment);
     assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment.erase("start");  // beside the worked assignment, not this copy
     assignment["time_budget"] = 2;
     write_text(dir.file("a.json"), assignment.dump());
     const RunResult run = run_m3055({"grade", dir.file("a.json"), subs, "--out", dir.file("out")});
@@ -285,6 +317,7 @@ TEST(Grade, ImageReferencesGradeAsTheSceneDoes) {
     for (const std::string reference : {"ref.png", "ref.pfm"}) {
         json assignment = read_json(kAssignment);
         assignment["reference"] = reference;
+        assignment.erase("start");  // beside the worked assignment, not this copy
         write_text(dir.file("a.json"), assignment.dump());
         const std::string out = dir.file("out-" + reference);
         const RunResult run = run_m3055({"grade", dir.file("a.json"), kSubmissions, "--out", out});
