@@ -95,7 +95,9 @@ TEST(GradeClass, EveryFileNameGetsItsRowEscapedTheSameInEveryOutput) {
         const std::string file = render.substr(9);
         EXPECT_EQ(diff.substr(6), file);
         EXPECT_LE(file.size(), 255u);
-        EXPECT_EQ(file.find_first_of("\n\\ /"), std::string::npos) << file;
+        // No newline, backslash, slash or percent; a space only inside, as in the name.
+        EXPECT_EQ(file.find_first_of("\n\\/%"), std::string::npos) << file;
+        EXPECT_NE(file.front(), ' ');
         std::string folded = file;
         for (char& c : folded) c = char(std::tolower(static_cast<unsigned char>(c)));
         EXPECT_TRUE(images.insert(folded).second) << "two students' images differ only by case: " << render;
@@ -972,13 +974,26 @@ TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
     EXPECT_EQ(output_stem("zo\xC3\xAB"), "zo\xC3\xAB");
-    EXPECT_EQ(output_stem("caf\xE9 latin1"), "caf%E9%20latin1");
-    EXPECT_EQ(output_stem("a%E9"), "a%25E9");  // not the stem of "a\xE9"
-    EXPECT_EQ(output_stem("new\nline"), "new%0Aline");
-    EXPECT_EQ(output_stem(".hidden"), "%2Ehidden");
-    const std::string a(300, '\xE9'), b = std::string(299, '\xE9') + "x";
-    EXPECT_LE(output_stem(a).size(), grading::kMaxStemBytes);
-    EXPECT_NE(output_stem(a), output_stem(b));
+    EXPECT_EQ(output_stem("with space"), "with space");  // a space stays a space
+    EXPECT_EQ(output_stem("a_b"), "a_b");
+    // Any other byte is '_', and the name's digest keeps the stem apart from a plain one.
+    const std::map<std::string, std::string> replaced = {{"caf\xE9 latin1", "caf_ latin1~"}, {"a%E9", "a_E9~"},
+                                                         {"new\nline", "new_line~"},          {".hidden", "_hidden~"},
+                                                         {"a\nb", "a_b~"},                    {"trailing ", "trailing_~"},
+                                                         {"q?x#y", "q_x_y~"}};
+    std::set<std::string> stems = {"a_b"};
+    for (const auto& [name, start] : replaced) {
+        const std::string stem = output_stem(name);
+        EXPECT_EQ(stem.rfind(start, 0), 0u) << stem;
+        EXPECT_EQ(stem.size(), start.size() + 16) << stem;
+        EXPECT_TRUE(stems.insert(stem).second) << stem;
+    }
+    const std::string a(300, '\xE9'), b = std::string(299, '\xE9') + "x", c(300, 'c');
+    for (const std::string& name : {a, b, c}) {
+        EXPECT_LE(output_stem(name).size(), grading::kMaxStemBytes);
+        EXPECT_TRUE(stems.insert(output_stem(name)).second);
+    }
+    for (const std::string& stem : stems) EXPECT_EQ(stem.find('%'), std::string::npos) << stem;
     EXPECT_EQ(grading::shown_name("caf\xE9 \"q\" \\"), "caf\\xE9 \\\"q\\\" \\\\");
 }
 
