@@ -217,7 +217,7 @@ TEST(Grade, KilledHalfwayLeavesNoTables) {
         EXPECT_FALSE(file_exists(dir.file(std::string("out/") + table))) << table;
     for (const auto& entry : fs::recursive_directory_iterator(dir.file("out"))) {
         const std::string name = fs::relative(entry.path(), dir.file("out")).string();
-        EXPECT_TRUE(std::regex_match(name, std::regex(R"(((students|diffs)/s\d{4}|reference)\.png|students|diffs|feedback)")))
+        EXPECT_TRUE(std::regex_match(name, std::regex(R"(((students|diffs)/s\d{4}|reference)\.png|students|diffs|feedback|\.m3055-grade)")))
             << "left behind: " << name;
     }
 }
@@ -287,17 +287,50 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
 namespace m3055::test {
 namespace {
 
-// grades/ inside the submissions folder, as a teacher may put it: on the
-// second run it is not taken for a student's folder.
-TEST(Grade, AnOutputFolderInsideTheSubmissionsIsNoStudent) {
+// grades/ inside the submissions folder would be a student's folder to the
+// next run: refused before anything is written, as the folder itself is.
+TEST(Grade, AnOutputFolderInsideTheSubmissionsIsRefused) {
     TempDir dir;
     const std::string subs = dir.file("subs");
     fs::create_directories(subs);
     fs::copy_file(kSubmissions + "/alice.json", subs + "/alice.json");
-    for (int run = 0; run < 2; ++run) {
-        ASSERT_EQ(run_m3055({"grade", kAssignment, subs, "--out", subs + "/grades"}).exit_code, 0);
-        EXPECT_EQ(read_json(subs + "/grades/grades.json")["students"].size(), 1u) << "run " << run;
+    const auto before = snapshot(subs);
+    for (const std::string& out : {subs + "/grades", subs + "/../subs/deeper/grades", subs, subs + "/"}) {
+        SCOPED_TRACE(out);
+        const RunResult run = run_m3055({"grade", kAssignment, subs, "--out", out});
+        EXPECT_EQ(run.exit_code, 1) << run.err;
+        EXPECT_NE(run.err.find("--out: is"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("the submissions folder"), std::string::npos) << run.err;
+        EXPECT_EQ(snapshot(subs), before) << "nothing written";
     }
+    // A student's own file, checked alone, may have its grades beside it.
+    const RunResult one = run_m3055({"grade", kAssignment, subs + "/alice.json", "--out", subs + "/check"});
+    EXPECT_EQ(one.exit_code, 0) << one.err;
+}
+
+// --out is a new folder, an empty one or one m3055 grade wrote (its marker
+// file): a folder of other work is refused untouched, by grade and by --merge.
+TEST(Grade, AnOutputFolderOfOtherFilesIsRefusedUnlessEmpty) {
+    TempDir dir;
+    fs::create_directories(dir.file("work"));
+    write_text(dir.file("work/thesis.tex"), "the teacher's");
+    const auto before = snapshot(dir.file("work"));
+    const RunResult other = run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("work")});
+    EXPECT_EQ(other.exit_code, 1);
+    EXPECT_NE(other.err.find("work: --out: not empty, and not written by m3055 grade (no .m3055-grade in it)"),
+              std::string::npos) << other.err;
+    EXPECT_EQ(snapshot(dir.file("work")), before);
+    fs::create_directories(dir.file("empty"));
+    ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("empty")}).exit_code, 0);
+    EXPECT_TRUE(file_exists(dir.file("empty/.m3055-grade")));
+    // Its own folder again: the teacher's notes in it are left alone.
+    write_text(dir.file("empty/notes.txt"), "the teacher's");
+    EXPECT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("empty")}).exit_code, 0);
+    EXPECT_EQ(read_text(dir.file("empty/notes.txt")), "the teacher's");
+    const RunResult merge = run_m3055({"grade", "--merge", dir.file("empty"), "--out", dir.file("work")});
+    EXPECT_EQ(merge.exit_code, 1);
+    EXPECT_NE(merge.err.find("not written by m3055 grade"), std::string::npos) << merge.err;
+    EXPECT_EQ(snapshot(dir.file("work")), before);
 }
 
 }  // namespace
