@@ -8,6 +8,7 @@
 #include "headless_context.h"
 #include "capture/capture.h"
 #include "gl/program.h"
+#include "gl/shader_cache.h"
 #include "scene/load_context.h"
 #include "interrupt.h"
 #include "progress.h"
@@ -17,6 +18,7 @@
 #include "io/message_text.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <iostream>
 #include <map>
@@ -118,6 +120,8 @@ void run_grade(const GradeOptions& options) {
     run.class_options.roster = options.roster;
     run.class_options.follow_symlinks = options.follow_symlinks;
     run.allow_brdf = options.allow_brdf;
+    // Mesa's shader cache in --out, not the teacher's home: a .brdf is a student's code.
+    keep_shader_cache_in((std::filesystem::absolute(options.out) / kShaderCacheFolder).string());
     std::unique_ptr<Capture> capture;  // made when the first scene is drawn
     const Backend backend = parse_backend(options.backend);
     const auto report = grading::run_grading(
