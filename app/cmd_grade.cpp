@@ -169,14 +169,26 @@ void add_grade_command(CLI::App& app) {
                       "Grade submissions that are symbolic links staying inside the folder (refused otherwise)");
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
-    command->callback([options]() {
+    command->callback([options, command]() {
         // SIGINT, SIGTERM, SIGHUP: temporaries removed, images already graded kept,
         // no tables (they are written last), one line.
         const InterruptGuard interrupt([](int signal) {
             return error_line("interrupted by " + signal_name(signal) + ": grades.csv, grades.json and report.html not written");
         });
+        // Bare `m3055 grade`: what it takes.
+        if (options->assignment.empty() && options->merge.empty() && !options->check) {
+            std::cerr << command->help() << "\nm3055: grade: give ASSIGNMENT.json SUBMISSIONS/ --out DIR "
+                                            "(or --check ASSIGNMENT.json, or --merge DIR... --out DIR)\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
         // Usage errors (docs/grading.md: exit 2), before anything is read or written.
         try {
+            // A path that is not there at all is a slip of the command line, not a bad file.
+            for (const std::string* path : {&options->assignment, &options->submissions}) {
+                std::error_code error;
+                if (!path->empty() && !std::filesystem::exists(std::filesystem::symlink_status(*path, error)))
+                    throw std::invalid_argument("grade: " + text::quote_name(*path) + ": no such file or folder");
+            }
             if (options->check && (options->assignment.empty() || !options->submissions.empty() ||
                                    !options->merge.empty() || !options->out.empty()))
                 throw std::invalid_argument("grade --check takes ASSIGNMENT.json alone");

@@ -236,13 +236,29 @@ void write_feedback(const std::string& out_dir, const GradeReport& report,
     for (auto& writer : writers) writer.get();
 }
 
+// A PNG's width and height from its header (the IHDR chunk, bytes 16 to 23),
+// without reading the rest; nullopt when the file is not there or not a PNG.
+std::optional<ImageSize> png_size(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char header[24] = {};
+    if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return std::nullopt;
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (std::memcmp(header, signature, 8) != 0 || std::memcmp(header + 12, "IHDR", 4) != 0) return std::nullopt;
+    const auto big_endian = [&](int at) {
+        return int((std::uint32_t(header[at]) << 24) | (std::uint32_t(header[at + 1]) << 16) |
+                   (std::uint32_t(header[at + 2]) << 8) | std::uint32_t(header[at + 3]));
+    };
+    return ImageSize{big_endian(16), big_endian(20)};
+}
+
 void write_tables(const std::string& out_dir, const GradeReport& report, const std::string& gradescope,
                   const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     write_feedback(out_dir, report, image_bytes);
+    const ImageSizes image_size = [&](const std::string& name) { return png_size(join(out_dir, name)); };
     const auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
     std::vector<FileContents> files = {{join(out_dir, "grades.csv"), bytes(grades_csv(report))},
                                        {join(out_dir, "grades.json"), bytes(grades_json(report))},
-                                       {join(out_dir, "report.html"), bytes(report_html(report, image_bytes))}};
+                                       {join(out_dir, "report.html"), bytes(report_html(report, image_size))}};
     if (!gradescope.empty()) files.push_back({gradescope, bytes(gradescope_json(report))});
     write_files_atomic(files);
 }

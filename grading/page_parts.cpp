@@ -42,7 +42,8 @@ tr.hidden{display:none}
 .swatch{display:inline-block;width:0.8em;height:0.8em;border:1px solid #666;vertical-align:middle;margin:0 1px 0 4px}
 #grades th,td.check{font-size:85%}#grades th{overflow-wrap:normal;word-break:normal}#grades th:first-child{min-width:6em}
 #grades td.reasons{min-width:11em}li.note{max-height:3.8em;overflow-y:auto}
-img{width:256px;image-rendering:pixelated;display:block}
+li,code,figcaption,p,h1,h2{overflow-wrap:anywhere}td.result{white-space:nowrap}
+img{width:256px;height:auto;image-rendering:pixelated;display:block}
 .pass{color:#060;font-weight:bold}.fail,.refused{color:#a00;font-weight:bold}.missing{color:#555;font-weight:bold}.note{color:#555;font-style:italic}
 ul{margin:0;padding-left:1.2em}
 #top{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}#top figcaption{font-size:90%;color:#444}#top figure{margin:0}
@@ -50,7 +51,7 @@ ul{margin:0;padding-left:1.2em}
 #grades img,.shots img{cursor:zoom-in}
 #viewer{position:fixed;inset:0;background:rgba(20,20,20,0.92);color:#fff;display:flex;flex-direction:column;align-items:center;justify-content:center;z-index:10}
 #viewer[hidden]{display:none}
-#viewer img{width:auto;image-rendering:pixelated;cursor:zoom-out;box-shadow:0 0 0 1px #888}
+#viewer img{width:auto;height:auto;image-rendering:pixelated;cursor:zoom-out;box-shadow:0 0 0 1px #888}
 #viewer .bar{margin:0.6em;display:flex;gap:0.5em;align-items:center;flex-wrap:wrap;justify-content:center}
 #viewer button{font-size:100%;padding:0.3em 0.8em;cursor:pointer}#viewer button[aria-pressed=true]{background:#ffd54a;font-weight:bold}
 #viewer-title{font-weight:bold;overflow-wrap:anywhere;max-width:90vw}
@@ -106,6 +107,22 @@ std::string inline_image_cell(const std::vector<std::uint8_t>& png, const std::s
     if (png.empty()) return "<td>&mdash;</td>";
     return "<td><img alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" title=\"click to magnify\" "
            "src=\"data:image/png;base64," + base64(png) + "\"></td>";
+}
+
+std::string url_path(const std::string& relative) {
+    std::string out;
+    for (const char c : relative) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if ((u >= 'a' && u <= 'z') || (u >= 'A' && u <= 'Z') || (u >= '0' && u <= '9') || c == '-' || c == '.' ||
+            c == '_' || c == '~' || c == '/') {
+            out += c;
+            continue;
+        }
+        char escaped[4];
+        std::snprintf(escaped, sizeof escaped, "%%%02X", unsigned(u));
+        out += escaped;
+    }
+    return out;
 }
 
 }  // namespace m3055::grading::page

@@ -23,4 +23,8 @@ extern const char* const kViewer;
 // `view` (render, reference, diff); "&mdash;" when `png` is empty.
 std::string inline_image_cell(const std::vector<std::uint8_t>& png, const std::string& alt, const char* view);
 
+// A path relative to the page as a URL path: every byte but ASCII letters,
+// digits, '-', '.', '_', '~' and '/' percent-encoded ("students/with%20space.png").
+std::string url_path(const std::string& relative);
+
 }  // namespace m3055::grading::page

@@ -1,6 +1,7 @@
 // report.html of `m3055 grade` (grade_outputs.h): one page a teacher opens
-// from disk or prints. Images are data: URIs so the page can be mailed or
-// uploaded alone; pixelated scaling keeps the display's dots visible.
+// from disk or prints, beside the images it shows (students/, diffs/,
+// reference.png): a class of 1000 is a page of 1.5 MB, not one of 55 MB with
+// every image inlined. Pixelated scaling keeps the display's dots visible.
 #include "grading/grade_outputs.h"
 
 #include "grading/diff_image.h"
@@ -42,15 +43,25 @@ rows.forEach(function(r){body.appendChild(r);});});});
 </script>
 )";
 
-// `view`: the image's kind for the magnifier (render, reference, diff).
-std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& alt, const char* view) {
-    if (png.empty()) return "<td>&mdash;</td>";
-    return "<td><img alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" title=\"click to magnify\" "
-           "src=\"data:image/png;base64," + base64(png) + "\"></td>";
+// An <img> of the output folder's file `name`: loaded when it nears the view
+// (`lazy`), its size known before (the row's height does not jump), for the
+// magnifier as `view` (render, reference, diff); "" when it is not there.
+std::string linked_image(const std::string& name, const ImageSizes& image_size, const std::string& alt,
+                         const char* view, bool lazy, const std::string& attributes = "") {
+    const std::optional<ImageSize> size = name.empty() ? std::nullopt : image_size(name);
+    if (!size) return "";
+    return "<img " + attributes + "alt=\"" + escape_html(alt) + "\" data-view=\"" + view +
+           "\" title=\"click to magnify\" width=\"" + std::to_string(size->width) + "\" height=\"" +
+           std::to_string(size->height) + "\"" + (lazy ? " loading=\"lazy\" decoding=\"async\"" : "") + " src=\"" +
+           escape_html(page::url_path(name)) + "\">";
 }
 
-std::string student_row(const json& s, const std::vector<std::string>& labels,
-                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+std::string image_cell(const std::string& name, const ImageSizes& image_size, const std::string& alt, const char* view) {
+    const std::string image = linked_image(name, image_size, alt, view, true);
+    return image.empty() ? "<td>&mdash;</td>" : "<td>" + image + "</td>";
+}
+
+std::string student_row(const json& s, const std::vector<std::string>& labels, const ImageSizes& image_size) {
     const std::string name = s["student"].get<std::string>();
     const double score = s["score"].get<double>();
     const std::string status = result_of(s);
@@ -58,7 +69,7 @@ std::string student_row(const json& s, const std::vector<std::string>& labels,
                       escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
-    row += "<td data-sort=\"" + status + "\" class=\"" + status + "\">" + status + "</td>";
+    row += "<td data-sort=\"" + status + "\" class=\"result " + status + "\">" + status + "</td>";
     // One column a check: passed or not, and the points.
     for (const std::string& label : labels) {
         const json* found = nullptr;
@@ -74,12 +85,9 @@ std::string student_row(const json& s, const std::vector<std::string>& labels,
                escape_html((*found)["reason"].get<std::string>()) + "\">" + (ok ? "&#10004; " : "&#10008; ") +
                score_text((*found)["earned"].get<double>()) + "/" + score_text((*found)["points"].get<double>()) + "</td>";
     }
-    std::vector<std::uint8_t> render, diff;
-    if (!s["images"].is_null()) {
-        render = image_bytes(s["images"]["render"].get<std::string>());
-        diff = image_bytes(s["images"]["diff"].get<std::string>());
-    }
-    row += image_cell(render, name + ": render", "render") + image_cell(diff, name + ": difference", "diff");
+    const bool images = s["images"].is_object();
+    row += image_cell(images ? s["images"]["render"].get<std::string>() : "", image_size, name + ": render", "render") +
+           image_cell(images ? s["images"]["diff"].get<std::string>() : "", image_size, name + ": difference", "diff");
     row += "<td class=\"reasons\" data-sort=\"\"><ul>";
     for (const json& reason : s["reasons"]) row += "<li>" + escape_html(reason.get<std::string>()) + "</li>";
     if (s["reasons"].empty()) row += "<li>all checks passed</li>";
@@ -215,8 +223,7 @@ std::string folder_sections(const json& folder) {
 
 }  // namespace
 
-std::string report_html(const GradeReport& report,
-                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+std::string report_html(const GradeReport& report, const ImageSizes& image_size) {
     const json& a = report.assignment;
     const std::string title = a["title"].get<std::string>();
     std::map<std::string, std::size_t> results;  // pass, fail, refused, missing
@@ -231,12 +238,10 @@ std::string report_html(const GradeReport& report,
             " refused (not graded)" +
             (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
             ". Click a column's header to sort, a picture to magnify it.</p>\n";
-    const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
+    const std::string reference = linked_image(a["reference_image"].get<std::string>(), image_size, "reference",
+                                               "reference", false, "id=\"reference-image\" ");
     const std::string reference_figure =
-        reference.empty() ? std::string()
-                          : "<figure><img id=\"reference-image\" data-view=\"reference\" title=\"click to magnify\" "
-                            "alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
-                                "\"><figcaption>The reference</figcaption></figure>\n";
+        reference.empty() ? std::string() : "<figure>" + reference + "<figcaption>The reference</figcaption></figure>\n";
     const std::vector<std::string> labels = check_labels(report);
     page += class_summary(report, labels, reference_figure);
     page += folder_sections(report.folder);
@@ -251,7 +256,7 @@ std::string report_html(const GradeReport& report,
     for (std::size_t i = 0; i < labels.size(); ++i)
         page += "<th data-col=\"" + std::to_string(3 + i) + "\">" + escape_html(labels[i]) + "</th>";
     page += "<th>Render</th><th>Levels off the reference<br>" + html_legend() + "</th><th>Reasons</th></tr></thead><tbody>\n";
-    for (const json& s : report.students) page += student_row(s, labels, image_bytes);
+    for (const json& s : report.students) page += student_row(s, labels, image_size);
     page += "</tbody></table>\n";
     page += kScript;
     page += kViewer;

@@ -564,6 +564,9 @@ TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
         {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "5/4"},
         {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "x"},
         {"grade", kAssignment, kSubmissions, "--merge", dir.file("a"), "--out", dir.file("out")},
+        {"grade", kAssignment, dir.file("no such folder"), "--out", dir.file("out")},
+        {"grade", dir.file("no such assignment.json"), kSubmissions, "--out", dir.file("out")},
+        {"grade", "--check", dir.file("no such assignment.json")},
         {"batch", kSubmissions + "/alice.json", kSubmissions + "/bob.json"},
         {"batch", kSubmissions, "--out", dir.file("out"), "--shard", "0/2"},
     };
@@ -572,6 +575,15 @@ TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
         EXPECT_EQ(run.exit_code, 2) << args[0] << " " << args.back() << ": " << run.err;
         EXPECT_FALSE(fs::exists(dir.file("out")));
     }
+}
+
+// Bare `m3055 grade`: the usage, and what to give, exit 2.
+TEST(GradeClass, BareGradePrintsTheUsage) {
+    const RunResult run = run_m3055({"grade"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.err.find("Usage: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--merge"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("\nm3055: grade: give ASSIGNMENT.json SUBMISSIONS/ --out DIR"), std::string::npos) << run.err;
 }
 
 TEST(GradeClass, CountsInMessagesAreSingularForOne) {
@@ -871,7 +883,8 @@ std::string dom_of(TempDir& dir, const std::string& page) {
 // Drives a copy of `page` in Chromium at 1280 x 900: `script` runs after the
 // page loaded and writes what it saw into <pre id="probe">; returns that text.
 std::string probe_page(TempDir& dir, const std::string& page, const std::string& script) {
-    const std::string copy = dir.file("probe.html");
+    // Beside the page: its images are files named relative to it.
+    const std::string copy = fs::path(page).parent_path().string() + "/probe.html";
     write_text(copy, read_text(page) + "<pre id=\"probe\"></pre><script>window.addEventListener('load',function(){" +
                          "var out=[];function note(x){out.push(x);}" + script +
                          "document.getElementById('probe').textContent=out.join(' ');});</script>\n");
@@ -968,6 +981,51 @@ TEST(GradeReport, SummaryCheckColumnsFilterAndFeedbackPagesInHeadlessChromium) {
                      " --screenshot=" + std::string(keep) + "/report.png --window-size=1280,1000 file://" +
                      dir.file("out/report.html") + " 2>/dev/null").c_str());
     }
+}
+
+// The report links its images (students/, diffs/, reference.png) instead of
+// inlining them: the page of a class stays small (a class of 1000 was 55 MB),
+// each image loads as it nears the view, with its size known before.
+TEST(GradeReport, ImagesAreFilesBesideThePageLoadedLazily) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    for (int i = 0; i < 40; ++i) write_text(dir.file("subs/s" + std::to_string(100 + i) + ".json"), good_scene_variant(i));
+    write_text(dir.file("subs/with space.json"), weaker_scene());
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    const std::string page = read_text(dir.file("out/report.html"));
+    EXPECT_EQ(page.find("data:image"), std::string::npos) << "an image inlined";
+    EXPECT_LT(page.size(), 41u * 2000u) << "more than 2 KB a student";
+    EXPECT_EQ(count_of(page, " loading=\"lazy\""), 2u * 41u);  // each render and difference image
+    EXPECT_NE(page.find("<img id=\"reference-image\" alt=\"reference\" data-view=\"reference\" title=\"click to magnify\" "
+                        "width=\"512\" height=\"320\" src=\"reference.png\">"),
+              std::string::npos);
+    EXPECT_NE(page.find("width=\"512\" height=\"320\" loading=\"lazy\" decoding=\"async\" src=\"students/with%20space.png\""),
+              std::string::npos);
+    // Every image the page names is a file beside it.
+    for (std::size_t at = page.find(" src=\""); at != std::string::npos; at = page.find(" src=\"", at + 1)) {
+        std::string url = page.substr(at + 6, page.find('"', at + 6) - at - 6);
+        if (url.rfind("data:", 0) == 0) continue;  // said above
+        for (std::size_t p = url.find("%20"); p != std::string::npos; p = url.find("%20")) url.replace(p, 3, " ");
+        EXPECT_TRUE(file_exists(dir.file("out/" + url))) << url;
+    }
+}
+
+// A 240-byte name without a break (graded, refused and named in its reason,
+// byte-identical to another, not graded) wraps: the page is no wider than a
+// 1280-pixel window.
+TEST(GradeReport, LongNamesWrapWithinA1280PixelWindow) {
+    if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed";
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    const std::string name(240, 'n'), other(239, 'r');
+    write_text(dir.file("subs/" + name + ".json"), good_scene());
+    write_text(dir.file("subs/alice.json"), good_scene());
+    fs::create_directories(dir.file("subs/" + other));  // refused: "rrr.../scene.json: missing"
+    write_text(dir.file("subs/" + std::string(230, 'i') + ".txt"), "not graded");
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    EXPECT_EQ(probe_page(dir, dir.file("out/report.html"),
+                         "note(document.scrollingElement.scrollWidth<=1280?'fits':'wider:'+document.scrollingElement.scrollWidth);"),
+              "fits");
 }
 
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {

@@ -331,7 +331,7 @@ TEST(GradeOutputs, NamesAndReasonsAreEscapedInHtmlAndCsv) {
                                {"broken", "x"},
                                {"checks", nlohmann::json::array()},
                                {"images", nullptr}});
-    const std::string html = report_html(report, [](const std::string&) { return std::vector<std::uint8_t>{}; });
+    const std::string html = report_html(report, [](const std::string&) { return std::optional<ImageSize>{}; });
     EXPECT_EQ(html.find("<b>x"), std::string::npos);
     EXPECT_NE(html.find("&lt;b&gt;x&amp;y&lt;/b&gt;"), std::string::npos);
     EXPECT_NE(html.find("<title>&lt;T&gt;: grades</title>"), std::string::npos);

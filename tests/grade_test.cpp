@@ -200,7 +200,7 @@ TEST(Grade, RefusedAndFailMeanOneThingInEveryOutput) {
         const std::string line = run.err.substr(run.err.find("m3055: " + name + ": "));
         EXPECT_NE(line.substr(0, line.find('\n')).find(" / 100 " + result), std::string::npos) << line;
         EXPECT_NE(report.find("data-status=\"" + result + "\" data-student=\"" + name + "\""), std::string::npos);
-        EXPECT_NE(report.find("<td data-sort=\"" + result + "\" class=\"" + result + "\">" + result + "</td>"),
+        EXPECT_NE(report.find("<td data-sort=\"" + result + "\" class=\"result " + result + "\">" + result + "</td>"),
                   std::string::npos);
     }
     EXPECT_NE(run.err.find("m3055: 6 submissions: 2 passed, 3 failed, 1 refused (not graded)"), std::string::npos) << run.err;
@@ -277,12 +277,17 @@ TEST(Grade, ReportOpensInHeadlessChromium) {
     if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup installs it)";
     TempDir out;
     ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()}).exit_code, 0);
-    // The page as shipped, plus a probe that counts the images that did not decode.
+    // The page as shipped, plus a probe that loads every image (they load
+    // lazily, as they near the view) and counts those that did not decode.
     std::string page = read_text(out.file("report.html"));
     EXPECT_EQ(page.find("http"), std::string::npos) << "no network";
-    const std::string probe = "<script>window.addEventListener('load',function(){var n=0;"
-                              "for(var i of document.images)if(i.id!=='viewer-img'&&(!i.complete||i.naturalWidth===0))n++;"
-                              "document.body.setAttribute('data-broken',n);});</script>";
+    const std::string probe = "<script>window.addEventListener('load',function(){var left=0,n=0;"
+                              "var all=[].filter.call(document.images,function(i){return i.id!=='viewer-img';});"
+                              "function done(){if(--left===0)document.body.setAttribute('data-broken',n);}"
+                              "left=all.length;all.forEach(function(i){i.loading='eager';"
+                              "if(i.complete&&i.naturalWidth>0){done();return;}"
+                              "i.addEventListener('load',done);i.addEventListener('error',function(){n++;done();});});});"
+                              "</script>";
     write_text(out.file("probe.html"), page.replace(page.rfind("</body>"), 7, probe + "</body>"));
     const std::string dom = out.file("dom.html");
     const std::string command = "chromium --headless --no-sandbox --disable-gpu --user-data-dir=" + out.file("profile") +
