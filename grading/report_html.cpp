@@ -50,8 +50,8 @@ std::string linked_image(const std::string& name, const ImageSizes& image_size, 
                          const char* view, bool lazy, const std::string& attributes = "") {
     const std::optional<ImageSize> size = name.empty() ? std::nullopt : image_size(name);
     if (!size) return "";
-    return "<img " + attributes + "alt=\"" + escape_html(alt) + "\" data-view=\"" + view +
-           "\" title=\"click to magnify\" width=\"" + std::to_string(size->width) + "\" height=\"" +
+    return "<img " + attributes + "alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" width=\"" +
+           std::to_string(size->width) + "\" height=\"" +
            std::to_string(size->height) + "\"" + (lazy ? " loading=\"lazy\" decoding=\"async\"" : "") + " src=\"" +
            escape_html(page::url_path(name)) + "\">";
 }
@@ -255,7 +255,8 @@ std::string report_html(const GradeReport& report, const ImageSizes& image_size)
             "<th data-col=\"2\">Result</th>";
     for (std::size_t i = 0; i < labels.size(); ++i)
         page += "<th data-col=\"" + std::to_string(3 + i) + "\">" + escape_html(labels[i]) + "</th>";
-    page += "<th>Render</th><th>Levels off the reference<br>" + html_legend() + "</th><th>Reasons</th></tr></thead><tbody>\n";
+    page += "<th>Render (click to magnify)</th><th>Levels off the reference<br>" + html_legend() +
+            "</th><th>Reasons</th></tr></thead><tbody>\n";
     for (const json& s : report.students) page += student_row(s, labels, image_size);
     page += "</tbody></table>\n";
     page += kScript;
