@@ -49,8 +49,14 @@ struct BrdfWatch {
 // page, a file the explorer writes (a saved scene, a screenshot) is also
 // offered as a download, and File > Open is the browser's file chooser: the
 // page sets these; the desktop window leaves them as they are.
+// The modifiers that, with a digit, load a figure preset (explore/keys.h).
+// In a browser Ctrl+1...9 switch tabs and Ctrl+0 resets the zoom, so the page
+// takes Ctrl+Alt+digit, as web editors do for their own number shortcuts.
+enum class FigureChord { ctrl, ctrl_alt };
+
 struct Platform {
     bool can_quit = true;
+    FigureChord figure_chord = FigureChord::ctrl;
     std::function<void(const std::string& path)> file_written;
     std::function<void()> pick_file;
     // Where saved files name a .brdf by a relative path: the page's work
