@@ -52,7 +52,8 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
     // The sections scroll in a region of their own; an error shows under it
     // (never inserted above the controls: they keep their place).
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float error_h = explorer.session.messages.error.empty() ? 0.0f : 4.0f * line;
+    const bool error_block = !explorer.session.messages.error.empty() && !explorer.session.platform.error_line_outside;
+    const float error_h = error_block ? 4.0f * line : 0.0f;
     ImGui::BeginChild("sections", ImVec2(0.0f, -error_h), false);
     // Room for the labels on the right: 110 px, and what the panel grew by
     // (its width follows its content; the widgets keep theirs).
@@ -78,7 +79,7 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
     info.side_overflow = std::max(0.0f, sections->DC.CursorMaxPos.x - sections->InnerClipRect.Max.x);
     ImGui::EndChild();
 
-    if (!explorer.session.messages.error.empty()) {
+    if (error_block) {
         ImGui::BeginChild("error", ImVec2(0.0f, 0.0f), false);
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));

@@ -2,6 +2,7 @@
 #include "explore_ui/panels.h"
 
 #include "explore/figure_scenes.h"
+#include "explore/keys.h"
 #include "explore_ui/narrow_panel.h"
 #include "explore_ui/shape_editor.h"
 #include "explore_ui/widgets.h"
@@ -84,7 +85,8 @@ bool object_fields(Explorer& explorer, int i) {
 }  // namespace
 
 void objects_section(Explorer& explorer) {
-    ImGui::TextWrapped("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
+    const char* chord = figure_chord_name(explorer.session.platform.figure_chord);
+    ImGui::TextWrapped("figure presets (%s+1-9, %s+0 = spec example):", chord, chord);
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;

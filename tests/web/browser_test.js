@@ -8,7 +8,10 @@
 //  2. real input through the DevTools protocol: a slider dragged changes the
 //     display and Ctrl+Z gives identical bytes; a value typed; a .brdf file
 //     opened through the file chooser; the share link's round trip; practice
-//     mode's score equal to `m3055 grade`'s.
+//     mode's score equal to `m3055 grade`'s;
+//  3. the page around the explorer (page_test.js): bad share links, the
+//     question before unsaved edits are lost, the figure keys, .brdf errors,
+//     devicePixelRatio 2, the error line, idle frames, screenshot numbering.
 // Usage: node browser_test.js --m3055 BUILD/m3055 --site build-web/site
 //          --work DIR --backend swiftshader|angle [--out DIR]
 'use strict';
@@ -19,6 +22,7 @@ const zlib = require('zlib');
 const { execFileSync } = require('child_process');
 const puppeteer = require('puppeteer-core');
 const { decodePng, compareLevels } = require('./png');
+const pageTests = require('./page_test');
 
 const repo = path.resolve(__dirname, '..', '..');
 function option(name, fallback) {
@@ -33,8 +37,9 @@ const out = path.resolve(option('out', work));
 // --only PART[,PART] (all when not given): scenes (the scene sets against m3055
 // render), panes (the A/B split and difference pane: the explorer's own GL
 // drawing), input (the wheel, slider drag, undo, typing, files, share links,
-// practice: the page's logic), latency (slider to pixels, reported).
-const only = option('only', 'scenes,panes,input,latency').split(',');
+// practice: the page's logic), page (the page around the explorer:
+// page_test.js), latency (slider to pixels, reported).
+const only = option('only', 'scenes,panes,input,page,latency').split(',');
 fs.mkdirSync(work, { recursive: true });
 fs.mkdirSync(out, { recursive: true });
 
@@ -586,6 +591,10 @@ async function measureLatency(browser, base) {
     if (only.includes('input')) {
       await wheelScrollsPanel(browser, base);
       await realInput(browser, base);
+    }
+    if (only.includes('page')) {
+      await pageTests(browser, base, { check, openPage, settle, pickFiles, pngOf, sleep, waitForDownload, repo, work, out,
+                                       m3055, backend, site });
     }
     if (only.includes('latency')) await measureLatency(browser, base);
   } finally {
