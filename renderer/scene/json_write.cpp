@@ -6,6 +6,7 @@
 #include "scene/load.h"
 
 #include "scene/json_material.h"
+#include "scene/json_model_file.h"
 #include "scene/json_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -76,7 +77,10 @@ json scene_to_json(const Scene& scene, const PathWriting& writing) {
     json objects = json::array();
     for (const Object& object : scene.objects) {
         json entry = scene_json::shape_json(object);
-        entry["material"] = scene_json::material_json(object.material, writing);
+        if (object.shape == Shape::mesh)
+            scene_json::write_mesh_file(object, writing, entry);
+        else
+            entry["material"] = scene_json::material_json(object.material, writing);
         objects.push_back(std::move(entry));
     }
     json out = {{"display", display_json(scene.display)},

@@ -6,6 +6,7 @@
 #include "io/message_text.h"
 #include "models/model_table.h"
 #include "scene/json_material.h"
+#include "scene/json_model_file.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
@@ -237,7 +238,10 @@ Object read_object(const Node& node, const scene_json::SceneFiles& files) {
     node.expect_object();
     Object object;
     scene_json::read_shape(node, object);  // shape, centre and the shape's own keys
-    object.material = scene_json::read_material(node.required("material"), files);
+    if (object.shape == Shape::mesh)
+        scene_json::read_mesh_file(node, files, object);  // the model file and its materials
+    else
+        object.material = scene_json::read_material(node.required("material"), files);
     return object;
 }
 
@@ -266,7 +270,8 @@ Scene read_scene(const json& doc, const std::string& source, const scene_json::S
         triangles += triangle_count(scene.objects.back());
         if (triangles > kMaxSceneTriangles)
             objects.at(i).fail("the scene's meshes would have more than " +
-                               std::to_string(kMaxSceneTriangles) + " triangles (fewer segments?)");
+                               std::to_string(kMaxSceneTriangles) + " triangles (" +
+                               (scene.objects.back().shape == Shape::mesh ? "a smaller model?)" : "fewer segments?)"));
     }
     return scene;
 }

@@ -24,6 +24,7 @@ const char* to_string(Shape shape) {
         case Shape::cube: return "cube";
         case Shape::cylinder: return "cylinder";
         case Shape::torus: return "torus";
+        case Shape::mesh: return "mesh";
     }
     return "?";
 }
