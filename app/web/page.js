@@ -105,21 +105,22 @@
   }
 
   // Picked files: every file into the work folder, then the scene (or the
-  // one .brdf) opened, so a scene finds the .brdf files picked with it.
+  // one .brdf) opened, so a scene finds the .brdf and model files (.obj, .mtl,
+  // .gltf, .glb, .bin) picked with it.
   async function openFiles(files) {
     const list = Array.from(files);
     if (list.some((f) => f.name === 'assignment.json')) return practiseFiles(list);
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
-    const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
+    const scene = list.find((f) => f.name.endsWith('.json')) || list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
-    // A chooser gives names without folders: a .brdf the scene names in a
-    // subfolder ("brdfs/my.brdf") and that was picked with it ("my.brdf") is
-    // put where the scene looks for it too.
+    // A chooser gives names without folders: a .brdf or model file the scene
+    // names in a subfolder ("brdfs/my.brdf", "models/vase.obj") and that was
+    // picked with it ("my.brdf") is put where the scene looks for it too.
     if (!scene.name.endsWith('.brdf')) {
       let named = [];
       try {
         named = (JSON.parse(await scene.text()).objects || [])
-          .map((o) => o && o.material && o.material.file).filter((f) => typeof f === 'string');
+          .flatMap((o) => [o && o.material && o.material.file, o && o.file]).filter((f) => typeof f === 'string');
       } catch (e) { /* not JSON: the loader says so */ }
       for (const name of named) {
         const picked = list.find((f) => f.name === basename(name));

@@ -2,7 +2,7 @@
 // Chromium through puppeteer-core (docs/web.md "Tests"):
 //  1. every scene of a set (scenes/, the worked assignment's, every model
 //     under one and three lights, every shape, translucency, bits 1-8, .brdf
-//     files) loaded through window.m3055 and its display PNG compared level by
+//     files, model files (OBJ and MTL)) loaded through window.m3055 and its display PNG compared level by
 //     level with `m3055 render`'s; a scene m3055 render refuses must be
 //     rejected with the same line;
 //  2. real input through the DevTools protocol: a slider dragged changes the
@@ -123,6 +123,13 @@ function sceneSet() {
     add('.brdf', `brdf-${f}.json`, scene(oneLight, [{ shape: 'sphere', center: [0, 0, 0], radius: 1, material: { model: 'brdf', file: f } }]),
         { [f]: fs.readFileSync(path.join(brdfDir, f), 'utf8') });
   }
+  // Model files: the vase (an OBJ with its MTL: materials, smooth groups) and an
+  // OBJ the loader refuses (a face naming a vertex the file lacks).
+  const modelDir = path.join(repo, 'scenes', 'models');
+  const modelFile = (f) => fs.readFileSync(path.join(modelDir, f), 'utf8');
+  add('model files', 'vase.json', modelFile('vase.json'), { 'vase.obj': modelFile('vase.obj'), 'vase.mtl': modelFile('vase.mtl') });
+  add('model files', 'model-broken.json', scene(oneLight, [{ shape: 'mesh', file: 'broken.obj', center: [0, 0, 0], size: 2 }]),
+      { 'broken.obj': 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' });
   return scenes;
 }
 
@@ -364,6 +371,14 @@ async function realInput(browser, base) {
   }
   check(subPng.equals(subRendered), `${backend}: a scene naming brdfs/lambert.brdf, picked with lambert.brdf, ` +
     'shows what m3055 render draws of it');
+  // A scene with a model file, picked with the OBJ and its MTL (the model file
+  // listed first: the .json is the one opened).
+  const modelDir = path.join(repo, 'scenes', 'models');
+  await pickFiles(page, '#open', ['vase.obj', 'vase.json', 'vase.mtl'].map((f) => path.join(modelDir, f)));
+  const vasePng = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  execFileSync(m3055, ['render', '--scene', path.join(modelDir, 'vase.json'), '--out', path.join(work, 'vase-picked.png')]);
+  check(vasePng.equals(fs.readFileSync(path.join(work, 'vase-picked.png'))),
+    `${backend}: vase.json picked with vase.obj and vase.mtl shows what m3055 render draws of it`);
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
