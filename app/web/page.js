@@ -114,7 +114,7 @@
     const scene = list.find((f) => f.name.endsWith('.json')) || list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
     // A chooser gives names without folders: a .brdf or model file the scene
-    // names in a subfolder ("brdfs/my.brdf", "models/vase.obj") and that was
+    // names in a subfolder ("brdfs/my.brdf", "meshes/vase.obj") and that was
     // picked with it ("my.brdf") is put where the scene looks for it too.
     if (!scene.name.endsWith('.brdf')) {
       let named = [];
