@@ -12,6 +12,7 @@
 #include "batch/run_batch.h"
 #include "batch/scene_inputs.h"
 #include "gl/program.h"
+#include "gl/shader_cache.h"
 #include "scene/load_context.h"
 
 #include "grading/submissions.h"
@@ -124,6 +125,12 @@ void add_batch_command(CLI::App& app) {
             std::cerr << error_line(error.what()) << "\n";
             throw CLI::RuntimeError(kExitUsage);
         }
+        // Mesa's shader cache in --out, not the user's home (a .brdf is code);
+        // a manifest names no one folder: with --allow-brdf, no cache at all.
+        if (!options->out_dir.empty())
+            keep_shader_cache_in((std::filesystem::absolute(options->out_dir) / kShaderCacheFolder).string());
+        else if (options->allow_brdf)
+            switch_shader_cache_off();
         std::size_t failures = 0;
         try {
             std::string manifest;

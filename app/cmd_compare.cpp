@@ -1,7 +1,10 @@
 // `m3055 compare A B`: two images (PNG, PFM, or a scene rendered first) at the
 // display's own precision. Exit 0: pass; 1: warn or fail (the
 // result line or "result" in --json says which); 2: error (unreadable input,
-// sizes differ, bad option). The comparison is grading/.
+// sizes differ, bad option). `m3055 compare A_DIR B_DIR`: the PNGs of two
+// folders by name, one summary line; exit 0 when every pair passes and no name
+// is in one folder only, 1 otherwise, 2 when a pair could not be compared.
+// The comparison is grading/.
 #include "commands.h"
 #include "headless_context.h"
 #include "progress.h"
@@ -10,12 +13,14 @@
 #include "gl/program.h"
 #include "grading/comparison_json.h"
 #include "grading/diff_image.h"
+#include "grading/folder_compare.h"
 #include "grading/image_input.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
 #include "scene/load.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -111,15 +116,52 @@ int run_compare(const CompareOptions& options) {
     return comparison.verdict == grading::Verdict::pass ? kExitOk : kExitFailure;
 }
 
+// `compare A_DIR B_DIR`: a line for each pair that does not pass and each
+// name in one folder only, then the summary line (or one JSON object).
+int run_compare_folders(const CompareOptions& options) {
+    const grading::FolderComparison c =
+        grading::compare_folders(options.a, options.b, options.bits, thresholds_of(options));
+    const std::size_t passed = c.count(grading::Verdict::pass), warned = c.count(grading::Verdict::warn),
+                      failed = c.count(grading::Verdict::fail), problems = c.problems();
+    if (options.json) {
+        nlohmann::json pairs = nlohmann::json::array();
+        for (const grading::PngPair& pair : c.pairs) {
+            nlohmann::json entry = pair.comparison ? grading::to_json(*pair.comparison)
+                                                   : nlohmann::json{{"result", "error"}, {"problem", pair.problem}};
+            entry["name"] = pair.name;
+            pairs.push_back(std::move(entry));
+        }
+        const nlohmann::json out = {
+            {"a", options.a}, {"b", options.b}, {"pairs", pairs}, {"only_a", c.only_a}, {"only_b", c.only_b},
+            {"summary", {{"pass", passed}, {"warn", warned}, {"fail", failed}, {"error", problems}}}};
+        std::cout << out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    } else {
+        for (const grading::PngPair& pair : c.pairs) {
+            if (!pair.comparison)
+                std::printf("error: %s: %s\n", pair.name.c_str(), pair.problem.c_str());
+            else if (pair.comparison->verdict != grading::Verdict::pass)
+                std::printf("%s: %s\n", pair.name.c_str(), grading::summary_line(*pair.comparison).c_str());
+        }
+        for (const std::string& name : c.only_a) std::printf("only in A: %s\n", name.c_str());
+        for (const std::string& name : c.only_b) std::printf("only in B: %s\n", name.c_str());
+        const std::size_t both = c.pairs.size();
+        std::printf("%zu PNG%s in both folders: %zu pass, %zu warn, %zu fail, %zu could not be compared; %zu only in A, "
+                    "%zu only in B\n",
+                    both, both == 1 ? "" : "s", passed, warned, failed, problems, c.only_a.size(), c.only_b.size());
+    }
+    if (problems) return kExitUsage;
+    return warned || failed || !c.only_a.empty() || !c.only_b.empty() ? kExitFailure : kExitOk;
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
     auto options = std::make_shared<CompareOptions>();
     CLI::App* command = app.add_subcommand(
-        "compare", "Compare two images (PNG, PFM, or a scene rendered first) level by level; exit 0 pass, 1 warn "
-                   "or fail, 2 error");
-    command->add_option("A", options->a, "First image: .png, .pfm, or a scene .json")->required();
-    command->add_option("B", options->b, "Second image: .png, .pfm, or a scene .json")->required();
+        "compare", "Compare two images (PNG, PFM, or a scene rendered first) level by level, or the PNGs of two "
+                   "folders by name; exit 0 pass, 1 warn or fail (or a name in one folder only), 2 error");
+    command->add_option("A", options->a, "First image: .png, .pfm, or a scene .json; or a folder of PNGs")->required();
+    command->add_option("B", options->b, "Second image: .png, .pfm, or a scene .json; or a folder of PNGs")->required();
     command->add_option("--bits", options->bits, "Bits a channel of PNG/PFM inputs when neither is a scene")
         ->capture_default_str()
         ->check(CLI::Range(1, 8));
@@ -139,8 +181,22 @@ void add_compare_command(CLI::App& app) {
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->callback([options]() {
         int status = kExitUsage;
+        std::error_code error;
+        const bool folder_a = std::filesystem::is_directory(options->a, error),
+                   folder_b = std::filesystem::is_directory(options->b, error);
+        if (folder_a != folder_b || ((folder_a || folder_b) && !options->diff.empty())) {
+            std::cerr << error_line(std::string("compare: ") +
+                                    (folder_a != folder_b ? "give two folders or two images: " +
+                                                                text::quote_name(folder_a ? options->a : options->b) +
+                                                                " is a folder, " +
+                                                                text::quote_name(folder_a ? options->b : options->a) +
+                                                                " is not"
+                                                          : std::string("--diff names one image: not taken with two folders")))
+                      << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
         try {
-            status = run_compare(*options);
+            status = folder_a ? run_compare_folders(*options) : run_compare(*options);
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
             throw CLI::RuntimeError(kExitUsage);

@@ -8,6 +8,7 @@
 #include "headless_context.h"
 #include "capture/capture.h"
 #include "gl/program.h"
+#include "gl/shader_cache.h"
 #include "scene/load_context.h"
 #include "interrupt.h"
 #include "progress.h"
@@ -17,8 +18,10 @@
 #include "io/message_text.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <iostream>
+#include <map>
 #include <memory>
 
 namespace m3055 {
@@ -35,11 +38,12 @@ struct GradeOptions {
 void print_grade(const grading::Grade& grade) {
     const std::vector<std::string> reasons = grade.reasons();
     // The student as every output shows the name (grading/submissions.h: shown_name:
-    // one line of valid UTF-8, at most 4 x 255 bytes).
-    std::fprintf(stderr, "%s: %s / %s %s%s%s\n", grade.student.c_str(),
-                 text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(),
-                 grade.missing ? "missing" : grade.passed ? "pass" : "fail", reasons.empty() ? "" : ": ",
-                 reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+    // one line of valid UTF-8, at most 4 x 255 bytes), and the result's one word
+    // (grade_outputs.h: result_of).
+    const char* result = grade.missing ? "missing" : !grade.broken.empty() ? "refused" : grade.passed ? "pass" : "fail";
+    std::fprintf(stderr, "m3055: %s: %s / %s %s%s%s\n", grade.student.c_str(),
+                 text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(), result,
+                 reasons.empty() ? "" : ": ", reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
     for (const std::string& note : grade.notes)
         std::fprintf(stderr, "  note: %s\n", text::one_line(note).c_str());
 }
@@ -59,19 +63,27 @@ void print_folder(const nlohmann::json& folder) {
     }
 }
 
+// Every error of the assignment, one line each, then the lines that go with them.
+void print_errors(const grading::AssignmentCheck& check) {
+    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    for (const std::string& line : check.notes) std::cerr << error_line(line) << "\n";
+}
+
 // `grade --check ASSIGNMENT.json`: exit 0 when the assignment has no error and
 // its reference earns every point of its rules, 1 otherwise.
 bool run_check(const GradeOptions& options) {
-    const grading::Assignment assignment = grading::load_assignment(options.assignment);
+    const grading::AssignmentRead read = grading::read_assignment(options.assignment);
+    const grading::Assignment& assignment = read.assignment;
     // A .brdf file is code: the reference runs it only when the teacher asks.
-    const grading::AssignmentCheck check =
-        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
-    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    const grading::AssignmentCheck check = grading::check_assignment(read, LoadContext::for_class(options.allow_brdf));
+    print_errors(check);
     for (const std::string& line : check.reference_fails) std::cerr << error_line(line) << "\n";
     const std::string name = text::quote_name(options.assignment);
     std::string summary = name + ": " + std::to_string(check.errors.size()) +
                           (check.errors.size() == 1 ? " error" : " errors");
-    if (check.reference_is_scene)
+    if (read.has_error_at("") || assignment.reference.empty() || check.reference_unreadable)
+        summary += "; the rules could not be checked against the reference";
+    else if (check.reference_is_scene)
         summary += "; the reference scores " + text::format_number(check.reference_score) + " of " +
                    text::format_number(assignment.max_score()) + " points";
     else
@@ -88,13 +100,13 @@ void run_grade(const GradeOptions& options) {
                      report.students.size() == 1 ? "" : "s", text::quote_name(options.out).c_str());
         return;
     }
-    const grading::Assignment assignment = grading::load_assignment(options.assignment);
-    // The assignment against its own reference: structural errors stop the
-    // run before anything is written; rules the reference fails are said.
+    const grading::AssignmentRead read = grading::read_assignment(options.assignment);
+    const grading::Assignment& assignment = read.assignment;
+    // The assignment against its own reference: any error stops the run
+    // before anything is written; rules the reference fails are said.
     // A .brdf file is code: the reference runs it only when the teacher asks.
-    const grading::AssignmentCheck check =
-        grading::check_assignment(assignment, LoadContext::for_class(options.allow_brdf));
-    for (const std::string& line : check.errors) std::cerr << error_line(line) << "\n";
+    const grading::AssignmentCheck check = grading::check_assignment(read, LoadContext::for_class(options.allow_brdf));
+    print_errors(check);
     if (!check.errors.empty())
         throw std::runtime_error(text::quote_name(options.assignment) + ": " + std::to_string(check.errors.size()) +
                                  (check.errors.size() == 1 ? " error" : " errors") +
@@ -108,6 +120,8 @@ void run_grade(const GradeOptions& options) {
     run.class_options.roster = options.roster;
     run.class_options.follow_symlinks = options.follow_symlinks;
     run.allow_brdf = options.allow_brdf;
+    // Mesa's shader cache in --out, not the teacher's home: a .brdf is a student's code.
+    keep_shader_cache_in((std::filesystem::absolute(options.out) / kShaderCacheFolder).string());
     std::unique_ptr<Capture> capture;  // made when the first scene is drawn
     const Backend backend = parse_backend(options.backend);
     const auto report = grading::run_grading(
@@ -118,18 +132,14 @@ void run_grade(const GradeOptions& options) {
         },
         run);
     print_folder(report.folder);
-    std::size_t passed = 0, missing = 0, refused = 0;
-    for (const auto& s : report.students) {
-        passed += s["passed"].get<bool>() ? 1 : 0;
-        missing += s["missing"].get<bool>() ? 1 : 0;
-        refused += !s["missing"].get<bool>() && !s["broken"].get<std::string>().empty() ? 1 : 0;
-    }
-    const std::size_t submitted = report.students.size() - missing;
-    std::string line = "m3055: graded " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
-    if (refused) line += " (" + std::to_string(refused) + " refused)";
+    std::map<std::string, std::size_t> results;  // pass, fail, refused, missing
+    for (const auto& s : report.students) ++results[grading::result_of(s)];
+    const std::size_t submitted = report.students.size() - results["missing"];
+    std::string line = "m3055: " + std::to_string(submitted) + (submitted == 1 ? " submission" : " submissions");
     if (options.shard != "1/1") line += " of shard " + options.shard;
-    line += ", " + std::to_string(passed) + " passed";
-    if (missing) line += "; " + std::to_string(missing) + " on the roster with no submission";
+    line += ": " + std::to_string(results["pass"]) + " passed, " + std::to_string(results["fail"]) + " failed, " +
+            std::to_string(results["refused"]) + " refused (not graded)";
+    if (results["missing"]) line += "; " + std::to_string(results["missing"]) + " on the roster with no submission";
     std::fprintf(stderr, "%s; wrote %s\n", line.c_str(), text::quote_name(options.out + "/report.html").c_str());
 }
 
@@ -159,14 +169,26 @@ void add_grade_command(CLI::App& app) {
                       "Grade submissions that are symbolic links staying inside the folder (refused otherwise)");
     command->add_flag("--allow-brdf", options->allow_brdf,
                       "Accept materials from .brdf files (their shader code runs; off: such a submission scores 0)");
-    command->callback([options]() {
+    command->callback([options, command]() {
         // SIGINT, SIGTERM, SIGHUP: temporaries removed, images already graded kept,
         // no tables (they are written last), one line.
         const InterruptGuard interrupt([](int signal) {
             return error_line("interrupted by " + signal_name(signal) + ": grades.csv, grades.json and report.html not written");
         });
+        // Bare `m3055 grade`: what it takes.
+        if (options->assignment.empty() && options->merge.empty() && !options->check) {
+            std::cerr << command->help() << "\nm3055: grade: give ASSIGNMENT.json SUBMISSIONS/ --out DIR "
+                                            "(or --check ASSIGNMENT.json, or --merge DIR... --out DIR)\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
         // Usage errors (docs/grading.md: exit 2), before anything is read or written.
         try {
+            // A path that is not there at all is a slip of the command line, not a bad file.
+            for (const std::string* path : {&options->assignment, &options->submissions}) {
+                std::error_code error;
+                if (!path->empty() && !std::filesystem::exists(std::filesystem::symlink_status(*path, error)))
+                    throw std::invalid_argument("grade: " + text::quote_name(*path) + ": no such file or folder");
+            }
             if (options->check && (options->assignment.empty() || !options->submissions.empty() ||
                                    !options->merge.empty() || !options->out.empty()))
                 throw std::invalid_argument("grade --check takes ASSIGNMENT.json alone");

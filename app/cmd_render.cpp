@@ -18,7 +18,7 @@ namespace m3055 {
 
 void add_render_command(CLI::App& app) {
     struct Options {
-        std::string scene, out, raw, backend = "auto";
+        std::string scene, out, raw, backend = "auto", view_transform;
         std::vector<std::string> sets;
         double scene_timeout = 0;
     };
@@ -30,6 +30,11 @@ void add_render_command(CLI::App& app) {
     command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
         ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->add_option("--set", options->sets, "Override a scene value: path=value, e.g. objects[0].material.m=40");
+    command->add_option("--view-transform", options->view_transform,
+                        "What the display does before its levels: none (the scene's own, by default: the M3055 "
+                        "shows levels of the linear value) or srgb (sRGB's encoding, as other tools show colour); "
+                        "as the scene's display.view_transform")
+        ->check(CLI::IsMember({"none", "srgb"}));
     command->add_option("--scene-timeout", options->scene_timeout,
                         "Give up on a scene not drawn within SECONDS of starting to load it (default 0: no limit)")
         ->check(CLI::NonNegativeNumber);
@@ -52,7 +57,9 @@ void add_render_command(CLI::App& app) {
             if (!options->raw.empty()) files.add_output(0, "--raw", options->raw);
             if (const auto problems = files.check(); !problems.empty()) throw std::runtime_error(problems.begin()->second);
             const auto start = std::chrono::steady_clock::now();
-            const Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
+            Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
+            if (!options->view_transform.empty())
+                scene.display.view_transform = options->view_transform == "srgb" ? ViewTransform::srgb : ViewTransform::none;
             const auto loaded = std::chrono::steady_clock::now();
             Capture capture(make_headless_context(parse_backend(options->backend)));
             // The budget covers loading and drawing, not making the GL context.

@@ -8,6 +8,10 @@
 
 namespace m3055 {
 
+// The folder of an output folder (`grade --out`, `batch --out`) that holds
+// Mesa's shader cache while they run (gl/shader_cache.h: keep_shader_cache_in).
+inline constexpr const char* kShaderCacheFolder = ".shader-cache";
+
 // A shader cache on a full or unwritable disk is switched off first (Mesa
 // would die of SIGBUS writing it), with a one-line note on stderr; a SIGBUS
 // that still happens is reported (interrupt.h: report_bus_errors).

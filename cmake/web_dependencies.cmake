@@ -25,6 +25,16 @@ foreach(link nlohmann glm stb)
     file(CREATE_LINK "/usr/include/${link}" "${web_include}/${link}" SYMBOLIC)
   endif()
 endforeach()
+# tinyobjloader and tinygltf: single headers (the model_file library compiles
+# their implementations), linked one file each, as on the desktop.
+foreach(header tiny_obj_loader.h tiny_gltf.h)
+  if(NOT EXISTS "/usr/include/${header}")
+    message(FATAL_ERROR "the browser build needs /usr/include/${header} (libtinyobjloader-dev, libtinygltf-dev; scripts/setup installs them)")
+  endif()
+  if(NOT EXISTS "${web_include}/${header}")
+    file(CREATE_LINK "/usr/include/${header}" "${web_include}/${header}" SYMBOLIC)
+  endif()
+endforeach()
 # The GL enums and types of renderer/gl (Khronos' header, as on the desktop);
 # WebGL2 offers a subset of its entry points, which gl_api resolves per context.
 if(NOT EXISTS "${web_include}/GL/glcorearb.h")
@@ -33,6 +43,8 @@ endif()
 
 add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 target_include_directories(nlohmann_json::nlohmann_json INTERFACE "${web_include}")
+add_library(m3055::tiny_model_loaders INTERFACE IMPORTED)
+target_include_directories(m3055::tiny_model_loaders INTERFACE "${web_include}")
 add_library(glm::glm INTERFACE IMPORTED)
 target_include_directories(glm::glm INTERFACE "${web_include}")
 target_compile_definitions(glm::glm INTERFACE GLM_FORCE_PURE)  # no SSE intrinsics in WebAssembly

@@ -183,6 +183,7 @@ FieldChange display_change(const Display& before, const Display& after) {
     first.number("height", before.height, after.height);
     first.number("bits", before.bits, after.bits);
     first.flag("dither", before.dither, after.dither);
+    first.text("view_transform", to_string(before.view_transform), to_string(after.view_transform));
     return first.take();
 }
 

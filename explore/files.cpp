@@ -146,6 +146,8 @@ std::string next_screenshot_path(const Explorer& e) {
         std::snprintf(number, sizeof number, "-%04d", n);
         const fs::path png = dir / (stem + number + ".png"), json = dir / (stem + number + ".json");
         std::error_code ec;
+        const auto& taken = e.session.platform.name_taken;
+        if (taken && (taken(png.filename().string()) || taken(json.filename().string()))) continue;
         if (!fs::exists(png, ec) && !fs::exists(json, ec)) return png.string();
     }
 }

@@ -185,6 +185,7 @@ Display m3055_display(const Display& from) {
     d.width = 512;
     d.height = 320;
     d.bits = 5;
+    d.view_transform = ViewTransform::none;  // the paper's display: levels of the linear value
     return d;
 }
 

@@ -49,13 +49,28 @@ struct BrdfWatch {
 // page, a file the explorer writes (a saved scene, a screenshot) is also
 // offered as a download, and File > Open is the browser's file chooser: the
 // page sets these; the desktop window leaves them as they are.
+// The modifiers that, with a digit, load a figure preset (explore/keys.h).
+// In a browser Ctrl+1...9 switch tabs and Ctrl+0 resets the zoom, so the page
+// takes Ctrl+Alt+digit, as web editors do for their own number shortcuts.
+enum class FigureChord { ctrl, ctrl_alt };
+
 struct Platform {
     bool can_quit = true;
+    FigureChord figure_chord = FigureChord::ctrl;
     std::function<void(const std::string& path)> file_written;
     std::function<void()> pick_file;
     // Where saved files name a .brdf by a relative path: the page's work
     // folder, whose files leave as downloads side by side. "" (the desktop): absolute paths.
     std::string brdf_paths_relative_to;
+    // Whether a file name was already handed out, outside the folders (the
+    // page: a download of an earlier visit): the next screenshot skips it.
+    std::function<bool(const std::string& name)> name_taken;
+    // The platform shows the current error in a place of its own (the page's
+    // bar: explore/current_error.h); the side panel then has no error block.
+    bool error_line_outside = false;
+    // The .brdf files in use are re-read when they change on disk; a page's
+    // change only when picked again (Open...), which reloads them itself.
+    bool watch_files = true;
     // The GLSL check of a (re)loaded .brdf material: a GL compile by the
     // frame loop's context ("" when it compiles, or when there is no context).
     std::function<std::string(const Material&)> brdf_compile_check;

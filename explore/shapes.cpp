@@ -33,6 +33,13 @@ void set_shape(Object& object, Shape shape) {
             object.major_radius = 0.72 * size;
             object.minor_radius = 0.28 * size;
             break;
+        case Shape::mesh: object.size = 2.0 * size; break;  // only with a model file (kAllShapes has none)
+    }
+    if (shape != Shape::mesh) {
+        // A model file's triangles and group materials go with its shape; the first group's material stays.
+        object.file.clear();
+        object.model.reset();
+        object.groups.clear();
     }
 }
 

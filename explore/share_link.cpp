@@ -131,6 +131,10 @@ std::string share_token(const Scene& scene, const std::string& folder) {
     const json doc = scene_to_json(scene, PathWriting{folder});
     json files = json::object();
     for (const json& object : doc.value("objects", json::array())) {
+        if (object.contains("file"))  // a mesh from a model file (and what that names): not carried
+            throw std::runtime_error("share link: the scene's mesh from the model file " +
+                                     object["file"].get<std::string>() +
+                                     " cannot travel in a link; share the scene and its model files instead");
         const json& material = object.value("material", json::object());
         if (material.value("model", "") != "brdf") continue;
         const std::string name = material.value("file", "");

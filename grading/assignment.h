@@ -8,15 +8,23 @@
 
 #include "grading/level_compare.h"
 
+#include <nlohmann/json.hpp>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace m3055::grading {
 
+// Every problem of an assignment file, one line each ("FILE: field: problem");
+// what() is the first, with a count of the others.
 class AssignmentError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit AssignmentError(std::vector<std::string> lines);
+    const std::vector<std::string>& lines() const { return lines_; }
+
+private:
+    std::vector<std::string> lines_;
 };
 
 // One rule of the vocabulary (docs/grading.md#rules). Fields unused by a kind stay at their defaults.
@@ -28,6 +36,7 @@ enum class RuleKind {
     eq14,         // {"rule": "eq14", "object": 0, "within_percent": 1}  (scene/presets.h: highlight_peak)
     range,        // {"rule": "range", "path": "objects[0].material.m", "min": 5, "max": 20}
     temperature,  // {"rule": "temperature", "light": "key", "min": 3000, "max": 3400}  (kelvin)
+    equals,       // {"rule": "equals", "path": "objects[0].material.conductor", "value": "gold"}
 };
 const char* to_string(RuleKind kind);
 
@@ -35,10 +44,11 @@ struct Rule {
     RuleKind kind = RuleKind::model;
     std::string label;   // "rules[2] (key_to_fill)", or the rule's own "name"
     double points = 0;
-    std::string text;    // model: the model's name; warmer: the warmer light; range: the path; temperature: the light
+    std::string text;    // model: the model's name; warmer: the warmer light; range, equals: the path; temperature: the light
     std::string other;   // warmer: the other light
     int object = -1;     // model, eq14: the object's index (-1: every object, model only)
     double min = 0, max = 0;  // key_to_fill, range, temperature (inclusive); light_count: min = max = N; eq14: max = percent
+    nlohmann::json value;     // equals: the string or boolean the value at the path must be
 };
 
 struct Assignment {
@@ -61,7 +71,23 @@ struct Assignment {
     double max_score() const;
 };
 
-// Reads and validates ASSIGNMENT.json (io/input_file.h: bounded, regular files only).
+// An assignment as far as it could be read, and every problem found on the
+// way (structure and ranges), one line each, in the order read, each once.
+struct AssignmentRead {
+    Assignment assignment;
+    std::vector<std::string> errors;
+    // The fields the errors are about ("image.fail_levels", "rules[2].object",
+    // "rules[3]" for a rule that is not an object or of no known kind; "" for
+    // a file that could not be read or parsed).
+    std::vector<std::string> bad_fields;
+    // Whether an error is about `field` or a field inside it ("rules[2]": any of that rule's).
+    bool has_error_at(const std::string& field) const;
+};
+AssignmentRead read_assignment(const std::string& path);
+AssignmentRead read_assignment_json(const std::string& text, const std::string& path);
+
+// Reads and validates ASSIGNMENT.json (io/input_file.h: bounded, regular files
+// only); throws AssignmentError with every problem.
 Assignment load_assignment(const std::string& path);
 Assignment assignment_from_json(const std::string& text, const std::string& path);
 

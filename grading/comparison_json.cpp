@@ -27,6 +27,7 @@ nlohmann::json to_json(const Comparison& c) {
         {"fail", threshold_json(c.thresholds.fail)},
         {"over_fail", c.over_fail},
     };
+    if (!c.region.empty()) out["region"] = c.region;
     if (c.thresholds.warn) {
         out["warn"] = threshold_json(*c.thresholds.warn);
         out["over_warn"] = c.over_warn;

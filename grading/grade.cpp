@@ -122,11 +122,17 @@ Grade grade_scene(const Assignment& assignment, const Scene& scene, const LevelI
         Thresholds tolerance;
         tolerance.fail = assignment.image_tolerance.fail;
         const bool whole = std::count(reference.region.begin(), reference.region.end(), 1) == 0;
-        grade.comparison = whole || reference.width != render.width ||
-                                   reference.height != render.height || reference.bits != render.bits
-                               ? compare_levels(reference, render, tolerance)
-                               : compare_levels(in_region(reference, reference.region), in_region(render, reference.region),
-                                                tolerance);
+        const bool region = !whole && reference.width == render.width && reference.height == render.height &&
+                            reference.bits == render.bits;
+        grade.comparison = region ? compare_levels(in_region(reference, reference.region),
+                                                   in_region(render, reference.region), tolerance)
+                                  : compare_levels(reference, render, tolerance);
+        if (region) {
+            // The region's pixels were compared as one row: the display's own size is the one to report.
+            grade.comparison->width = reference.width;
+            grade.comparison->height = reference.height;
+            grade.comparison->region = "objects";
+        }
         grade.checks.push_back(image_check(assignment, *grade.comparison, nonfinite));
     } catch (const CompareError& e) {
         // A student's display of another size or depth is their mistake, not an error of the run.

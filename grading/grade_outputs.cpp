@@ -43,6 +43,12 @@ json assignment_json(const Assignment& a) {
             {"reference_image", "reference.png"}};
 }
 
+std::string result_of(const json& s) {
+    if (s.value("missing", false)) return "missing";
+    if (!s["broken"].get<std::string>().empty()) return "refused";
+    return s["passed"].get<bool>() ? "pass" : "fail";
+}
+
 json grade_json(const Grade& g, const std::string& image_stem) {
     json checks = json::array();
     for (const Check& c : g.checks)
@@ -50,6 +56,7 @@ json grade_json(const Grade& g, const std::string& image_stem) {
     json out = {{"student", g.student}, {"score", g.score},   {"max", g.max},       {"passed", g.passed},
                 {"reasons", g.reasons()}, {"broken", g.broken}, {"checks", checks}, {"screenshot", g.screenshot},
                 {"missing", g.missing},   {"notes", g.notes}};
+    out["result"] = result_of(out);
     out["comparison"] = g.comparison ? to_json(*g.comparison) : json();
     out["images"] =
         image_stem.empty() ? json() : json{{"render", "students/" + image_stem + ".png"}, {"diff", "diffs/" + image_stem + ".png"}};
@@ -64,7 +71,7 @@ std::string grades_csv(const GradeReport& report) {
             for (const json& note : s["notes"]) notes += (notes.empty() ? "" : " | ") + note.get<std::string>();
         out += csv_field(s["student"].get<std::string>()) + "," + number_text(s["score"].get<double>()) + "," +
                number_text(s["max"].get<double>()) + "," +
-               (s.value("missing", false) ? "missing" : s["passed"].get<bool>() ? "pass" : "fail") + "," +
+               result_of(s) + "," +
                csv_field(joined_reasons(s)) + "," + csv_field(notes) + "\n";
     }
     return out;

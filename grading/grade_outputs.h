@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,14 +31,28 @@ nlohmann::json assignment_json(const Assignment& assignment);
 // were written (submissions.h: output_stem), or "" when none were.
 nlohmann::json grade_json(const Grade& grade, const std::string& image_stem);
 
+// What became of a student (a grade_json), one word meaning one thing in every
+// output: "pass" and "fail" (graded: at least the pass score, or below it),
+// "refused" (not graded: the submission could not be, and its reason says why;
+// 0 points), "missing" (on the roster, nothing submitted).
+std::string result_of(const nlohmann::json& student);
+
 std::string grades_csv(const GradeReport& report);
 std::string grades_json(const GradeReport& report);
 std::string gradescope_json(const GradeReport& report);
-// One self-contained page: every image inlined as a data: URI (read through
-// `image_bytes(file name)`, empty when absent), no network, no framework; a
-// few lines of inline script sort the table by a column; readable printed.
-std::string report_html(const GradeReport& report,
-                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes);
+// The size of an image of the output folder (its PNG header), by its name
+// relative to the folder ("students/alice.png"), or nullopt when it is not there.
+struct ImageSize {
+    int width = 0, height = 0;
+};
+using ImageSizes = std::function<std::optional<ImageSize>(const std::string&)>;
+
+// The class's page, beside its images: each student's render and difference
+// image linked (students/, diffs/, reference.png), loaded lazily as they
+// scroll into view, their sizes given (`image_size`) so the page's layout is
+// known before any is; no network, no framework; a few lines of inline
+// script sort, filter and search the table; readable printed.
+std::string report_html(const GradeReport& report, const ImageSizes& image_size);
 
 // OUT/feedback/NAME.html: one self-contained page to hand back to one
 // student: their render, the reference, the difference, the score and every

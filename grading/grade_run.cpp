@@ -11,6 +11,7 @@
 #include "scene/load.h"
 
 #include <algorithm>
+#include <cstring>
 #include <optional>
 #include <chrono>
 #include <deque>
@@ -36,7 +37,25 @@ constexpr const char* kTables[] = {"grades.csv", "grades.json", "report.html"};
 // with an output of the run or with another student's file.
 constexpr const char* kStudentFolders[] = {"students", "diffs", "feedback"};
 
+// Refuses an --out folder that holds what m3055 grade did not write: a run
+// replaces its own files (grade_run.h: kOutputMarker) and nothing else, but a
+// teacher's folder of other work would get grades.csv and students/ mixed in.
+void check_out_dir(const std::string& out_dir) {
+    std::error_code error;
+    if (!fs::exists(fs::symlink_status(out_dir, error))) return;
+    if (!fs::is_directory(out_dir, error))
+        throw std::runtime_error(text::quote_name(out_dir) + ": --out: not a folder");
+    if (fs::exists(fs::symlink_status(fs::path(out_dir) / kOutputMarker, error))) return;
+    const fs::directory_iterator first(out_dir, error);
+    if (error)
+        throw std::runtime_error(text::quote_name(out_dir) + ": --out: cannot read the folder: " + error.message());
+    if (first != fs::directory_iterator())
+        throw std::runtime_error(text::quote_name(out_dir) + ": --out: not empty, and not written by m3055 grade (no " +
+                                 kOutputMarker + " in it): grade into a new or empty folder");
+}
+
 void prepare_out_dir(const std::string& out_dir) {
+    check_out_dir(out_dir);
     std::error_code error;
     fs::create_directories(out_dir, error);
     if (!fs::is_directory(out_dir, error))
@@ -48,12 +67,27 @@ void prepare_out_dir(const std::string& out_dir) {
             throw std::runtime_error(text::quote_name(join_path(out_dir, folder)) +
                                      ": --out: cannot make the output folder: " + (error ? error.message() : "not a folder"));
     }
+    if (!fs::exists(fs::path(out_dir) / kOutputMarker, error))
+        write_file_atomic(join_path(out_dir, kOutputMarker), kOutputMarkerText, std::strlen(kOutputMarkerText));
     // Tables of an earlier run go first: after a run that was stopped there
     // are none, rather than old ones beside new images.
     for (const char* table : kTables) fs::remove(fs::path(out_dir) / table, error);
 }
 
 std::string join(const std::string& dir, const std::string& name) { return join_path(dir, name); }
+
+// Whether `path` (which need not exist) is `folder` or inside it, after every link.
+bool inside(const std::string& path, const std::string& folder) {
+    const auto parts = [](const std::string& p) {
+        std::error_code error;
+        std::vector<std::string> out;
+        for (const fs::path& part : fs::weakly_canonical(p, error))
+            if (!part.empty()) out.push_back(part.string());  // "subs/" ends in an empty part
+        return error ? std::vector<std::string>{} : out;
+    };
+    const std::vector<std::string> base = parts(folder), target = parts(path);
+    return !base.empty() && target.size() >= base.size() && std::equal(base.begin(), base.end(), target.begin());
+}
 
 // The folder holds one run's output: the students' files of an earlier run
 // whose students are not in this one go (only .png files in students/ and
@@ -202,13 +236,29 @@ void write_feedback(const std::string& out_dir, const GradeReport& report,
     for (auto& writer : writers) writer.get();
 }
 
+// A PNG's width and height from its header (the IHDR chunk, bytes 16 to 23),
+// without reading the rest; nullopt when the file is not there or not a PNG.
+std::optional<ImageSize> png_size(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char header[24] = {};
+    if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return std::nullopt;
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (std::memcmp(header, signature, 8) != 0 || std::memcmp(header + 12, "IHDR", 4) != 0) return std::nullopt;
+    const auto big_endian = [&](int at) {
+        return int((std::uint32_t(header[at]) << 24) | (std::uint32_t(header[at + 1]) << 16) |
+                   (std::uint32_t(header[at + 2]) << 8) | std::uint32_t(header[at + 3]));
+    };
+    return ImageSize{big_endian(16), big_endian(20)};
+}
+
 void write_tables(const std::string& out_dir, const GradeReport& report, const std::string& gradescope,
                   const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
     write_feedback(out_dir, report, image_bytes);
+    const ImageSizes image_size = [&](const std::string& name) { return png_size(join(out_dir, name)); };
     const auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
     std::vector<FileContents> files = {{join(out_dir, "grades.csv"), bytes(grades_csv(report))},
                                        {join(out_dir, "grades.json"), bytes(grades_json(report))},
-                                       {join(out_dir, "report.html"), bytes(report_html(report, image_bytes))}};
+                                       {join(out_dir, "report.html"), bytes(report_html(report, image_size))}};
     if (!gradescope.empty()) files.push_back({gradescope, bytes(gradescope_json(report))});
     write_files_atomic(files);
 }
@@ -227,18 +277,17 @@ GradeReport run_grading(const Assignment& assignment, const std::string& submiss
                                       : (fs::path(submissions_dir).parent_path().empty()
                                              ? std::string(".")
                                              : fs::path(submissions_dir).parent_path().string());
-    if (fs::equivalent(submissions_dir, options.out_dir, error))
-        throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: is the submissions folder");
+    // Grades inside the class folder would be a student's folder to the next run.
+    if (fs::is_directory(submissions_dir, error) && inside(options.out_dir, submissions_dir))
+        throw std::runtime_error(text::quote_name(options.out_dir) + ": --out: " +
+                                 (fs::equivalent(submissions_dir, options.out_dir, error)
+                                      ? "is the submissions folder " + text::quote_name(submissions_dir)
+                                      : "is inside the submissions folder " + text::quote_name(submissions_dir) +
+                                            ", where the next run would take it for a student's") +
+                                 ": write the grades elsewhere");
+    check_out_dir(options.out_dir);
     ClassFolder folder = read_class(submissions_dir, options.class_options);
-    std::vector<Submission>& all = folder.submissions;
-    // An --out folder inside the submissions folder (subs/grades/) is not a student.
-    all.erase(std::remove_if(all.begin(), all.end(),
-                             [&](const Submission& s) {
-                                 std::error_code ignored;
-                                 return fs::equivalent(fs::path(submissions_dir) / s.name, options.out_dir, ignored);
-                             }),
-              all.end());
-    const std::vector<Submission> mine = take_shard(all, options.shard);
+    const std::vector<Submission> mine = take_shard(folder.submissions, options.shard);
     prepare_out_dir(options.out_dir);
     // The teacher's reference and the students' scenes: a .brdf file is code.
     const LoadContext scenes = LoadContext::for_class(options.allow_brdf);

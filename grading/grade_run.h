@@ -17,6 +17,13 @@
 
 namespace m3055::grading {
 
+// The file every --out folder of m3055 grade holds: a run writes into an
+// empty or new folder, or one with this file (an earlier run's), and refuses
+// any other, so that it never mixes its files into a folder of other work.
+inline constexpr const char* kOutputMarker = ".m3055-grade";
+inline constexpr const char* kOutputMarkerText =
+    "This folder was written by m3055 grade (docs/grading.md#outputs): a later run may replace its files.\n";
+
 struct GradeRunOptions {
     std::string out_dir;
     Shard shard;                                // 1/1: every submission

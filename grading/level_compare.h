@@ -67,6 +67,9 @@ struct LinearStats {
 
 struct Comparison {
     int width = 0, height = 0, bits = 5;
+    // "": every pixel of the width x height compared; "objects": only the
+    // pixels the reference's objects cover (`pixels` of them).
+    std::string region;
     std::uint64_t pixels = 0;
     std::uint64_t same_pixels = 0;  // all three channels on the same level
     // histogram[c][k]: pixels whose channel c is k levels off (k = 0 .. 2^bits - 1).

@@ -1,9 +1,11 @@
 // report.html of `m3055 grade` (grade_outputs.h): one page a teacher opens
-// from disk or prints. Images are data: URIs so the page can be mailed or
-// uploaded alone; pixelated scaling keeps the display's dots visible.
+// from disk or prints, beside the images it shows (students/, diffs/,
+// reference.png): a class of 1000 is a page of 1.5 MB, not one of 55 MB with
+// every image inlined. Pixelated scaling keeps the display's dots visible.
 #include "grading/grade_outputs.h"
 
 #include "grading/diff_image.h"
+#include "grading/page_parts.h"
 #include "grading/score_histogram.h"
 
 #include <algorithm>
@@ -16,65 +18,17 @@ namespace m3055::grading {
 namespace {
 
 using nlohmann::json;
-
-std::string escape_html(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
-std::string score_text(double value) {
-    char out[64];
-    std::snprintf(out, sizeof out, "%.6g", value);
-    return out;
-}
-
-constexpr const char* kStyle = R"(<style>
-body{font-family:sans-serif;margin:1em;color:#111}
-table{border-collapse:collapse;width:100%}
-th,td{border:1px solid #999;padding:4px 6px;vertical-align:top;text-align:left}
-th{background:#eee;cursor:pointer}
-td.num{text-align:right;white-space:nowrap}
-td.name{overflow-wrap:anywhere;word-break:break-word;max-width:12em;min-width:6em}
-td.check{white-space:nowrap;text-align:center}td.check.ok{color:#060}td.check.no{color:#a00;background:#fdecec}
-#summary table{width:auto}#summary td,#summary th{cursor:auto}
-#controls{margin:0.8em 0}#controls input{width:18em}
-tr.hidden{display:none}
-#grades img{width:112px}#grades{font-size:92%}#grades td,#grades th{padding:3px 4px}
-.swatch{display:inline-block;width:0.8em;height:0.8em;border:1px solid #666;vertical-align:middle;margin:0 1px 0 4px}
-#grades th,td.check{font-size:85%}#grades th{overflow-wrap:normal;word-break:normal}#grades th:first-child{min-width:6em}
-#grades td.reasons{min-width:11em}li.note{max-height:3.8em;overflow-y:auto}
-img{width:256px;image-rendering:pixelated;display:block}
-.pass{color:#060;font-weight:bold}.fail{color:#a00;font-weight:bold}.note{color:#555;font-style:italic}
-ul{margin:0;padding-left:1.2em}
-#top{display:flex;flex-wrap:wrap;gap:1.5em;align-items:flex-start}#top figcaption{font-size:90%;color:#444}#top figure{margin:0}
-#histogram svg{display:block;max-width:100%;height:auto}
-#grades img,.shots img{cursor:zoom-in}
-#viewer{position:fixed;inset:0;background:rgba(20,20,20,0.92);color:#fff;display:flex;flex-direction:column;align-items:center;justify-content:center;z-index:10}
-#viewer[hidden]{display:none}
-#viewer img{width:auto;image-rendering:pixelated;cursor:zoom-out;box-shadow:0 0 0 1px #888}
-#viewer .bar{margin:0.6em;display:flex;gap:0.5em;align-items:center;flex-wrap:wrap;justify-content:center}
-#viewer button{font-size:100%;padding:0.3em 0.8em;cursor:pointer}#viewer button[aria-pressed=true]{background:#ffd54a;font-weight:bold}
-#viewer-title{font-weight:bold;overflow-wrap:anywhere;max-width:90vw}
-@media print{#viewer{display:none}th{cursor:auto}tr{break-inside:avoid}img{width:200px}body{margin:0}}
-</style>
-)";
+using page::escape_html;
+using page::score_text;
+using page::kStyle;
+using page::kViewer;
 
 // Click a header to sort by that column; numbers numerically (data-sort).
-// The filter (all / failed / refused / missing) and the search box hide rows.
+// The filter (all / not passed / fail / refused / missing) and the search box hide rows.
 constexpr const char* kScript = R"(<script>
 function m3055filter(){var f=document.getElementById('filter').value,q=document.getElementById('search').value.toLowerCase();
 [].forEach.call(document.querySelectorAll('#grades tbody tr'),function(r){
-var ok=(f==='all'||r.dataset.status===f||(f==='failed'&&r.dataset.status!=='pass'))&&r.cells[0].textContent.toLowerCase().indexOf(q)>=0;
+var ok=(f==='all'||r.dataset.status===f||(f==='not-passed'&&r.dataset.status!=='pass'))&&r.cells[0].textContent.toLowerCase().indexOf(q)>=0;
 r.classList.toggle('hidden',!ok);});
 var n=document.querySelectorAll('#grades tbody tr:not(.hidden)').length;document.getElementById('shown').textContent=n+(n===1?' row':' rows');}
 document.getElementById('filter').addEventListener('change',m3055filter);
@@ -89,70 +43,33 @@ rows.forEach(function(r){body.appendChild(r);});});});
 </script>
 )";
 
-// The magnifier of both pages: a click on a render (or on the reference or a
-// difference) shows it at the largest whole magnification that fits the
-// window, nearest-neighbour (image-rendering: pixelated: every dot of the
-// M3055's 512 x 320 display a square), and the buttons or keys 1 2 3 (r f d,
-// arrows, space) flip between that student's render, the reference and the
-// difference in place; Esc or a click on the picture closes it. The images
-// are the page's own (data: URIs), so the page stays one file.
-constexpr const char* kViewer = R"(<div id="viewer" hidden role="dialog" aria-label="magnified view">
-<div id="viewer-title"></div>
-<div class="bar"><button type="button" data-kind="render">1 / r: render</button><button type="button" data-kind="reference">2 / f: reference</button><button type="button" data-kind="diff">3 / d: difference</button><span id="viewer-scale"></span><button type="button" id="viewer-close">Esc: close</button></div>
-<img id="viewer-img" alt="">
-</div>
-<script>
-(function(){
-var v=document.getElementById('viewer'),img=document.getElementById('viewer-img'),shots={},kind='render',order=['render','reference','diff'];
-var names={render:'render',reference:'the reference',diff:'levels off the reference'},title='';
-function ref(){var r=document.getElementById('reference-image');return r?r.src:'';}
-function fit(){var w=img.naturalWidth,h=img.naturalHeight;if(!w||!h)return;
-var used=document.getElementById('viewer-title').offsetHeight+v.querySelector('.bar').offsetHeight+32;
-var k=Math.max(1,Math.floor(Math.min((window.innerWidth-32)/w,(window.innerHeight-used)/h)));
-img.style.width=(w*k)+'px';img.style.height=(h*k)+'px';document.getElementById('viewer-scale').textContent='\u00d7'+k;}
-function show(k){if(!shots[k])return;kind=k;img.onload=fit;img.src=shots[k];img.alt=title+': '+names[k];
-document.getElementById('viewer-title').textContent=title+' \u2014 '+names[k];
-[].forEach.call(v.querySelectorAll('button[data-kind]'),function(b){b.setAttribute('aria-pressed',b.dataset.kind===k);b.disabled=!shots[b.dataset.kind];});
-if(img.complete)fit();}
-function open(row,k){shots={reference:ref()};title=row?row.dataset.student:'';
-if(row)[].forEach.call(row.querySelectorAll('img[data-view]'),function(i){shots[i.dataset.view]=i.src;});
-v.hidden=false;show(shots[k]?k:'reference');}
-function close(){v.hidden=true;img.removeAttribute('src');}
-window.m3055view=open;
-document.addEventListener('click',function(e){var t=e.target;
-if(t.matches&&t.matches('img[data-view]')&&!v.contains(t)){var row=t.closest('[data-student]');open(row,t.dataset.view);}
-else if(t===img||t.id==='viewer-close'||t===v)close();
-else if(t.dataset&&t.dataset.kind&&v.contains(t))show(t.dataset.kind);});
-document.addEventListener('keydown',function(e){if(v.hidden)return;var k=e.key,i=order.indexOf(kind);
-var to={'1':'render','r':'render','2':'reference','f':'reference','3':'diff','d':'diff'}[k];
-if(k==='Escape')close();else if(to)show(to);
-else if(k==='ArrowRight'||k===' '){do{i=(i+1)%3;}while(!shots[order[i]]);show(order[i]);}
-else if(k==='ArrowLeft'){do{i=(i+2)%3;}while(!shots[order[i]]);show(order[i]);}else return;e.preventDefault();});
-window.addEventListener('resize',function(){if(!v.hidden)fit();});
-})();
-</script>
-)";
-
-// `view`: the image's kind for the magnifier (render, reference, diff).
-std::string image_cell(const std::vector<std::uint8_t>& png, const std::string& alt, const char* view) {
-    if (png.empty()) return "<td>&mdash;</td>";
-    return "<td><img alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" title=\"click to magnify\" "
-           "src=\"data:image/png;base64," + base64(png) + "\"></td>";
+// An <img> of the output folder's file `name`: loaded when it nears the view
+// (`lazy`), its size known before (the row's height does not jump), for the
+// magnifier as `view` (render, reference, diff); "" when it is not there.
+std::string linked_image(const std::string& name, const ImageSizes& image_size, const std::string& alt,
+                         const char* view, bool lazy, const std::string& attributes = "") {
+    const std::optional<ImageSize> size = name.empty() ? std::nullopt : image_size(name);
+    if (!size) return "";
+    return "<img " + attributes + "alt=\"" + escape_html(alt) + "\" data-view=\"" + view + "\" width=\"" +
+           std::to_string(size->width) + "\" height=\"" +
+           std::to_string(size->height) + "\"" + (lazy ? " loading=\"lazy\" decoding=\"async\"" : "") + " src=\"" +
+           escape_html(page::url_path(name)) + "\">";
 }
 
-std::string student_row(const json& s, const std::vector<std::string>& labels,
-                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+std::string image_cell(const std::string& name, const ImageSizes& image_size, const std::string& alt, const char* view) {
+    const std::string image = linked_image(name, image_size, alt, view, true);
+    return image.empty() ? "<td>&mdash;</td>" : "<td>" + image + "</td>";
+}
+
+std::string student_row(const json& s, const std::vector<std::string>& labels, const ImageSizes& image_size) {
     const std::string name = s["student"].get<std::string>();
-    const bool passed = s["passed"].get<bool>();
     const double score = s["score"].get<double>();
-    const bool missing = s.value("missing", false), refused = !missing && !s["broken"].get<std::string>().empty();
-    const std::string status = missing ? "missing" : refused ? "refused" : passed ? "pass" : "fail";
+    const std::string status = result_of(s);
     std::string row = "<tr data-status=\"" + status + "\" data-student=\"" + escape_html(name) + "\"><td class=\"name\" data-sort=\"" + escape_html(name) + "\">" +
                       escape_html(name) + "</td>";
     row += "<td class=\"num\" data-sort=\"" + score_text(score) + "\">" + score_text(score) + " / " +
            score_text(s["max"].get<double>()) + "</td>";
-    const char* result = s.value("missing", false) ? "missing" : passed ? "pass" : "fail";
-    row += std::string("<td data-sort=\"") + result + "\" class=\"" + (passed ? "pass" : "fail") + "\">" + result + "</td>";
+    row += "<td data-sort=\"" + status + "\" class=\"result " + status + "\">" + status + "</td>";
     // One column a check: passed or not, and the points.
     for (const std::string& label : labels) {
         const json* found = nullptr;
@@ -168,12 +85,9 @@ std::string student_row(const json& s, const std::vector<std::string>& labels,
                escape_html((*found)["reason"].get<std::string>()) + "\">" + (ok ? "&#10004; " : "&#10008; ") +
                score_text((*found)["earned"].get<double>()) + "/" + score_text((*found)["points"].get<double>()) + "</td>";
     }
-    std::vector<std::uint8_t> render, diff;
-    if (!s["images"].is_null()) {
-        render = image_bytes(s["images"]["render"].get<std::string>());
-        diff = image_bytes(s["images"]["diff"].get<std::string>());
-    }
-    row += image_cell(render, name + ": render", "render") + image_cell(diff, name + ": difference", "diff");
+    const bool images = s["images"].is_object();
+    row += image_cell(images ? s["images"]["render"].get<std::string>() : "", image_size, name + ": render", "render") +
+           image_cell(images ? s["images"]["diff"].get<std::string>() : "", image_size, name + ": difference", "diff");
     row += "<td class=\"reasons\" data-sort=\"\"><ul>";
     for (const json& reason : s["reasons"]) row += "<li>" + escape_html(reason.get<std::string>()) + "</li>";
     if (s["reasons"].empty()) row += "<li>all checks passed</li>";
@@ -202,7 +116,7 @@ std::string percent_text(std::size_t part, std::size_t whole) {
 
 // The class at a glance: counts, mean, median, pass rate, each check's pass rate.
 std::string class_summary(const GradeReport& report, const std::vector<std::string>& labels, const std::string& reference_figure) {
-    std::size_t graded = 0, refused = 0, missing = 0, passed = 0;
+    std::size_t graded = 0, refused = 0, missing = 0, passed = 0, failed = 0;
     std::vector<double> scores;
     std::map<std::string, std::size_t> check_passed, check_total;
     for (const json& s : report.students) {
@@ -217,6 +131,7 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
             continue;
         }
         ++graded;
+        failed += s["passed"].get<bool>() ? 0 : 1;
         for (const json& c : s["checks"]) {
             ++check_total[c["label"].get<std::string>()];
             check_passed[c["label"].get<std::string>()] += c["ok"].get<bool>() ? 1 : 0;
@@ -238,7 +153,8 @@ std::string class_summary(const GradeReport& report, const std::vector<std::stri
         out += "<tr><th>" + name + "</th><td class=\"num\" id=\"" + id + "\">" + value + "</td></tr>\n";
     };
     row("count-graded", "graded", std::to_string(graded));
-    row("count-refused", "refused (broken submissions, 0 points)", std::to_string(refused));
+    row("count-failed", "fail (graded, below the pass score)", std::to_string(failed));
+    row("count-refused", "refused (not graded: the submission could not be; 0 points)", std::to_string(refused));
     row("count-missing", "missing (on the roster, no submission)", std::to_string(missing));
     row("mean", "mean score (of the submissions)", scores.empty() ? "&mdash;" : score_text(mean));
     row("median", "median score", scores.empty() ? "&mdash;" : score_text(median));
@@ -307,34 +223,31 @@ std::string folder_sections(const json& folder) {
 
 }  // namespace
 
-std::string report_html(const GradeReport& report,
-                        const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
+std::string report_html(const GradeReport& report, const ImageSizes& image_size) {
     const json& a = report.assignment;
     const std::string title = a["title"].get<std::string>();
-    std::size_t passed = 0, missing = 0;
-    for (const json& s : report.students) {
-        passed += s["passed"].get<bool>() ? 1 : 0;
-        missing += s.value("missing", false) ? 1 : 0;
-    }
-    const std::size_t submitted = report.students.size() - missing;
+    std::map<std::string, std::size_t> results;  // pass, fail, refused, missing
+    for (const json& s : report.students) ++results[result_of(s)];
+    const std::size_t missing = results["missing"], submitted = report.students.size() - missing;
     std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" +
                        escape_html(title) + ": grades</title>\n" + kStyle + "</head><body>\n";
     page += "<h1>" + escape_html(title) + "</h1>\n<p>" + std::to_string(submitted) +
-            (submitted == 1 ? " submission, " : " submissions, ") + std::to_string(passed) + " passed (at least " +
-            score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) + " points)" +
+            (submitted == 1 ? " submission: " : " submissions: ") + std::to_string(results["pass"]) +
+            " passed (at least " + score_text(a["pass"].get<double>()) + " of " + score_text(a["max"].get<double>()) +
+            " points), " + std::to_string(results["fail"]) + " failed, " + std::to_string(results["refused"]) +
+            " refused (not graded)" +
             (missing ? "; " + std::to_string(missing) + " on the roster with no submission" : std::string()) +
             ". Click a column's header to sort, a picture to magnify it.</p>\n";
-    const std::vector<std::uint8_t> reference = image_bytes(a["reference_image"].get<std::string>());
+    const std::string reference = linked_image(a["reference_image"].get<std::string>(), image_size, "reference",
+                                               "reference", false, "id=\"reference-image\" ");
     const std::string reference_figure =
-        reference.empty() ? std::string()
-                          : "<figure><img id=\"reference-image\" data-view=\"reference\" title=\"click to magnify\" "
-                            "alt=\"reference\" src=\"data:image/png;base64," + base64(reference) +
-                                "\"><figcaption>The reference</figcaption></figure>\n";
+        reference.empty() ? std::string() : "<figure>" + reference + "<figcaption>The reference</figcaption></figure>\n";
     const std::vector<std::string> labels = check_labels(report);
     page += class_summary(report, labels, reference_figure);
     page += folder_sections(report.folder);
     page += "<div id=\"controls\"><label>Show <select id=\"filter\"><option value=\"all\">all</option>"
-            "<option value=\"failed\">failed</option><option value=\"refused\">refused</option>"
+            "<option value=\"not-passed\">not passed</option><option value=\"fail\">fail</option>"
+            "<option value=\"refused\">refused</option>"
             "<option value=\"missing\">missing</option></select></label> "
             "<label>Search <input id=\"search\" type=\"search\" placeholder=\"student name\"></label> "
             "<span id=\"shown\"></span></div>\n";
@@ -342,8 +255,9 @@ std::string report_html(const GradeReport& report,
             "<th data-col=\"2\">Result</th>";
     for (std::size_t i = 0; i < labels.size(); ++i)
         page += "<th data-col=\"" + std::to_string(3 + i) + "\">" + escape_html(labels[i]) + "</th>";
-    page += "<th>Render</th><th>Levels off the reference<br>" + html_legend() + "</th><th>Reasons</th></tr></thead><tbody>\n";
-    for (const json& s : report.students) page += student_row(s, labels, image_bytes);
+    page += "<th>Render (click to magnify)</th><th>Levels off the reference<br>" + html_legend() +
+            "</th><th>Reasons</th></tr></thead><tbody>\n";
+    for (const json& s : report.students) page += student_row(s, labels, image_size);
     page += "</tbody></table>\n";
     page += kScript;
     page += kViewer;
@@ -352,50 +266,3 @@ std::string report_html(const GradeReport& report,
 
 }  // namespace m3055::grading
 
-namespace m3055::grading {
-
-std::string feedback_html(const GradeReport& report, const nlohmann::json& s,
-                          const std::function<std::vector<std::uint8_t>(const std::string&)>& image_bytes) {
-    using nlohmann::json;
-    const json& a = report.assignment;
-    const std::string name = s["student"].get<std::string>();
-    const std::string title = a["title"].get<std::string>();
-    const bool missing = s.value("missing", false);
-    std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape_html(title) +
-                       ": " + escape_html(name) + "</title>\n" + kStyle + "</head><body>\n";
-    page += "<h1>" + escape_html(title) + "</h1>\n<h2 id=\"student\">" + escape_html(name) + "</h2>\n";
-    page += std::string("<p id=\"score\" class=\"") + (s["passed"].get<bool>() ? "pass" : "fail") + "\">" +
-            score_text(s["score"].get<double>()) + " of " + score_text(s["max"].get<double>()) + " points: " +
-            (missing ? "no submission" : s["passed"].get<bool>() ? "passed" : "not passed") + " (" +
-            score_text(a["pass"].get<double>()) + " to pass)</p>\n";
-    page += "<p>Click a picture to magnify it and flip between your render, the reference and the difference.</p>\n";
-    page += "<table class=\"shots\" data-student=\"" + escape_html(name) +
-            "\"><thead><tr><th>Your render</th><th>The reference</th><th>Levels off the reference</th></tr></thead>"
-            "<tbody><tr>";
-    std::vector<std::uint8_t> render, diff;
-    if (s["images"].is_object()) {
-        render = image_bytes(s["images"]["render"].get<std::string>());
-        diff = image_bytes(s["images"]["diff"].get<std::string>());
-    }
-    std::string reference = image_cell(image_bytes(a["reference_image"].get<std::string>()), "the reference", "reference");
-    if (reference.rfind("<td><img ", 0) == 0) reference.insert(9, "id=\"reference-image\" ");
-    page += image_cell(render, "your render", "render") + reference + image_cell(diff, "levels off the reference", "diff");
-    page += "</tr></tbody></table>\n<h3>Checks</h3>\n<ul id=\"checks\">\n";
-    if (!s["broken"].get<std::string>().empty())
-        page += "<li class=\"fail\">" + escape_html(s["broken"].get<std::string>()) + "</li>\n";
-    for (const json& c : s["checks"]) {
-        // A reason starts with its check's name ("image: 86.89 % ..."): shown once.
-        const std::string label = c["label"].get<std::string>();
-        std::string reason = c["reason"].get<std::string>();
-        if (reason.rfind(label + ": ", 0) == 0) reason.erase(0, label.size() + 2);
-        page += std::string("<li class=\"") + (c["ok"].get<bool>() ? "pass" : "fail") + "\">" +
-                (c["ok"].get<bool>() ? "&#10004; " : "&#10008; ") + escape_html(label) + ": " +
-                score_text(c["earned"].get<double>()) + " of " + score_text(c["points"].get<double>()) + " &mdash; " +
-                escape_html(reason) + "</li>\n";
-    }
-    if (!s["screenshot"].get<std::string>().empty())
-        page += "<li>" + escape_html(s["screenshot"].get<std::string>()) + "</li>\n";
-    return page + "</ul>\n" + kViewer + "</body></html>\n";
-}
-
-}  // namespace m3055::grading

@@ -52,6 +52,16 @@ const Light* named_light(const Scene& scene, const std::string& name) {
     return nullptr;
 }
 
+// "no light named "key"", and, when a light's name differs from it only by
+// case, that names are case-sensitive.
+std::string no_light_named(const Scene& scene, const std::string& name) {
+    const std::string out = "no light named " + text::quote(name);
+    for (const Light& light : scene.lights)
+        if (same_but_case(light.name, name))
+            return out + " (names are case-sensitive: the scene has " + text::quote(light.name) + ")";
+    return out;
+}
+
 // Warmth of a light's colour: how much redder than blue it is (c_r - c_b),
 // the axis along which a warm (orange) and a cool (blue) key differ. A kelvin
 // or illuminant light's colour is its spectrum's RGB at luminance 1.
@@ -63,7 +73,7 @@ Check check_warmer(const Rule& rule, const Scene& scene) {
     const Light* warm = named_light(scene, rule.text);
     const Light* other = named_light(scene, rule.other);
     if (!warm || !other)
-        return result(rule, false, "no light named " + text::quote(!warm ? rule.text : rule.other));
+        return result(rule, false, no_light_named(scene, !warm ? rule.text : rule.other));
     // Two black bodies: the lower temperature is the warmer light (the studio's sense).
     const bool kelvin = warm->temperature_k > 0.0 && other->temperature_k > 0.0;
     const bool ok = kelvin ? warm->temperature_k < other->temperature_k : warmth(*warm) > warmth(*other);
@@ -76,7 +86,7 @@ Check check_warmer(const Rule& rule, const Scene& scene) {
 
 Check check_temperature(const Rule& rule, const Scene& scene) {
     const Light* light = named_light(scene, rule.text);
-    if (!light) return result(rule, false, "no light named " + text::quote(rule.text));
+    if (!light) return result(rule, false, no_light_named(scene, rule.text));
     const std::string range = "[" + kelvin_text(rule.min) + ", " + kelvin_text(rule.max) + "]";
     if (!(light->temperature_k > 0.0))
         return result(rule, false, text::quote(rule.text) + " has no \"temperature_k\" (" +
@@ -118,7 +128,36 @@ Check check_range(const Rule& rule, const nlohmann::json& document) {
     return result(rule, ok, name + " = " + format_number(v) + (ok ? ", within " : ", not within ") + range);
 }
 
+// A value as a reason shows it: a string quoted, true/false, a number as typed.
+std::string value_text(const nlohmann::json& value) {
+    if (value.is_string()) return text::quote(value.get<std::string>());
+    if (value.is_number()) return format_number(value.get<double>());
+    if (value.is_boolean() || value.is_null()) return value.dump();
+    return value.is_array() ? "a list" : "an object";
+}
+
+Check check_equals(const Rule& rule, const nlohmann::json& document) {
+    const std::string name = text::cut_end(rule.text, text::kMaxPathBytes);
+    const nlohmann::json* value = find_scene_value(document, rule.text);
+    const std::string wanted = value_text(rule.value);
+    if (!value) return result(rule, false, name + ": not in the scene, wanted " + wanted);
+    if (*value == rule.value) return result(rule, true, name + " is " + wanted);
+    std::string reason = name + " is " + value_text(*value) + ", not " + wanted;
+    if (value->is_string() && rule.value.is_string() &&
+        same_but_case(value->get<std::string>(), rule.value.get<std::string>()))
+        reason += " (values are case-sensitive)";
+    return result(rule, false, reason);
+}
+
 }  // namespace
+
+bool same_but_case(const std::string& a, const std::string& b) {
+    if (a.size() != b.size() || a == b) return false;
+    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; };
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (lower(a[i]) != lower(b[i])) return false;
+    return true;
+}
 
 Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& document) {
     switch (rule.kind) {
@@ -134,6 +173,7 @@ Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& doc
         case RuleKind::eq14: return check_eq14(rule, scene);
         case RuleKind::range: return check_range(rule, document);
         case RuleKind::temperature: return check_temperature(rule, scene);
+        case RuleKind::equals: return check_equals(rule, document);
     }
     return result(rule, false, "unknown rule");
 }

@@ -28,4 +28,8 @@ Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& doc
 // `grade --check` read paths the same way.
 const nlohmann::json* find_scene_value(const nlohmann::json& document, const std::string& path);
 
+// Whether two names differ only in the case of ASCII letters ("Key", "key"):
+// light names and values are compared exactly, and a reason says so then.
+bool same_but_case(const std::string& a, const std::string& b);
+
 }  // namespace m3055::grading

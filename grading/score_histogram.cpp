@@ -118,7 +118,8 @@ HistogramSvg score_histogram_svg(const std::vector<double>& scores, double max, 
         return {"", "No score histogram: gnuplot is not installed (Debian: apt-get install gnuplot-nox)."};
     int status = -1;
     const std::string out = run_capturing(
-        gnuplot, {"-e", histogram_gnuplot_commands(histogram_counts(scores, max), max, pass), "/dev/null"}, status);
+        // -d: no gnuplotrc nor ~/.gnuplot: grading opens nothing of the teacher's home.
+        gnuplot, {"-d", "-e", histogram_gnuplot_commands(histogram_counts(scores, max), max, pass), "/dev/null"}, status);
     const std::size_t begin = out.find("<svg"), end = out.rfind("</svg>");
     if (status != 0 || begin == std::string::npos || end == std::string::npos || end < begin)
         return {"", "No score histogram: " + gnuplot + " failed (exit status " + std::to_string(status) + ")."};

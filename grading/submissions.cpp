@@ -199,10 +199,13 @@ std::string content_digest(std::string_view bytes) {
 
 std::string output_stem(std::string_view name) {
     std::string out;
+    bool replaced = false;
     for (std::size_t i = 0; i < name.size();) {
         const unsigned char c = static_cast<unsigned char>(name[i]);
+        // A leading or trailing space or dot is lost or hidden on some disks.
+        const bool edge = i == 0 || i + 1 == name.size();
         const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                           c == '_' || (c == '.' && i > 0);
+                           c == '_' || ((c == '.' || c == ' ') && !edge);
         if (plain) {
             out += char(c);
             ++i;
@@ -213,17 +216,15 @@ std::string output_stem(std::string_view name) {
             i += length;
             continue;
         }
-        char escaped[4];
-        std::snprintf(escaped, sizeof escaped, "%%%02X", unsigned(c));
-        out += escaped;
+        out += '_';
+        replaced = true;
         ++i;
     }
-    if (out.size() <= kMaxStemBytes) return out;
-    // Cut on a character boundary (not inside a %HH nor a UTF-8 sequence).
-    std::size_t cut = kMaxStemBytes - 17;
-    while (cut > 0 && (static_cast<unsigned char>(out[cut]) & 0xC0) == 0x80) --cut;
-    if (cut >= 1 && out[cut - 1] == '%') cut -= 1;
-    else if (cut >= 2 && out[cut - 2] == '%') cut -= 2;
+    // A stem with a byte replaced ends with the whole name's digest, so
+    // "a\nb" and "a_b" stay apart ('~' is never kept, so no plain name ends so).
+    if (!replaced && out.size() <= kMaxStemBytes) return out;
+    std::size_t cut = std::min(out.size(), kMaxStemBytes - 17);
+    while (cut > 0 && cut < out.size() && (static_cast<unsigned char>(out[cut]) & 0xC0) == 0x80) --cut;  // not inside a character
     return with_digest(out.substr(0, cut), name);
 }
 

@@ -59,11 +59,12 @@ std::string content_digest(std::string_view bytes);
 // shown as it is.
 std::string shown_name(std::string_view name);
 
-// A name for a student's output files, safe on any filesystem: ASCII letters,
-// digits, '-', '_', '.' (not leading) and printable non-ASCII UTF-8 are kept,
-// every other byte is %HH ('%' too), so different names give different stems;
-// cut to at most kMaxStemBytes with a digest of the whole name appended when
-// longer ("~" and 16 hex digits).
+// A name for a student's output files, safe on any filesystem and in a link
+// of the report: ASCII letters, digits, '-', '_', '.' and ' ' (neither first
+// nor last) and printable non-ASCII UTF-8 are kept ("with space" stays "with
+// space"); every other byte becomes '_' and the stem ends with "~" and 16 hex
+// digits of a digest of the whole name, so different names give different
+// stems; a longer one is cut to at most kMaxStemBytes, with the digest too.
 inline constexpr std::size_t kMaxStemBytes = 200;
 std::string output_stem(std::string_view name);
 

@@ -1,11 +1,13 @@
 // `m3055 batch --out DIR` over folders and glob patterns, `--report` and
 // `--shard K/N`: outputs named after the scenes, byte-identical to
 // `m3055 render`, a report line per scene, and shards that cover every scene once.
+#include "test_paths.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -52,6 +54,24 @@ TEST(BatchFolder, FolderInputNamesOutputsAfterScenesAndReports) {
     EXPECT_FALSE(file_exists(dir.file("out/notes.png")));
 }
 
+// Mesa's shader cache of a batch is its --out's, not the user's home's (a
+// .brdf is code); a manifest has no one folder: with --allow-brdf, no cache.
+TEST(BatchFolder, MesasShaderCacheIsKeptInOutOrSwitchedOff) {
+    TempDir dir;
+    write_scenes(dir);
+    run_m3055({"batch", dir.file("scenes"), "--out", dir.file("out")});
+    EXPECT_TRUE(fs::is_directory(dir.file("out/.shader-cache/mesa_shader_cache")));
+    EXPECT_TRUE(file_exists(dir.file("out/a.png")));
+    if (std::system("strace -qq -o /dev/null true >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "strace cannot run here: the manifest's run is not traced";
+    write_text(dir.file("manifest.json"), R"([{"scene": "scenes/a.json", "out": "m.png"}])");
+    const std::string command = "strace -f -qq -e trace=open,openat,creat -o " + dir.file("trace") + " " +
+                                M3055_BINARY + " batch --allow-brdf " + dir.file("manifest.json") + " 2>/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    EXPECT_TRUE(file_exists(dir.file("m.png")));
+    EXPECT_EQ(read_text(dir.file("trace")).find("mesa_shader_cache"), std::string::npos) << "the cache was used";
+}
+
 TEST(BatchFolder, GlobPatternsAndShardsCoverEverySceneOnce) {
     TempDir dir;
     write_scenes(dir);
@@ -61,7 +81,8 @@ TEST(BatchFolder, GlobPatternsAndShardsCoverEverySceneOnce) {
         const RunResult run = run_m3055({"batch", dir.file("scenes/[abc].json"), "--out", out, "--shard",
                                          std::to_string(k) + "/2"});
         EXPECT_EQ(run.exit_code, 0) << run.err;
-        for (const auto& entry : fs::directory_iterator(out)) EXPECT_TRUE(seen.insert(entry.path().filename()).second);
+        for (const auto& entry : fs::directory_iterator(out))
+            if (entry.path().filename() != ".shader-cache") EXPECT_TRUE(seen.insert(entry.path().filename()).second);
     }
     EXPECT_EQ(seen, (std::set<std::string>{"a.png", "b.png", "c.png"}));
     const RunResult none = run_m3055({"batch", dir.file("scenes/z*.json"), "--out", dir.file("z")});

@@ -220,8 +220,24 @@ EsProgram es_program(const ModelSpec& spec) {
             compose_shader("passes/sphere.frag", defines, GlslTarget::es)};
 }
 
-// glslangValidator -l on the program; "" when it validates, else its log.
+// A name with "__" (GLSL ES 3.00 §3.8 reserves them): glslang lets it pass,
+// WebGL's compiler (ANGLE, on every backend) refuses it. "" or the first one.
+std::string reserved_name(const std::string& text) {
+    static const std::regex name(R"([A-Za-z_][A-Za-z0-9_]*)");
+    for (std::sregex_iterator it(text.begin(), text.end(), name), end; it != end; ++it) {
+        const std::string found = it->str();
+        if (found.find("__") != std::string::npos && found != "__LINE__" && found != "__FILE__" && found != "__VERSION__")
+            return found;
+    }
+    return "";
+}
+
+// glslangValidator -l on the program, and no reserved name in it; "" when it
+// validates, else its log.
 std::string validate(const EsProgram& program) {
+    for (const ComposedShader* stage : {&program.vert, &program.frag})
+        if (const std::string found = reserved_name(stage->text); !found.empty())
+            return "the name " + found + " contains \"__\", which WebGL refuses";
     TempDir dir;
     test::write_text(dir.file("p.vert"), program.vert.text);
     test::write_text(dir.file("p.frag"), program.frag.text);

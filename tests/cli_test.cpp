@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <sstream>
 #include <ostream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -385,6 +386,28 @@ TEST(OutputFolder, MissingPngFolderWritesNoPfm) {
 TEST(CommandLine, UsageErrorExits2) {
     const RunResult run = run_m3055({"render", "--scene"});
     EXPECT_EQ(run.exit_code, 2) << describe(run);
+}
+
+TEST(CommandLine, VersionIsOneLine) {
+    const RunResult run = run_m3055({"--version"});
+    EXPECT_EQ(run.exit_code, 0) << describe(run);
+    EXPECT_TRUE(std::regex_match(run.out, std::regex("m3055 [0-9]+\\.[0-9]+\\.[0-9]+\n"))) << run.out;
+}
+
+// A command-line mistake is one line like every other message: "m3055:",
+// the subcommand, what is wrong and where the usage is.
+TEST(CommandLine, UsageErrorsAreOneLineStartingM3055) {
+    const std::vector<std::vector<std::string>> mistakes = {
+        {"--bogus"}, {"nosuch"}, {"render", "--scene"}, {"compare"}, {"grade", "a.json", "subs", "--out"},
+        {"batch", "--shard"}, {"render", "--backend", "vulkan"}};
+    for (const auto& args : mistakes) {
+        const RunResult run = run_m3055(args);
+        EXPECT_EQ(run.exit_code, 2) << describe(run);
+        EXPECT_TRUE(is_one_line(run.err)) << run.err;
+        EXPECT_EQ(run.err.rfind("m3055: ", 0), 0u) << run.err;
+        EXPECT_NE(run.err.find("--help shows the usage)"), std::string::npos) << run.err;
+    }
+    EXPECT_NE(run_m3055({"compare"}).err.find("m3055: compare: A is required"), std::string::npos);
 }
 
 // ---- figures -----------------------------------------------------------------

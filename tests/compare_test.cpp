@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <set>
 #include <nlohmann/json.hpp>
 
@@ -293,4 +296,107 @@ TEST(CompareCommand, SceneAgainstItsOwnPngAndPfm) {
     }
     // A PFM quantized on the CPU lands on the same levels as the GPU's PNG.
     EXPECT_EQ(test::run_m3055({"compare", dir.file("s.png"), dir.file("s.pfm")}).exit_code, 0);
+}
+
+// ---- Two folders by name --------------------------------------------------------
+
+namespace {
+
+// A and B: a pair that matches (its name with a space), a pair one pixel
+// two levels apart, a pair of different sizes, a name in each folder alone,
+// and what is not a PNG file (a text file, a folder named *.png) in both.
+struct Folders {
+    test::TempDir dir;
+    std::string a = dir.file("A"), b = dir.file("B");
+    Folders(bool with_sizes_differing = true) {
+        std::filesystem::create_directory(a);
+        std::filesystem::create_directory(b);
+        LevelImage off = flat(16, 8, 12);
+        off.levels[0] = 14;
+        write_png(a + "/same one.png", to_png(flat(16, 8, 12)));
+        write_png(b + "/same one.png", to_png(flat(16, 8, 12)));
+        write_png(a + "/off.png", to_png(flat(16, 8, 12)));
+        write_png(b + "/off.png", to_png(off));
+        if (with_sizes_differing) {
+            write_png(a + "/size.PNG", to_png(flat(16, 8, 12)));
+            write_png(b + "/size.PNG", to_png(flat(8, 8, 12)));
+        }
+        write_png(a + "/only-a.png", to_png(flat(16, 8, 3)));
+        write_png(b + "/only-b.png", to_png(flat(16, 8, 3)));
+        for (const std::string& folder : {a, b}) {
+            std::ofstream(folder + "/notes.txt") << "not an image\n";
+            std::filesystem::create_directory(folder + "/renders.png");
+        }
+    }
+};
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+TEST(CompareFolders, EveryPairThatDoesNotPassThenOneSummaryLine) {
+    Folders f;
+    const auto run = test::run_m3055({"compare", f.a, f.b});
+    EXPECT_EQ(run.exit_code, 2) << run.err;  // a pair could not be compared
+    EXPECT_EQ(run.err, "");
+    const std::vector<std::string> lines = lines_of(run.out);
+    ASSERT_EQ(lines.size(), 5u) << run.out;
+    EXPECT_EQ(lines[0].rfind("off.png: fail:", 0), 0u) << lines[0];
+    EXPECT_EQ(lines[1], "error: size.PNG: sizes differ: A is 16 x 8, B is 8 x 8") << run.out;
+    EXPECT_EQ(lines[2], "only in A: only-a.png");
+    EXPECT_EQ(lines[3], "only in B: only-b.png");
+    EXPECT_EQ(lines[4],
+              "3 PNGs in both folders: 1 pass, 0 warn, 1 fail, 1 could not be compared; 1 only in A, 1 only in B");
+}
+
+TEST(CompareFolders, ExitStatusFollowsThePairsAndTheThresholds) {
+    Folders f(false);
+    EXPECT_EQ(test::run_m3055({"compare", f.a, f.b}).exit_code, 1);
+    // The pair within two levels passes, but a name in one folder only is still a difference.
+    EXPECT_EQ(test::run_m3055({"compare", f.a, f.b, "--fail-levels", "2"}).exit_code, 1);
+    std::filesystem::remove(f.a + "/only-a.png");
+    std::filesystem::remove(f.b + "/only-b.png");
+    const auto pass = test::run_m3055({"compare", f.a, f.b, "--fail-levels", "2"});
+    EXPECT_EQ(pass.exit_code, 0) << pass.err;
+    EXPECT_EQ(pass.out, "2 PNGs in both folders: 2 pass, 0 warn, 0 fail, 0 could not be compared; 0 only in A, 0 only "
+                        "in B\n");
+    EXPECT_EQ(test::run_m3055({"compare", f.a, f.b, "--fail-levels", "2", "--warn-levels", "1"}).exit_code, 1);
+}
+
+TEST(CompareFolders, JsonIsOneObjectWithEveryPair) {
+    Folders f;
+    const auto run = test::run_m3055({"compare", f.a, f.b, "--json"});
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    const nlohmann::json result = nlohmann::json::parse(run.out);
+    ASSERT_EQ(result["pairs"].size(), 3u) << run.out;
+    EXPECT_EQ(result["pairs"][0]["name"], "off.png");
+    EXPECT_EQ(result["pairs"][0]["result"], "fail");
+    EXPECT_EQ(result["pairs"][0]["same_pixels"], 127);
+    EXPECT_EQ(result["pairs"][1]["name"], "same one.png");
+    EXPECT_EQ(result["pairs"][1]["result"], "pass");
+    EXPECT_EQ(result["pairs"][2]["name"], "size.PNG");
+    EXPECT_EQ(result["pairs"][2]["result"], "error");
+    EXPECT_EQ(result["only_a"], nlohmann::json::array({"only-a.png"}));
+    EXPECT_EQ(result["only_b"], nlohmann::json::array({"only-b.png"}));
+    EXPECT_EQ(result["summary"], nlohmann::json({{"pass", 1}, {"warn", 0}, {"fail", 1}, {"error", 1}}));
+}
+
+TEST(CompareFolders, AFolderAndAnImageOrDiffAreOneLineAndExit2) {
+    Folders f;
+    const std::string png = f.a + "/off.png";
+    const std::vector<std::vector<std::string>> calls = {
+        {"compare", f.a, png}, {"compare", png, f.b}, {"compare", f.a, f.b, "--diff", f.dir.file("diff.png")}};
+    for (const std::vector<std::string>& args : calls) {
+        const auto run = test::run_m3055(args);
+        EXPECT_EQ(run.exit_code, 2) << args[2];
+        EXPECT_EQ(run.out, "") << args[2];
+        EXPECT_EQ(run.err.rfind("m3055: compare: ", 0), 0u) << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(f.dir.file("diff.png")));
 }

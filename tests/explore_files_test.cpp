@@ -128,6 +128,18 @@ TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {
     EXPECT_EQ(next_screenshot_path(explorer), (dir / "lesson-0001.png").string());
 }
 
+// The page's downloads of an earlier visit are gone from its folder but not
+// from the user's: the numbering goes on after them.
+TEST(ExploreFiles, ScreenshotPathSkipsNamesThePlatformHandedOutBefore) {
+    const fs::path dir = fresh_folder("explore_files_screenshots_taken");
+    Explorer explorer = started();
+    explorer.session.files.screenshot_dir = dir.string();
+    explorer.session.platform.name_taken = [](const std::string& name) {
+        return name == "m3055-0001.png" || name == "m3055-0001.json" || name == "m3055-0002.json";
+    };
+    EXPECT_EQ(next_screenshot_path(explorer), (dir / "m3055-0003.png").string());
+}
+
 TEST(ExploreFiles, StartsFromTheNamedSceneFileAsSavedOrTheSpecExample) {
     const fs::path dir = fresh_folder("explore_files_start");
     Explorer plain;

@@ -53,6 +53,23 @@ TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
     EXPECT_EQ(explorer.doc.name, "scenes/fig07.json");
 }
 
+// In a browser Ctrl+digit switches tabs and Ctrl+0 resets the zoom: the
+// page's chord is Ctrl+Alt, and its plain Ctrl+digit leaves the scene alone.
+TEST(ExploreKeys, ThePagesFigureKeysAreCtrlAltDigitsAndItsCtrlDigitsTheBrowsers) {
+    Explorer explorer = started();
+    explorer.session.platform.figure_chord = FigureChord::ctrl_alt;
+    const nlohmann::json fresh = scene_to_json(explorer.doc.scene, PathWriting::absolute());
+    EXPECT_FALSE(press(explorer, "ctrl+2"));
+    EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), fresh);
+    EXPECT_EQ(explorer.doc.name, "spec example");
+    EXPECT_TRUE(press(explorer, "ctrl+alt+2"));
+    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_FALSE(press(explorer, "6"));
+    EXPECT_NE(explorer.session.messages.status.find("Ctrl+Alt+6"), std::string::npos) << explorer.session.messages.status;
+    EXPECT_TRUE(press(explorer, "ctrl+z")) << "the other Ctrl shortcuts stay the explorer's";
+    EXPECT_EQ(explorer.doc.name, "spec example");
+}
+
 TEST(ExploreKeys, APlainDigitNeverReplacesTheSceneEditedOrNot) {
     Explorer explorer = started();
     const nlohmann::json fresh = scene_to_json(explorer.doc.scene, PathWriting::absolute());

@@ -145,6 +145,23 @@ TEST(ShareLink, ABrdfFileOutsideTheFolderCannotBeShared) {
     EXPECT_THROW(share_token(scene), std::runtime_error) << "no folder: absolute paths, nothing to carry";
 }
 
+// A link carries .brdf files only: a scene with a mesh from a model file (which
+// can name further files, up to 256 MiB) is refused with a line naming it.
+TEST(ShareLink, ASceneWithAModelFileIsRefusedWithALineNamingIt) {
+    const fs::path dir = fresh_folder("share_link_model");
+    { std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"; }
+    nlohmann::json doc = nlohmann::json::parse(figure_scenes().front().json);
+    doc["objects"].push_back({{"shape", "mesh"}, {"file", "tri.obj"}, {"center", {0, 0, 0}}, {"size", 1}});
+    { std::ofstream(dir / "scene.json") << doc.dump(2); }
+    const Scene scene = load_scene_file((dir / "scene.json").string(), LoadContext::trusted());
+    try {
+        share_token(scene, dir.string());
+        ADD_FAILURE() << "a scene with a model file made a link";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("model file tri.obj"), std::string::npos) << e.what();
+    }
+}
+
 // A hostile or damaged bundle: one line, and no file name that leaves the folder.
 TEST(ShareLink, ABundleWithABadPartIsRefusedWithOneLine) {
     const nlohmann::json scene = nlohmann::json::parse(figure_scenes().front().json);

@@ -298,8 +298,8 @@ Rgb8Image headless(const TempDir& dir, const std::vector<std::string>& extra = {
 // widget's row comes from that layout. (The label height does not matter to
 // one pane.)
 const explore::Layout kBig = explore::layout_for_panes(1920, 1080, true, 1, 512, 320, 1.0f, 19.0f);
-// Material: m (size) in the spec example: its slider spans the narrow panel, 550 px down.
-const int kSizeSliderX = int(kBig.side.w / 2.0f), kSizeSliderY = 550;
+// Material: m (size) in the spec example: its slider spans the narrow panel, 594 px down.
+const int kSizeSliderX = int(kBig.side.w / 2.0f), kSizeSliderY = 594;
 // split: A | B, with the sections above it closed and A/B compare open (the
 // script's `section`, as clicks on the headers would): the first row under the
 // seventh header (Display, Material, Lights, Spectra, Objects, Camera, A/B
@@ -315,7 +315,7 @@ class ExplorerInput : public ::testing::Test {
 protected:
     void SetUp() override {
         for (const char* tool : {"Xvfb", "xdotool", "import"})
-            if (!on_path(tool)) GTEST_SKIP() << tool << " is not installed (scripts/setup installs it)";
+            if (!on_path(tool)) GTEST_SKIP() << tool << " is not installed (scripts/setup --for-tests installs it)";
     }
     // The spec example in a window on a screen of its own; false when anything failed.
     bool start(int screen_w, int screen_h, const std::vector<std::string>& extra = {}) {
@@ -556,11 +556,12 @@ TEST_F(ExplorerInput, ADragRightAfterAFigurePresetAlwaysOrbits) {
 // Widget positions at 1280 x 720 with the spec example (the side panel's
 // rows under the default sections, labels beside their widgets).
 constexpr int kSmallWidthFieldX = 80, kSmallWidthFieldY = 110;      // Display: width
-constexpr int kSmallWSliderX = 150, kSmallWSliderY = 329;          // Material: w (highlight), linear
-constexpr int kSmallMSliderX = 150, kSmallMSliderY = 354;          // Material: m (size), logarithmic
-constexpr int kSmallNameFieldX = 170, kSmallNameFieldY = 517;      // Lights: light 0's name
-constexpr int kSmallIntensityX = 230, kSmallIntensityY = 617;      // Lights: light 0's intensity, logarithmic
+constexpr int kSmallWSliderX = 150, kSmallWSliderY = 354;          // Material: w (highlight), linear
+constexpr int kSmallMSliderX = 150, kSmallMSliderY = 379;          // Material: m (size), logarithmic
+constexpr int kSmallNameFieldX = 170, kSmallNameFieldY = 542;      // Lights: light 0's name
+constexpr int kSmallIntensityX = 230, kSmallIntensityY = 642;      // Lights: light 0's intensity, logarithmic
 constexpr int kSmallRestX = 1270, kSmallRestY = 20;                // the empty band above the display
+constexpr int kSmallViewTransformX = 150, kSmallViewTransformY = 185;  // Display: the view transform
 
 // The spec example as a file of the test's own, so Ctrl+S writes there.
 std::string own_spec_example(const TempDir& dir) {
@@ -618,6 +619,30 @@ TEST_F(ExplorerInput, ATypedValueIsAppliedByTabOrAClickElsewhereAsByEnter) {
     EXPECT_EQ(saved["objects"][0]["material"]["m"], 40) << "typed on the logarithmic slider, then Tab";
     EXPECT_EQ(saved["lights"][0]["intensity"], 0.5) << "typed on the intensity, then a click elsewhere";
     EXPECT_EQ(saved["display"]["width"], 256) << "typed into the width, then Tab";
+}
+
+// The Display section's view transform: sRGB chosen with the mouse shows
+// what `m3055 render --view-transform srgb` writes, and none again what it
+// writes without.
+TEST_F(ExplorerInput, TheViewTransformShowsWhatRenderWritesWithIt) {
+    ASSERT_TRUE(start(1280, 720));
+    const Rgb8Image linear = headless(dir_);
+    const Rgb8Image srgb = headless(dir_, {"--view-transform", "srgb"});
+    ASSERT_NE(linear.pixels, srgb.pixels);
+    Place at;
+    app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return (at = find_magnified(s, linear)).scale > 0; });
+    ASSERT_GT(at.scale, 0);
+    app_->click(kSmallViewTransformX, kSmallViewTransformY);
+    sleep_ms(500);
+    app_->click(kSmallViewTransformX, kSmallViewTransformY + 2 * 25);  // the list's second entry, sRGB
+    app_->move(kSmallRestX, kSmallRestY);
+    const Rgb8Image shown =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return shows_at(s, srgb, at.x, at.y, at.scale); }, 20);
+    EXPECT_TRUE(shows_at(shown, srgb, at.x, at.y, at.scale)) << "sRGB: the render with --view-transform srgb";
+    app_->xdo("key ctrl+z");
+    const Rgb8Image undone =
+        app_->wait_for(dir_.path(), [&](const Rgb8Image& s) { return shows_at(s, linear, at.x, at.y, at.scale); }, 20);
+    EXPECT_TRUE(shows_at(undone, linear, at.x, at.y, at.scale)) << "undone: the linear levels again";
 }
 
 // Tab from a typed slider goes on to the next field of the panel (the next

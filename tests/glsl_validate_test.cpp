@@ -327,5 +327,13 @@ TEST(AnnotateShaderLog, OtherDriversStyleAndUnknownNumbers) {
     EXPECT_EQ(annotate_shader_log("link error: no main", {"glsl/a.glsl"}), "link error: no main");
 }
 
+// WebGL's compiler (ANGLE; glslang writes the same) puts the severity first:
+// "ERROR: N:LINE: ...". A .brdf block's line is the file's own.
+TEST(AnnotateShaderLog, WebGlPrefixBecomesFileLineAndSeverity) {
+    const std::vector<std::string> files = {"glsl/passes/sphere.frag", "mine.brdf"};
+    EXPECT_EQ(annotate_shader_log("ERROR: 0:12: 'x' : undeclared identifier\nWARNING: 1:1000008: 'y' : z", files),
+              "glsl/passes/sphere.frag:12: error: 'x' : undeclared identifier\nmine.brdf:8: warning: 'y' : z");
+}
+
 }  // namespace
 }  // namespace m3055

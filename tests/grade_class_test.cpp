@@ -31,6 +31,12 @@ std::map<std::string, json> by_student(const json& grades) {
     return out;
 }
 
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
 // alice's full-marks scene and dave's metal_blinn one, under other names.
 std::string good_scene() { return read_text(kSubmissions + "/alice.json"); }
 std::string weaker_scene() { return read_text(kSubmissions + "/dave.json"); }
@@ -79,7 +85,7 @@ TEST(GradeClass, EveryFileNameGetsItsRowEscapedTheSameInEveryOutput) {
         EXPECT_NE(html.find(">" + n.shown + "</td>"), std::string::npos) << n.shown;
         const std::string quoted = json(n.shown).dump();  // "name", JSON-escaped
         EXPECT_NE(results.find(quoted.substr(0, quoted.size() - 1) + ": image"), std::string::npos) << n.shown;
-        EXPECT_NE(("\n" + run.err).find("\n" + n.shown + ": 100 / 100 pass"), std::string::npos) << n.shown << "\n" << run.err;
+        EXPECT_NE(("\n" + run.err).find("\nm3055: " + n.shown + ": 100 / 100 pass"), std::string::npos) << n.shown << "\n" << run.err;
         // Its images exist, under a name of its own that any disk can hold.
         const std::string render = student["images"]["render"], diff = student["images"]["diff"];
         EXPECT_TRUE(file_exists(dir.file("out/" + render))) << render;
@@ -89,7 +95,9 @@ TEST(GradeClass, EveryFileNameGetsItsRowEscapedTheSameInEveryOutput) {
         const std::string file = render.substr(9);
         EXPECT_EQ(diff.substr(6), file);
         EXPECT_LE(file.size(), 255u);
-        EXPECT_EQ(file.find_first_of("\n\\ /"), std::string::npos) << file;
+        // No newline, backslash, slash or percent; a space only inside, as in the name.
+        EXPECT_EQ(file.find_first_of("\n\\/%"), std::string::npos) << file;
+        EXPECT_NE(file.front(), ' ');
         std::string folded = file;
         for (char& c : folded) c = char(std::tolower(static_cast<unsigned char>(c)));
         EXPECT_TRUE(images.insert(folded).second) << "two students' images differ only by case: " << render;
@@ -152,7 +160,7 @@ TEST(GradeClass, ShardsOfOddNamesMergeToTheUnshardedBytes) {
     for (const char* table : {"grades.csv", "grades.json", "report.html"})
         EXPECT_EQ(read_text(dir.file(std::string("merged/") + table)), read_text(dir.file(std::string("whole/") + table)))
             << table;
-    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole")));
+    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole"), ".shader-cache"));
 }
 
 std::string write_assignment(TempDir& dir, const std::string& name, const std::function<void(json&)>& change);
@@ -175,10 +183,10 @@ TEST(GradeClass, ShardsRunFromDifferentFoldersMergeToTheUnshardedBytes) {
     ASSERT_EQ(run_in(dir.file("elsewhere/deeper"), "grade " + kAssignment + " ../../class/subs --out ../../s2 --shard 2/3"), 0);
     ASSERT_EQ(run_in(dir.file("class/subs"), "grade " + kAssignment + " " + dir.file("class/subs") + " --out ../../s3 --shard 3/3"), 0);
     ASSERT_EQ(run_in(dir.path(), "grade --merge s2 s3 s1 --out merged"), 0);
-    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole")));
+    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("whole"), ".shader-cache"));
     const std::string csv = read_text(dir.file("whole/grades.csv"));
-    EXPECT_NE(csv.find("s3,0,100,fail,\"s3.json: invalid JSON"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("f,0,100,fail,f/scene.json: missing"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("s3,0,100,refused,\"s3.json: invalid JSON"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("f,0,100,refused,f/scene.json: missing"), std::string::npos) << csv;
     EXPECT_EQ(csv.find("subs"), std::string::npos) << "no path the teacher typed: " << csv;
 }
 
@@ -467,10 +475,13 @@ TEST(GradeClass, RosterGivesMissingStudentsARowAndFlagsStrangers) {
     EXPECT_EQ(s.at("caf\\xE9")["score"], 50);
     const std::string csv = read_text(dir.file("out/grades.csv"));
     EXPECT_NE(csv.find("\nzed,0,100,missing,no submission,\n"), std::string::npos) << csv;
-    EXPECT_NE(run.err.find("graded 3 submissions, 2 passed; 1 on the roster with no submission"), std::string::npos)
+    EXPECT_NE(run.err.find("m3055: 3 submissions: 2 passed, 1 failed, 0 refused (not graded); 1 on the roster with no "
+                           "submission"),
+              std::string::npos)
         << run.err;
     EXPECT_NE(read_text(dir.file("out/report.html"))
-                  .find("<p>3 submissions, 2 passed (at least 60 of 100 points); 1 on the roster with no submission."),
+                  .find("<p>3 submissions: 2 passed (at least 60 of 100 points), 1 failed, 0 refused (not graded); 1 on "
+                        "the roster with no submission."),
               std::string::npos);
     // A roster that is not one: one line naming the file and the line, nothing written.
     write_text(dir.file("bad.txt"), "alice\nbob\nalice\n");
@@ -528,6 +539,7 @@ TEST(GradeClass, ScoresAreRoundedToHundredthsInEveryOutput) {
     TempDir dir;
     json assignment = read_json(kAssignment);
     assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment.erase("start");  // beside the worked assignment, not this copy
     assignment["image"]["points"] = 40;
     assignment["rules"] = json::parse(R"([{"rule": "light_count", "equals": 3, "points": 0.1},
                                           {"rule": "model", "is": "metal", "points": 0.2}])");
@@ -552,6 +564,9 @@ TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
         {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "5/4"},
         {"grade", kAssignment, kSubmissions, "--out", dir.file("out"), "--shard", "x"},
         {"grade", kAssignment, kSubmissions, "--merge", dir.file("a"), "--out", dir.file("out")},
+        {"grade", kAssignment, dir.file("no such folder"), "--out", dir.file("out")},
+        {"grade", dir.file("no such assignment.json"), kSubmissions, "--out", dir.file("out")},
+        {"grade", "--check", dir.file("no such assignment.json")},
         {"batch", kSubmissions + "/alice.json", kSubmissions + "/bob.json"},
         {"batch", kSubmissions, "--out", dir.file("out"), "--shard", "0/2"},
     };
@@ -560,6 +575,15 @@ TEST(GradeClass, UsageErrorsExitTwoAndWriteNothing) {
         EXPECT_EQ(run.exit_code, 2) << args[0] << " " << args.back() << ": " << run.err;
         EXPECT_FALSE(fs::exists(dir.file("out")));
     }
+}
+
+// Bare `m3055 grade`: the usage, and what to give, exit 2.
+TEST(GradeClass, BareGradePrintsTheUsage) {
+    const RunResult run = run_m3055({"grade"});
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_NE(run.err.find("Usage: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("--merge"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("\nm3055: grade: give ASSIGNMENT.json SUBMISSIONS/ --out DIR"), std::string::npos) << run.err;
 }
 
 TEST(GradeClass, CountsInMessagesAreSingularForOne) {
@@ -625,7 +649,7 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_EQ(check.exit_code, 1);
     for (const std::string line : {
              "bad.json: image.fail_levels: 40 allows every difference on the reference's 5-bit display (at most 31 levels)",
-             "bad.json: rules[0].is: unknown model \"metall\" (highlight, translucent, metal,",
+             "bad.json: rules[0].is: unknown model \"metall\": not one of the model names below",
              "bad.json: rules[1].path: \"objects[0].material.dd\" is not in the reference scene",
              "bad.json: rules[2].path: \"objects[0].material\" is not a number in the reference scene",
              "bad.json: rules[3].object: no objects[5] in the reference scene (it has 1 object)",
@@ -638,6 +662,101 @@ TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAs
     EXPECT_NE(grade.err.find("bad.json: 7 errors in the assignment (m3055 grade --check): nothing graded"),
               std::string::npos) << grade.err;
     EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+// Structure, ranges and meaning in one run: every problem once, the rule
+// with a structural error not checked again against the reference, and
+// `grade` refusing with the same lines.
+TEST(GradeCheck, EveryErrorAtOnceEachOnce) {
+    TempDir dir;
+    const std::string bad = write_assignment(dir, "bad.json", [](json& a) {
+        a["extra"] = 1;                     // structure
+        a["image"]["fail_percent"] = 101;   // range
+        a["rules"] = json::parse(R"([
+            {"rule": "eq14", "object": 5, "within_percent": 1, "points": 10},
+            {"rule": "light_count", "equals": 2.5, "points": 10},
+            {"rule": "warmer", "light": "Key", "than": "fill", "points": 10}])");
+        a.erase("pass");
+    });
+    const std::vector<std::string> lines = {
+        "bad.json: extra: is not a field here\n",
+        "bad.json: image.fail_percent: must be in [0, 100], got 101\n",
+        "bad.json: rules[1].equals: must be a whole number, got 2.5\n",
+        "bad.json: rules[0].object: no objects[5] in the reference scene (it has 1 object)\n",
+        "bad.json: rules[2].light: no light named \"Key\" in the reference scene (its lights: \"key\", \"fill\", "
+        "\"back\"); light names are case-sensitive\n"};
+    const RunResult check = run_m3055({"grade", "--check", bad});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string& line : lines) EXPECT_EQ(count_of(check.err, line), 1u) << line << check.err;
+    EXPECT_EQ(count_of(check.err, "rules[0]"), 1u) << "said once, not again as failed by the reference: " << check.err;
+    EXPECT_NE(check.err.find("bad.json: 5 errors; "), std::string::npos) << check.err;
+    const RunResult grade = run_m3055({"grade", bad, kSubmissions, "--out", dir.file("out")});
+    EXPECT_EQ(grade.exit_code, 1);
+    for (const std::string& line : lines) EXPECT_EQ(count_of(grade.err, line), 1u) << line << grade.err;
+    EXPECT_FALSE(fs::exists(dir.file("out")));
+}
+
+// A start or reference file that is not there is an error naming its field;
+// the other problems are still said.
+TEST(GradeCheck, AMissingStartOrReferenceNamesItsField) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["start"] = "start.json";
+        a["rules"][0]["is"] = "metall";
+    });
+    const RunResult start = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(start.exit_code, 1);
+    EXPECT_NE(start.err.find("a.json: start: " + dir.file("start.json") + ": cannot read file: No such file"),
+              std::string::npos) << start.err;
+    EXPECT_NE(start.err.find("a.json: rules[0].is: unknown model \"metall\""), std::string::npos) << start.err;
+    fs::remove(dir.file("reference.json"));
+    const RunResult reference = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(reference.exit_code, 1);
+    EXPECT_NE(reference.err.find("a.json: reference: " + dir.file("reference.json") + ": cannot read file"),
+              std::string::npos) << reference.err;
+    EXPECT_NE(reference.err.find("a.json: start: "), std::string::npos) << reference.err;
+    EXPECT_NE(reference.err.find("3 errors; the rules could not be checked against the reference"), std::string::npos)
+        << reference.err;
+}
+
+// The model names an unknown one is checked against: every one, on a line of their own, never cut.
+TEST(GradeCheck, ModelNamesAreListedWhole) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) { a["rules"][0]["is"] = "metall"; });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    EXPECT_NE(check.err.find("\nm3055: model names: highlight, translucent, metal, metal_blinn, metal_phong, lambert, "
+                             "half_lambert, half_lambert_clamped, half_lambert_normalized, oren_nayar, minnaert, phong, "
+                             "blinn_phong, microfacet, ward, heidrich_seidel, principled\n"),
+              std::string::npos) << check.err;
+}
+
+// An "equals" rule on the conductor tells the measured gold the assignment
+// asks for from an RGB gold that renders alike: the RGB one no longer scores
+// full marks.
+TEST(GradeCheck, AnEqualsRuleTellsMeasuredGoldFromAnRgbGold) {
+    TempDir dir;
+    json reference = read_json(kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json");
+    reference["objects"][0]["material"].erase("color");
+    reference["objects"][0]["material"]["conductor"] = "gold";
+    write_text(dir.file("reference.json"), reference.dump());
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["image"]["fail_percent"] = 100;  // the image alone would not tell them apart
+        a["image"]["points"] = 0;
+        a["rules"] = json::parse(R"([{"rule": "model", "is": "metal", "points": 50},
+            {"rule": "equals", "path": "objects[0].material.conductor", "value": "gold", "points": 50}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 0) << check.err;
+    fs::create_directories(dir.file("subs"));
+    write_text(dir.file("subs/rgb.json"), good_scene());
+    write_text(dir.file("subs/measured.json"), reference.dump());
+    ASSERT_EQ(run_m3055({"grade", a, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    const auto s = by_student(read_json(dir.file("out/grades.json")));
+    EXPECT_EQ(s.at("measured")["score"], 100);
+    EXPECT_EQ(s.at("rgb")["score"], 50);
+    EXPECT_EQ(s.at("rgb")["reasons"][0], "rules[1] (equals): objects[0].material.conductor: not in the scene, wanted \"gold\"");
 }
 
 // The "temperature" rule: its light must be one of the reference's, and
@@ -667,7 +786,7 @@ TEST(GradeCheck, KeyToFillNeedsLightsNamedKeyAndFill) {
     const std::string a = write_assignment(dir, "a.json", [](json&) {});
     const RunResult check = run_m3055({"grade", "--check", a});
     EXPECT_EQ(check.exit_code, 1);
-    EXPECT_NE(check.err.find("key_to_fill compares the lights named \"key\" and \"fill\"; the reference scene's "
+    EXPECT_NE(check.err.find("key_to_fill compares the lights named \"key\" and \"fill\" (case-sensitive); the reference scene's "
                              "lights are \"main\", \"fill\", \"back\""),
               std::string::npos) << check.err;
 }
@@ -722,6 +841,11 @@ TEST(GradeRegion, ObjectsRegionLetsTheBackgroundChangeFreely) {
     EXPECT_EQ(c["same_pixels"], c["pixels"]);
     EXPECT_GT(c["pixels"].get<long>(), 1000);
     EXPECT_LT(c["pixels"].get<long>(), 512 * 320 / 2) << "the sphere, not the whole display";
+    // The display's own size, and which of its pixels were compared.
+    EXPECT_EQ(c["width"], 512);
+    EXPECT_EQ(c["height"], 320);
+    EXPECT_EQ(c["region"], "objects");
+    EXPECT_FALSE(whole.at("recoloured")["comparison"].contains("region"));
     const std::string reason = region.at("recoloured")["checks"][0]["reason"];
     EXPECT_EQ(reason.rfind("image: the objects' " + std::to_string(c["pixels"].get<long>()) + " pixels: 100.00 %", 0), 0u)
         << reason;
@@ -756,22 +880,18 @@ std::string dom_of(TempDir& dir, const std::string& page) {
     return read_text(dom);
 }
 
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
 // Drives a copy of `page` in Chromium at 1280 x 900: `script` runs after the
 // page loaded and writes what it saw into <pre id="probe">; returns that text.
-std::string probe_page(TempDir& dir, const std::string& page, const std::string& script) {
-    const std::string copy = dir.file("probe.html");
+// `flags`: more of Chromium's command line.
+std::string probe_page(TempDir& dir, const std::string& page, const std::string& script, const std::string& flags = "") {
+    // Beside the page: its images are files named relative to it.
+    const std::string copy = fs::path(page).parent_path().string() + "/probe.html";
     write_text(copy, read_text(page) + "<pre id=\"probe\"></pre><script>window.addEventListener('load',function(){" +
                          "var out=[];function note(x){out.push(x);}" + script +
                          "document.getElementById('probe').textContent=out.join(' ');});</script>\n");
     const std::string dom = dir.file("probe-dom.html");
     const std::string command = "chromium --headless=new --no-sandbox --disable-gpu --user-data-dir=" + dir.file("profile3") +
-                                " --window-size=1280,900 --virtual-time-budget=5000 --dump-dom 'file://" + copy + "' > " +
+                                " --window-size=1280,900 --virtual-time-budget=5000 " + flags + " --dump-dom 'file://" + copy + "' > " +
                                 dom + " 2>/dev/null";
     if (std::system(command.c_str()) != 0) return "";
     const std::string text = read_text(dom);
@@ -864,17 +984,94 @@ TEST(GradeReport, SummaryCheckColumnsFilterAndFeedbackPagesInHeadlessChromium) {
     }
 }
 
+// The report links its images (students/, diffs/, reference.png) instead of
+// inlining them: the page of a class stays small (a class of 1000 was 55 MB),
+// each image loads as it nears the view, with its size known before.
+TEST(GradeReport, ImagesAreFilesBesideThePageLoadedLazily) {
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    for (int i = 0; i < 40; ++i) write_text(dir.file("subs/s" + std::to_string(100 + i) + ".json"), good_scene_variant(i));
+    write_text(dir.file("subs/with space.json"), weaker_scene());
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    const std::string page = read_text(dir.file("out/report.html"));
+    EXPECT_EQ(page.find("data:image"), std::string::npos) << "an image inlined";
+    EXPECT_LT(page.size(), 41u * 2000u) << "more than 2 KB a student";
+    EXPECT_EQ(count_of(page, " loading=\"lazy\""), 2u * 41u);  // each render and difference image
+    EXPECT_NE(page.find("<img id=\"reference-image\" alt=\"reference\" data-view=\"reference\" width=\"512\" "
+                        "height=\"320\" src=\"reference.png\">"),
+              std::string::npos);
+    EXPECT_NE(page.find("width=\"512\" height=\"320\" loading=\"lazy\" decoding=\"async\" src=\"students/with%20space.png\""),
+              std::string::npos);
+    // Every image the page names is a file beside it.
+    for (std::size_t at = page.find(" src=\""); at != std::string::npos; at = page.find(" src=\"", at + 1)) {
+        std::string url = page.substr(at + 6, page.find('"', at + 6) - at - 6);
+        if (url.rfind("data:", 0) == 0) continue;  // said above
+        for (std::size_t p = url.find("%20"); p != std::string::npos; p = url.find("%20")) url.replace(p, 3, " ");
+        EXPECT_TRUE(file_exists(dir.file("out/" + url))) << url;
+    }
+}
+
+// In a browser's window only the images near the view are read when the page
+// loads: headless Chromium reads every one (for whole-page screenshots)
+// unless told to load lazy images lazily.
+TEST(GradeReport, OnlyTheImagesNearTheViewAreReadAtFirst) {
+    if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed";
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    for (int i = 0; i < 80; ++i) write_text(dir.file("subs/s" + std::to_string(100 + i) + ".json"), good_scene_variant(i));
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    const std::string read = probe_page(dir, dir.file("out/report.html"),
+                                        "var n=0,all=0;[].forEach.call(document.querySelectorAll('img[data-view]'),"
+                                        "function(i){all++;if(i.complete&&i.naturalWidth>0)n++;});note(n+' of '+all);",
+                                        "--blink-settings=lazyLoadEnabled=true");
+    const int images = std::atoi(read.c_str());
+    EXPECT_TRUE(read.find(" of ") != std::string::npos && read.substr(read.find(" of ")) == " of 161") << read;  // 80 renders, 80 differences, the reference
+    EXPECT_GE(images, 1) << read;
+    EXPECT_LT(images, 161 / 2) << read << ": the rows far below the view were read too";
+}
+
+// A 240-byte name without a break (graded, refused and named in its reason,
+// byte-identical to another, not graded) wraps: the page is no wider than a
+// 1280-pixel window.
+TEST(GradeReport, LongNamesWrapWithinA1280PixelWindow) {
+    if (std::system("command -v chromium >/dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed";
+    TempDir dir;
+    fs::create_directories(dir.file("subs"));
+    const std::string name(240, 'n'), other(239, 'r');
+    write_text(dir.file("subs/" + name + ".json"), good_scene());
+    write_text(dir.file("subs/alice.json"), good_scene());
+    fs::create_directories(dir.file("subs/" + other));  // refused: "rrr.../scene.json: missing"
+    write_text(dir.file("subs/" + std::string(230, 'i') + ".txt"), "not graded");
+    ASSERT_EQ(run_m3055({"grade", kAssignment, dir.file("subs"), "--out", dir.file("out")}).exit_code, 0);
+    EXPECT_EQ(probe_page(dir, dir.file("out/report.html"),
+                         "note(document.scrollingElement.scrollWidth<=1280?'fits':'wider:'+document.scrollingElement.scrollWidth);"),
+              "fits");
+}
+
 TEST(GradeClass, OutputStemsAreSafeUniqueAndBounded) {
     using grading::output_stem;
     EXPECT_EQ(output_stem("alice"), "alice");
     EXPECT_EQ(output_stem("zo\xC3\xAB"), "zo\xC3\xAB");
-    EXPECT_EQ(output_stem("caf\xE9 latin1"), "caf%E9%20latin1");
-    EXPECT_EQ(output_stem("a%E9"), "a%25E9");  // not the stem of "a\xE9"
-    EXPECT_EQ(output_stem("new\nline"), "new%0Aline");
-    EXPECT_EQ(output_stem(".hidden"), "%2Ehidden");
-    const std::string a(300, '\xE9'), b = std::string(299, '\xE9') + "x";
-    EXPECT_LE(output_stem(a).size(), grading::kMaxStemBytes);
-    EXPECT_NE(output_stem(a), output_stem(b));
+    EXPECT_EQ(output_stem("with space"), "with space");  // a space stays a space
+    EXPECT_EQ(output_stem("a_b"), "a_b");
+    // Any other byte is '_', and the name's digest keeps the stem apart from a plain one.
+    const std::map<std::string, std::string> replaced = {{"caf\xE9 latin1", "caf_ latin1~"}, {"a%E9", "a_E9~"},
+                                                         {"new\nline", "new_line~"},          {".hidden", "_hidden~"},
+                                                         {"a\nb", "a_b~"},                    {"trailing ", "trailing_~"},
+                                                         {"q?x#y", "q_x_y~"}};
+    std::set<std::string> stems = {"a_b"};
+    for (const auto& [name, start] : replaced) {
+        const std::string stem = output_stem(name);
+        EXPECT_EQ(stem.rfind(start, 0), 0u) << stem;
+        EXPECT_EQ(stem.size(), start.size() + 16) << stem;
+        EXPECT_TRUE(stems.insert(stem).second) << stem;
+    }
+    const std::string a(300, '\xE9'), b = std::string(299, '\xE9') + "x", c(300, 'c');
+    for (const std::string& name : {a, b, c}) {
+        EXPECT_LE(output_stem(name).size(), grading::kMaxStemBytes);
+        EXPECT_TRUE(stems.insert(output_stem(name)).second);
+    }
+    for (const std::string& stem : stems) EXPECT_EQ(stem.find('%'), std::string::npos) << stem;
     EXPECT_EQ(grading::shown_name("caf\xE9 \"q\" \\"), "caf\\xE9 \\\"q\\\" \\\\");
 }
 

@@ -139,6 +139,92 @@ TEST(GradeRules, RangeFindsDefaultsAndMissingPaths) {
               "objects[4].radius: not in the scene");
 }
 
+// "equals" holds a string (or true/false) at a path: an RGB "gold" is not
+// the measured metal, and a light given by its colour has no illuminant.
+TEST(GradeRules, EqualsComparesTheStringAtAPath) {
+    nlohmann::json doc = reference_doc();
+    const std::string gold =
+        R"({"rule": "equals", "path": "objects[0].material.conductor", "value": "gold", "points": 1})";
+    const Check rgb = check(gold, doc);  // the worked reference: an RGB gold
+    EXPECT_FALSE(rgb.ok);
+    EXPECT_EQ(rgb.reason, "objects[0].material.conductor: not in the scene, wanted \"gold\"");
+    doc["objects"][0]["material"].erase("color");
+    doc["objects"][0]["material"]["conductor"] = "gold";
+    const Check measured = check(gold, doc);
+    EXPECT_TRUE(measured.ok) << measured.reason;
+    EXPECT_EQ(measured.reason, "objects[0].material.conductor is \"gold\"");
+    doc["objects"][0]["material"]["conductor"] = "copper";
+    EXPECT_EQ(check(gold, doc).reason, "objects[0].material.conductor is \"copper\", not \"gold\"");
+    EXPECT_TRUE(check(R"({"rule": "equals", "path": "objects[0].material.model", "value": "metal", "points": 1})", doc).ok);
+    doc["lights"][0].erase("color");
+    doc["lights"][0]["illuminant"] = "A";
+    EXPECT_TRUE(check(R"({"rule": "equals", "path": "lights[0].illuminant", "value": "A", "points": 1})", doc).ok);
+    EXPECT_EQ(check(R"({"rule": "equals", "path": "lights[1].illuminant", "value": "A", "points": 1})", doc).reason,
+              "lights[1].illuminant: not in the scene, wanted \"A\"");
+    EXPECT_TRUE(check(R"({"rule": "equals", "path": "lights[1].enabled", "value": true, "points": 1})", doc).ok);
+    EXPECT_EQ(check(R"({"rule": "equals", "path": "lights[0].name", "value": "Key", "points": 1})", doc).reason,
+              "lights[0].name is \"key\", not \"Key\" (values are case-sensitive)");
+}
+
+// Light names are compared exactly; a name that differs only by case says so.
+TEST(GradeRules, LightNamesAreCaseSensitiveAndTheReasonSaysSo) {
+    nlohmann::json doc = reference_doc();
+    doc["lights"][0]["name"] = "Key";
+    EXPECT_EQ(check(R"({"rule": "warmer", "light": "key", "than": "fill", "points": 1})", doc).reason,
+              "no light named \"key\" (names are case-sensitive: the scene has \"Key\")");
+    EXPECT_EQ(check(R"({"rule": "temperature", "light": "FILL", "min": 3000, "max": 3400, "points": 1})", doc).reason,
+              "no light named \"FILL\" (names are case-sensitive: the scene has \"fill\")");
+}
+
+// A count or an index is a whole number: "equals": 2.5 lights is refused, not read as 2.
+TEST(GradeAssignment, CountsIndicesAndLevelsMustBeWholeNumbers) {
+    const auto lines = [](const std::string& text) {
+        try {
+            assignment_from_json(text, "a.json");
+        } catch (const AssignmentError& e) {
+            return e.lines();
+        }
+        return std::vector<std::string>{};
+    };
+    EXPECT_EQ(lines(R"({"reference": "r.json", "rules": [{"rule": "light_count", "equals": 2.5, "points": 1}]})"),
+              std::vector<std::string>{"a.json: rules[0].equals: must be a whole number, got 2.5"});
+    EXPECT_EQ(lines(R"({"reference": "r.json", "rules": [{"rule": "model", "is": "metal", "object": 0.5, "points": 1}]})"),
+              std::vector<std::string>{"a.json: rules[0].object: must be a whole number, got 0.5"});
+    EXPECT_EQ(lines(R"({"reference": "r.json", "image": {"points": 1, "fail_levels": 1.5}})"),
+              std::vector<std::string>{"a.json: image.fail_levels: must be a whole number, got 1.5"});
+    EXPECT_EQ(lines(R"({"reference": "r.json", "rules": [{"rule": "equals", "path": "display.bits", "value": 5, "points": 1}]})"),
+              std::vector<std::string>{"a.json: rules[0].value: must be a string or true/false; for a number use a "
+                                       "\"range\" rule (min = max)"});
+    EXPECT_EQ(assignment_from_json(R"({"reference": "r.json", "rules": [{"rule": "light_count", "equals": 3.0, "points": 1}]})",
+                                   "a.json").rules[0].min, 3);
+}
+
+// Every problem of the file at once, in the order read, each once; what() is
+// the first and a count of the rest.
+TEST(GradeAssignment, EveryProblemIsReportedAtOnceEachOnce) {
+    try {
+        assignment_from_json(R"({"reference": "r.json", "extra": 1, "image": {"points": -1, "fail_levels": 1.5},
+                                "rules": [{"rule": "colour", "points": 1}, "x",
+                                          {"rule": "model", "points": 1, "is": "metal", "object": -1, "also": 2}],
+                                "time_budget": 0})",
+                             "a.json");
+        FAIL() << "no error";
+    } catch (const AssignmentError& e) {
+        const std::vector<std::string> expected = {
+            "a.json: extra: is not a field here",
+            "a.json: image.points: must be in [0, 1000000], got -1",
+            "a.json: image.fail_levels: must be a whole number, got 1.5",
+            "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range, "
+            "temperature, equals)",
+            "a.json: rules[1]: must be an object",
+            "a.json: rules[2].also: is not a field here",
+            "a.json: rules[2].object: must be in [0, 99999], got -1",
+            "a.json: time_budget: must be in (0, 3600] seconds, got 0"};
+        EXPECT_EQ(e.lines(), expected);
+        EXPECT_EQ(std::string(e.what()), expected[0] + " (and 7 more problems: m3055 grade --check lists them)");
+    }
+}
+
 TEST(GradeAssignment, ErrorsNameTheField) {
     const auto error = [](const std::string& text) {
         try {
@@ -149,9 +235,9 @@ TEST(GradeAssignment, ErrorsNameTheField) {
         return std::string("no error");
     };
     EXPECT_EQ(error(R"({})"), "a.json: reference: is required");
-    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "colour"}]})"),
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "colour", "points": 1}]})"),
               "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range, "
-              "temperature)");
+              "temperature, equals)");
     EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "temperature", "light": "key", "min": 500,
                                                           "max": 3400, "points": 1}]})"),
               "a.json: rules[0].min: must be in [1000, 40000], got 500");
@@ -245,13 +331,13 @@ TEST(GradeOutputs, NamesAndReasonsAreEscapedInHtmlAndCsv) {
                                {"broken", "x"},
                                {"checks", nlohmann::json::array()},
                                {"images", nullptr}});
-    const std::string html = report_html(report, [](const std::string&) { return std::vector<std::uint8_t>{}; });
+    const std::string html = report_html(report, [](const std::string&) { return std::optional<ImageSize>{}; });
     EXPECT_EQ(html.find("<b>x"), std::string::npos);
     EXPECT_NE(html.find("&lt;b&gt;x&amp;y&lt;/b&gt;"), std::string::npos);
     EXPECT_NE(html.find("<title>&lt;T&gt;: grades</title>"), std::string::npos);
     const std::string csv = grades_csv(report);
     // One record: the newline stays inside quotes, the formula is defused, quotes doubled.
-    EXPECT_EQ(csv, "student,score,max,result,reasons,notes\n<b>x&y</b>,0,10,fail,\"'=cmd(), \"\"quoted\"\"\nsecond line\",\n");
+    EXPECT_EQ(csv, "student,score,max,result,reasons,notes\n<b>x&y</b>,0,10,refused,\"'=cmd(), \"\"quoted\"\"\nsecond line\",\n");
 }
 
 TEST(GradeOutputs, Base64) {

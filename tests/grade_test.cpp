@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <thread>
 
 namespace m3055::test {
@@ -63,6 +64,56 @@ TEST(Grade, BrdfSubmissionsAreGradedOnlyWithAllowBrdf) {
 
 // The students' files are named relative to the class folder, however the
 // teacher spells its path: the same reasons on every machine.
+// The paths a trace of open/openat/creat (strace -o) shows opened, with
+// whether each was opened for writing; failed opens are left out.
+std::vector<std::pair<std::string, bool>> opened_paths(const std::string& trace) {
+    std::vector<std::pair<std::string, bool>> out;
+    std::istringstream lines(read_text(trace));
+    for (std::string line; std::getline(lines, line);) {
+        const std::size_t open = line.find('"'), close = line.find('"', open + 1);
+        if (open == std::string::npos || close == std::string::npos || line.find(" = -1 ") != std::string::npos) continue;
+        const std::string flags = line.substr(close);
+        const bool writing = flags.find("O_WRONLY") != std::string::npos || flags.find("O_RDWR") != std::string::npos ||
+                             flags.find("O_CREAT") != std::string::npos || line.find("creat(") != std::string::npos;
+        out.emplace_back(line.substr(open + 1, close - open - 1), writing);
+    }
+    return out;
+}
+
+// A student's .brdf is code: Mesa's cache of the shaders compiled from it is
+// kept in --out, not the teacher's home, and the run opens nothing of the
+// home (gnuplot's ~/.gnuplot included) and writes nothing outside --out.
+TEST(Grade, NothingOfTheClassIsWrittenOrOpenedOutsideItAndOut) {
+    TempDir dir;
+    write_brdf_submission(dir.file("subs/zoe"));
+    fs::copy_file(kSubmissions + "/alice.json", dir.file("subs/alice.json"));
+    fs::create_directories(dir.file("home"));
+    write_text(dir.file("home/.gnuplot"), "# the teacher's own gnuplot settings\n");
+    const auto home = snapshot(dir.file("home"));
+    // strace may be missing, or ptrace not allowed (some containers): then only the home is checked.
+    const bool traced = std::system("strace -qq -o /dev/null true >/dev/null 2>&1") == 0;
+    const std::string command = "env -u XDG_CACHE_HOME -u MESA_SHADER_CACHE_DIR -u MESA_GLSL_CACHE_DIR HOME=" +
+                                dir.file("home") + " " +
+                                (traced ? "strace -f -qq -e trace=open,openat,creat -o " + dir.file("trace") + " " : "") +
+                                M3055_BINARY + " grade " + kAssignment + " " + dir.file("subs") + " --out " +
+                                dir.file("out") + " --allow-brdf 2>" + dir.file("err");
+    ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir.file("err"));
+    ASSERT_TRUE(by_student(read_json(dir.file("out/grades.json"))).at("zoe")["broken"].get<std::string>().empty());
+    EXPECT_EQ(snapshot(dir.file("home")), home) << "something was written to the teacher's home";
+    EXPECT_TRUE(fs::is_directory(dir.file("out/.shader-cache/mesa_shader_cache"))) << "the cache is in --out";
+    if (!traced) GTEST_SKIP() << "strace cannot run here: what the run opened is not checked";
+    const std::vector<std::pair<std::string, bool>> opened = opened_paths(dir.file("trace"));
+    ASSERT_GT(opened.size(), 10u);
+    for (const auto& [path, writing] : opened) {
+        EXPECT_NE(path.rfind(dir.file("home"), 0), 0u) << "opened in the home: " << path;
+        // Written: --out's files, by path or (the atomic temporaries) relative to its folders; devices.
+        if (writing)
+            EXPECT_TRUE(path.rfind(dir.file("out/"), 0) == 0 || path.rfind("/dev/", 0) == 0 ||
+                        (path[0] == '.' && path.find(".tmp-") != std::string::npos))
+                << "written outside --out: " << path;
+    }
+}
+
 TEST(Grade, SubmissionFilesAreNamedRelativeToTheClassFolder) {
     TempDir dir;
     fs::create_directories(dir.file("subs/zoe"));
@@ -89,7 +140,8 @@ TEST(Grade, OneSceneFileIsGradedAsInTheFolder) {
     TempDir dir;
     const RunResult one = run_m3055({"grade", kAssignment, kSubmissions + "/dave.json", "--out", dir.file("one")});
     ASSERT_EQ(one.exit_code, 0) << one.err;
-    EXPECT_NE(one.err.find("graded 1 submission, 0 passed"), std::string::npos) << one.err;
+    EXPECT_NE(one.err.find("m3055: 1 submission: 0 passed, 1 failed, 0 refused (not graded)"), std::string::npos)
+        << one.err;
     const RunResult all = run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("all")});
     ASSERT_EQ(all.exit_code, 0) << all.err;
     const auto alone = by_student(read_json(dir.file("one/grades.json")));
@@ -128,6 +180,36 @@ TEST(Grade, WorkedAssignmentScores) {
     EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
 }
 
+// "fail": graded, below the pass score; "refused": not graded (frank's scene
+// is out of range). The same word for the same student in every output.
+TEST(Grade, RefusedAndFailMeanOneThingInEveryOutput) {
+    TempDir out;
+    const RunResult run = run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const std::map<std::string, std::string> expected = {{"alice", "pass"}, {"carol", "fail"}, {"frank", "refused"}};
+    const std::string csv = read_text(out.file("grades.csv"));
+    const auto s = by_student(read_json(out.file("grades.json")));
+    const std::string report = read_text(out.file("report.html"));
+    for (const auto& [name, result] : expected) {
+        SCOPED_TRACE(name);
+        EXPECT_NE(csv.find("\n" + name + ","), std::string::npos);
+        const std::string row = csv.substr(csv.find("\n" + name + ",") + 1);
+        EXPECT_EQ(row.substr(0, row.find('\n')).find(",100," + result + ","), row.find(',', name.size() + 1)) << row;
+        EXPECT_EQ(s.at(name)["result"], result);
+        EXPECT_NE(run.err.find("m3055: " + name + ": "), std::string::npos);
+        const std::string line = run.err.substr(run.err.find("m3055: " + name + ": "));
+        EXPECT_NE(line.substr(0, line.find('\n')).find(" / 100 " + result), std::string::npos) << line;
+        EXPECT_NE(report.find("data-status=\"" + result + "\" data-student=\"" + name + "\""), std::string::npos);
+        EXPECT_NE(report.find("<td data-sort=\"" + result + "\" class=\"result " + result + "\">" + result + "</td>"),
+                  std::string::npos);
+    }
+    EXPECT_NE(run.err.find("m3055: 6 submissions: 2 passed, 3 failed, 1 refused (not graded)"), std::string::npos) << run.err;
+    EXPECT_NE(report.find("id=\"count-failed\">3<"), std::string::npos);
+    EXPECT_NE(report.find("id=\"count-refused\">1<"), std::string::npos);
+    EXPECT_NE(read_text(out.file("feedback/frank.html")).find("0 of 100 points: refused (not graded"), std::string::npos);
+    EXPECT_NE(read_text(out.file("feedback/carol.html")).find("50 of 100 points: failed"), std::string::npos);
+}
+
 TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
     TempDir dir;
     const std::string subs = dir.file("subs");
@@ -145,6 +227,7 @@ TEST(Grade, BrokenSubmissionsScoreZeroAndNeverStopTheRun) {
     write_brdf_submission(subs + "/brdfcode");      // code, and grade was not given --allow-brdf
     json assignment = read_json(kAssignment);
     assignment["reference"] = kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json";
+    assignment.erase("start");  // beside the worked assignment, not this copy
     assignment["time_budget"] = 2;
     write_text(dir.file("a.json"), assignment.dump());
     const RunResult run = run_m3055({"grade", dir.file("a.json"), subs, "--out", dir.file("out")});
@@ -185,21 +268,26 @@ TEST(Grade, KilledHalfwayLeavesNoTables) {
         EXPECT_FALSE(file_exists(dir.file(std::string("out/") + table))) << table;
     for (const auto& entry : fs::recursive_directory_iterator(dir.file("out"))) {
         const std::string name = fs::relative(entry.path(), dir.file("out")).string();
-        EXPECT_TRUE(std::regex_match(name, std::regex(R"(((students|diffs)/s\d{4}|reference)\.png|students|diffs|feedback)")))
+        EXPECT_TRUE(std::regex_match(name, std::regex(R"(((students|diffs)/s\d{4}|reference)\.png|students|diffs|feedback|\.m3055-grade|\.shader-cache(/.*)?)")))
             << "left behind: " << name;
     }
 }
 
 TEST(Grade, ReportOpensInHeadlessChromium) {
-    if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup installs it)";
+    if (!have_program("chromium")) GTEST_SKIP() << "chromium is not installed (scripts/setup --for-tests installs it)";
     TempDir out;
     ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", out.path()}).exit_code, 0);
-    // The page as shipped, plus a probe that counts the images that did not decode.
+    // The page as shipped, plus a probe that loads every image (they load
+    // lazily, as they near the view) and counts those that did not decode.
     std::string page = read_text(out.file("report.html"));
     EXPECT_EQ(page.find("http"), std::string::npos) << "no network";
-    const std::string probe = "<script>window.addEventListener('load',function(){var n=0;"
-                              "for(var i of document.images)if(i.id!=='viewer-img'&&(!i.complete||i.naturalWidth===0))n++;"
-                              "document.body.setAttribute('data-broken',n);});</script>";
+    const std::string probe = "<script>window.addEventListener('load',function(){var left=0,n=0;"
+                              "var all=[].filter.call(document.images,function(i){return i.id!=='viewer-img';});"
+                              "function done(){if(--left===0)document.body.setAttribute('data-broken',n);}"
+                              "left=all.length;all.forEach(function(i){i.loading='eager';"
+                              "if(i.complete&&i.naturalWidth>0){done();return;}"
+                              "i.addEventListener('load',done);i.addEventListener('error',function(){n++;done();});});});"
+                              "</script>";
     write_text(out.file("probe.html"), page.replace(page.rfind("</body>"), 7, probe + "</body>"));
     const std::string dom = out.file("dom.html");
     const std::string command = "chromium --headless --no-sandbox --disable-gpu --user-data-dir=" + out.file("profile") +
@@ -222,7 +310,7 @@ TEST(Grade, ReportOpensInHeadlessChromium) {
 }
 
 TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
-    if (!have_program("parallel")) GTEST_SKIP() << "GNU parallel is not installed (scripts/setup installs it)";
+    if (!have_program("parallel")) GTEST_SKIP() << "GNU parallel is not installed (scripts/setup --for-tests installs it)";
     TempDir dir;
     const std::string subs = dir.file("subs");
     fs::create_directories(subs);
@@ -237,12 +325,8 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
     const RunResult merge = run_m3055({"grade", "--merge", dir.file("shard3"), dir.file("shard1"), dir.file("shard4"),
                                        dir.file("shard2"), "--out", dir.file("merged")});
     ASSERT_EQ(merge.exit_code, 0) << merge.err;
-    for (const auto& entry : fs::recursive_directory_iterator(dir.file("one"))) {
-        if (entry.is_directory()) continue;  // students/, diffs/
-        const std::string name = fs::relative(entry.path(), dir.file("one")).string();
-        EXPECT_EQ(read_text(entry.path().string()), read_text(dir.file("merged/" + name))) << name;
-    }
-    EXPECT_EQ(snapshot(dir.file("one")).size(), snapshot(dir.file("merged")).size());
+    // Every file of the unsharded run but its shader cache, byte for byte.
+    EXPECT_EQ(snapshot(dir.file("merged")), snapshot(dir.file("one"), ".shader-cache"));
     // A missing shard is an error, not a smaller class.
     const RunResult partial = run_m3055({"grade", "--merge", dir.file("shard1"), dir.file("shard2"), "--out", dir.file("p")});
     EXPECT_EQ(partial.exit_code, 1);
@@ -255,17 +339,50 @@ TEST(Grade, FourShardsUnderParallelMergeToTheSameBytes) {
 namespace m3055::test {
 namespace {
 
-// grades/ inside the submissions folder, as a teacher may put it: on the
-// second run it is not taken for a student's folder.
-TEST(Grade, AnOutputFolderInsideTheSubmissionsIsNoStudent) {
+// grades/ inside the submissions folder would be a student's folder to the
+// next run: refused before anything is written, as the folder itself is.
+TEST(Grade, AnOutputFolderInsideTheSubmissionsIsRefused) {
     TempDir dir;
     const std::string subs = dir.file("subs");
     fs::create_directories(subs);
     fs::copy_file(kSubmissions + "/alice.json", subs + "/alice.json");
-    for (int run = 0; run < 2; ++run) {
-        ASSERT_EQ(run_m3055({"grade", kAssignment, subs, "--out", subs + "/grades"}).exit_code, 0);
-        EXPECT_EQ(read_json(subs + "/grades/grades.json")["students"].size(), 1u) << "run " << run;
+    const auto before = snapshot(subs);
+    for (const std::string& out : {subs + "/grades", subs + "/../subs/deeper/grades", subs, subs + "/"}) {
+        SCOPED_TRACE(out);
+        const RunResult run = run_m3055({"grade", kAssignment, subs, "--out", out});
+        EXPECT_EQ(run.exit_code, 1) << run.err;
+        EXPECT_NE(run.err.find("--out: is"), std::string::npos) << run.err;
+        EXPECT_NE(run.err.find("the submissions folder"), std::string::npos) << run.err;
+        EXPECT_EQ(snapshot(subs), before) << "nothing written";
     }
+    // A student's own file, checked alone, may have its grades beside it.
+    const RunResult one = run_m3055({"grade", kAssignment, subs + "/alice.json", "--out", subs + "/check"});
+    EXPECT_EQ(one.exit_code, 0) << one.err;
+}
+
+// --out is a new folder, an empty one or one m3055 grade wrote (its marker
+// file): a folder of other work is refused untouched, by grade and by --merge.
+TEST(Grade, AnOutputFolderOfOtherFilesIsRefusedUnlessEmpty) {
+    TempDir dir;
+    fs::create_directories(dir.file("work"));
+    write_text(dir.file("work/thesis.tex"), "the teacher's");
+    const auto before = snapshot(dir.file("work"));
+    const RunResult other = run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("work")});
+    EXPECT_EQ(other.exit_code, 1);
+    EXPECT_NE(other.err.find("work: --out: not empty, and not written by m3055 grade (no .m3055-grade in it)"),
+              std::string::npos) << other.err;
+    EXPECT_EQ(snapshot(dir.file("work")), before);
+    fs::create_directories(dir.file("empty"));
+    ASSERT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("empty")}).exit_code, 0);
+    EXPECT_TRUE(file_exists(dir.file("empty/.m3055-grade")));
+    // Its own folder again: the teacher's notes in it are left alone.
+    write_text(dir.file("empty/notes.txt"), "the teacher's");
+    EXPECT_EQ(run_m3055({"grade", kAssignment, kSubmissions, "--out", dir.file("empty")}).exit_code, 0);
+    EXPECT_EQ(read_text(dir.file("empty/notes.txt")), "the teacher's");
+    const RunResult merge = run_m3055({"grade", "--merge", dir.file("empty"), "--out", dir.file("work")});
+    EXPECT_EQ(merge.exit_code, 1);
+    EXPECT_NE(merge.err.find("not written by m3055 grade"), std::string::npos) << merge.err;
+    EXPECT_EQ(snapshot(dir.file("work")), before);
 }
 
 }  // namespace
@@ -285,6 +402,7 @@ TEST(Grade, ImageReferencesGradeAsTheSceneDoes) {
     for (const std::string reference : {"ref.png", "ref.pfm"}) {
         json assignment = read_json(kAssignment);
         assignment["reference"] = reference;
+        assignment.erase("start");  // beside the worked assignment, not this copy
         write_text(dir.file("a.json"), assignment.dump());
         const std::string out = dir.file("out-" + reference);
         const RunResult run = run_m3055({"grade", dir.file("a.json"), kSubmissions, "--out", out});

@@ -277,10 +277,12 @@ TEST(Layering, EveryPathACommentNamesExists) {
     ASSERT_FALSE(graph.empty()) << library_graph_path();
     const fs::path root = test::source_path("");
     // A path starts at the repository's root, or at a library's include root
-    // ("scene/load.h"), or in glsl/ (shader files are named from there).
+    // ("scene/load.h"), or in glsl/ (shader files are named from there). A
+    // build tree (build/, build-web/: a CMakeCache.txt) is not the repository:
+    // what it holds comes and goes with the builds run.
     std::map<std::string, std::vector<fs::path>> bases;
     for (const auto& entry : fs::directory_iterator(root))
-        if (entry.is_directory() && entry.path().filename() != ".git")
+        if (entry.is_directory() && entry.path().filename() != ".git" && !fs::exists(entry.path() / "CMakeCache.txt"))
             bases[entry.path().filename().string()].push_back(root);
     for (const auto& [name, library] : graph) bases[leaf(library.folder)].push_back(root / fs::path(library.folder).parent_path());
     for (const auto& entry : fs::directory_iterator(root / "glsl"))

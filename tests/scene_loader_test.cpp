@@ -467,7 +467,7 @@ TEST(SceneLoader, EveryErrorClassGivesItsExactOneLineMessage) {
         {"radius upper bound", [](json& d) { d["objects"][0]["radius"] = 2e6; },
          "scene.json: objects[0].radius: must be in (0, 1000000], got 2000000"},
         {"shape", [](json& d) { d["objects"][0]["shape"] = "teapot"; },
-         "scene.json: objects[0].shape: must be \"sphere\", \"plane\", \"cube\", \"cylinder\" or \"torus\", got \"teapot\""},
+         "scene.json: objects[0].shape: must be \"sphere\", \"plane\", \"cube\", \"cylinder\", \"torus\" or \"mesh\", got \"teapot\""},
         {"objects type", [](json& d) { d["objects"] = {{"a", 1}}; }, "scene.json: objects: must be an array"},
         {"object type", [](json& d) { d["objects"].push_back(3); }, "scene.json: objects[1]: must be an object"},
         {"coordinate bound", [](json& d) { d["objects"][0]["center"] = {0, 0, -1e7}; },

@@ -95,7 +95,7 @@ TEST(ShapesLoader, EveryNewFieldGivesItsOneLineError) {
     };
     const std::vector<Case> cases = {
         {[](json& d) { d["objects"][0]["shape"] = "teapot"; },
-         R"(scene.json: objects[0].shape: must be "sphere", "plane", "cube", "cylinder" or "torus", got "teapot")"},
+         R"(scene.json: objects[0].shape: must be "sphere", "plane", "cube", "cylinder", "torus" or "mesh", got "teapot")"},
         {[](json& d) { d["objects"][0]["normal"] = {0, 0, 0}; }, "scene.json: objects[0].normal: must be non-zero"},
         {[](json& d) { d["objects"][0]["normal"] = {0, 1}; },
          "scene.json: objects[0].normal: must be an array of 3 numbers"},
@@ -124,7 +124,7 @@ TEST(ShapesLoader, EveryNewFieldGivesItsOneLineError) {
         {[](json& d) { d["objects"][2]["segments"] = 16.5; },
          "scene.json: objects[2].segments: must be a whole number, got 16.5"},
         {[](json& d) { d["objects"][2]["rotation_deg"] = {0, 0, 0}; },
-         "scene.json: objects[2].rotation_deg: only for cubes"},
+         "scene.json: objects[2].rotation_deg: only for cubes and meshes"},
         {[](json& d) { d["objects"][3].erase("major_radius"); },
          "scene.json: objects[3].major_radius: is required"},
         {[](json& d) { d["objects"][3]["minor_radius"] = 1; },

@@ -137,7 +137,8 @@ public:
     void wait_for_work() {
         const bool script_busy = script_ && !script_->finished() && !script_->idling();
         // Watched .brdf files: wake at least every poll period.
-        const double most = watched_brdf_files(e_).empty() ? 1e30 : kBrdfPollSeconds;
+        const bool watching = e_.session.platform.watch_files && !watched_brdf_files(e_).empty();
+        const double most = watching ? kBrdfPollSeconds : 1e30;
         Practice* practice = panes_ ? panes_->practice() : nullptr;
         if (frame_needed() || script_busy) window_.poll();
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
@@ -146,7 +147,7 @@ public:
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
         else window_.wait(most < 1e30 ? most : -1.0);
-        if (poll_brdf_files(e_, window_.time())) owe_frames(1);
+        if (watching && poll_brdf_files(e_, window_.time())) owe_frames(1);
         step_script();
     }
 
@@ -401,7 +402,7 @@ private:
             draw_nonfinite_warning();
         }
         const std::string& error = e_.session.messages.error;
-        if (!e_.view.show_panels && !error.empty())
+        if (!e_.view.show_panels && !error.empty() && !e_.session.platform.error_line_outside)
             ImGui::GetForegroundDrawList()->AddText(ImVec2(10, 10), IM_COL32(255, 110, 110, 255), error.c_str());
     }
 
@@ -579,6 +580,8 @@ bool ExplorerSession::step() {
 }
 
 bool ExplorerSession::idle() const { return !parts_->loop->frame_needed(); }
+
+double ExplorerSession::asked_sleep() const { return idle() ? parts_->window->asked_sleep() : 0.0; }
 
 int ExplorerSession::finish() { return parts_->loop->finish(); }
 

@@ -52,6 +52,10 @@ public:
     // to Dear ImGui, the frames owed after them drawn, the scene's change
     // rendered (the page's m3055.settled()).
     bool idle() const;
+    // After a step: 0 when the loop must go on, else how long it would sleep
+    // (< 0: until the next input; seconds: until a timed job, a deferred
+    // compile, a settled grade). The page stops its animation frames so long.
+    double asked_sleep() const;
     int finish();  // --stats; the exit status
     explore::Explorer& explorer();
     long renders() const;  // scene renders so far (a changed scene drawn once each)

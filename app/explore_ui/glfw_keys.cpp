@@ -7,6 +7,7 @@ namespace m3055::explore {
 KeyPress key_press_from_glfw(int key, int mods) {
     KeyPress press;
     press.ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    press.alt = (mods & GLFW_MOD_ALT) != 0;
     press.shift = (mods & GLFW_MOD_SHIFT) != 0;
     if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9) press.key = Key::digit, press.digit = key - GLFW_KEY_0;
     else if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) press.key = Key::digit, press.digit = key - GLFW_KEY_KP_0;

@@ -112,6 +112,25 @@ EM_BOOL on_wheel(int, const EmscriptenWheelEvent* wheel, void* window) {
 }
 #endif
 
+// A readable font where the system has one (ImGui's built-in one
+// otherwise), rasterized at `scale` device pixels per ImGui unit and drawn at
+// 1/scale, so that text is 15 units high and sharp on the device's pixels.
+void load_font(float scale) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    io.FontGlobalScale = 1.0f / scale;
+    if (std::FILE* f = std::fopen(kFont, "rb")) {
+        std::fclose(f);
+        // Latin and Greek (F(\u03bb, 0), \u03c3, \u03b1): DejaVu has both; ImGui 1.86 names no Greek range.
+        static const ImWchar kLatinAndGreek[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0};
+        io.Fonts->AddFontFromFileTTF(kFont, 15.0f * scale, nullptr, kLatinAndGreek);
+    } else {
+        ImFontConfig config;
+        config.SizePixels = 13.0f * scale;
+        io.Fonts->AddFontDefault(&config);
+    }
+}
+
 }  // namespace
 
 ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
@@ -121,13 +140,7 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window) : window_(window) {
     io.IniFilename = nullptr;  // fixed layout: nothing to remember between runs
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0.0f;
-    // A readable font where the system has one; ImGui's built-in one otherwise.
-    if (std::FILE* f = std::fopen(kFont, "rb")) {
-        std::fclose(f);
-        // Latin and Greek (F(\u03bb, 0), \u03c3, \u03b1): DejaVu has both; ImGui 1.86 names no Greek range.
-        static const ImWchar kLatinAndGreek[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0};
-        io.Fonts->AddFontFromFileTTF(kFont, 15.0f, nullptr, kLatinAndGreek);
-    }
+    load_font(1.0f);
     ImGui_ImplGlfw_InitForOpenGL(window, true);  // its key and char callbacks chain to the window's
     glfwSetKeyCallback(window, queue_key);       // ... and are called from the queue (new_frame)
     glfwSetCharCallback(window, queue_char);
@@ -189,10 +202,31 @@ void ImGuiLayer::new_frame() {
     const bool pointer_in_window = io.MousePos.x > -FLT_MAX;
     if (button_fed || ((pointer_fed || !queue.empty()) && pointer_known_ && pointer_in_window))
         io.MousePos = ImVec2(float(pointer_x_), float(pointer_y_));
+#ifdef __EMSCRIPTEN__
+    apply_ui_scale(float(emscripten_get_device_pixel_ratio()));
+#endif
     // Dear ImGui 1.86 asserts on a zero time step; two frames in one tick of
     // the clock happen in a browser (its timers are coarse on purpose).
     if (!(io.DeltaTime > 0.0f)) io.DeltaTime = 1e-4f;
     ImGui::NewFrame();
+}
+
+// The page's canvas is sized in device pixels (app/web/page.js): ImGui works in
+// CSS pixels (devicePixelRatio, the browser's zoom included, device pixels
+// each) and draws at the device's, as on a desktop's HiDPI screen, so the
+// panels read at their size on any screen and at any zoom.
+void ImGuiLayer::apply_ui_scale(float scale) {
+    if (!(scale > 0.0f)) scale = 1.0f;
+    ImGuiIO& io = ImGui::GetIO();
+    if (scale != ui_scale_) {
+        ui_scale_ = scale;
+        load_font(scale);
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+    io.DisplaySize = ImVec2(io.DisplaySize.x / scale, io.DisplaySize.y / scale);
+    io.DisplayFramebufferScale = ImVec2(scale, scale);
+    if (io.MousePos.x > -FLT_MAX) io.MousePos = ImVec2(io.MousePos.x / scale, io.MousePos.y / scale);
 }
 
 void ImGuiLayer::render() {

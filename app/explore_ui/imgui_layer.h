@@ -21,7 +21,9 @@ public:
     void render();     // ImGui::Render and the OpenGL backend's draw into the bound framebuffer
 
 private:
+    void apply_ui_scale(float scale);  // ImGui units to device pixels (the page's devicePixelRatio)
     GLFWwindow* window_;
+    float ui_scale_ = 1.0f;
     // Each button as the queue has fed it (ImGui 1.86's GLFW backend reads the
     // buttons' live state at NewFrame, which may be ahead of the queue).
     bool buttons_down_[5] = {};

@@ -52,7 +52,8 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
     // The sections scroll in a region of their own; an error shows under it
     // (never inserted above the controls: they keep their place).
     const float line = ImGui::GetTextLineHeightWithSpacing();
-    const float error_h = explorer.session.messages.error.empty() ? 0.0f : 4.0f * line;
+    const bool error_block = !explorer.session.messages.error.empty() && !explorer.session.platform.error_line_outside;
+    const float error_h = error_block ? 4.0f * line : 0.0f;
     ImGui::BeginChild("sections", ImVec2(0.0f, -error_h), false);
     // Room for the labels on the right: 110 px, and what the panel grew by
     // (its width follows its content; the widgets keep theirs).
@@ -78,7 +79,7 @@ void draw_side_panel(Explorer& explorer, FrameInfo& info, float x, float y, floa
     info.side_overflow = std::max(0.0f, sections->DC.CursorMaxPos.x - sections->InnerClipRect.Max.x);
     ImGui::EndChild();
 
-    if (!explorer.session.messages.error.empty()) {
+    if (error_block) {
         ImGui::BeginChild("error", ImVec2(0.0f, 0.0f), false);
         ImGui::Separator();
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 110, 110, 255));
@@ -121,8 +122,9 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
     ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
     ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
-    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, shown %d x", d.width, d.height, d.bits, info.scale);
-    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, shrunk", d.width, d.height, d.bits);
+    const char* transform = d.view_transform == ViewTransform::srgb ? "sRGB" : "linear";
+    if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, %s, shown %d x", d.width, d.height, d.bits, transform, info.scale);
+    else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, %s, shrunk", d.width, d.height, d.bits, transform);
     tooltip("The display's size and bits, and its magnification: whole pixels, nearest-neighbour; shrunk (not "
             "whole pixels) when even 1:1 does not fit.");
     if (!info.compare_count.empty()) {

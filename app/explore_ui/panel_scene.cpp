@@ -2,6 +2,7 @@
 #include "explore_ui/panels.h"
 
 #include "explore/figure_scenes.h"
+#include "explore/keys.h"
 #include "explore_ui/narrow_panel.h"
 #include "explore_ui/shape_editor.h"
 #include "explore_ui/widgets.h"
@@ -38,6 +39,17 @@ void display_section(Explorer& explorer, const FrameInfo& info) {
     ImGui::TextDisabled("%d levels", 1 << display.bits);
     if (checkbox("ordered dithering (4x4 Bayer)", &display.dither)) explorer.commands.push(command::SetDisplay{display, ""});
     tooltip("a 4x4 Bayer threshold before quantization (spec section 2); off on the paper's figures");
+    // The view transform: the M3055 showed levels of the linear value (the
+    // paper's figures); a modern display shows sRGB-encoded colour, as other tools do.
+    int transform = display.view_transform == ViewTransform::srgb ? 1 : 0;
+    if (ImGui::Combo(field("view transform").c_str(), &transform, "none (linear levels)\0sRGB\0")) {
+        display.view_transform = transform == 1 ? ViewTransform::srgb : ViewTransform::none;
+        explorer.commands.push(command::SetDisplay{display, ""});
+    }
+    tooltip("What the display does to a colour before its levels: none (the M3055, as the paper's figures: "
+            "levels of the linear value), or sRGB's encoding (IEC 61966-2-1), as other tools and screens show "
+            "colour: gold's (1.04, 0.73, 0.37) reads (255, 222, 163) instead of (255, 186, 93). Saved as "
+            "display.view_transform; m3055 render --view-transform.");
     dvec3 background = explorer.doc.scene.background;
     if (color_edit("background", &background)) explorer.commands.push(command::SetBackground{background});
     tooltip("the colour behind the objects, RGB in [0, 1]; translucent objects blend over it");
@@ -73,7 +85,8 @@ bool object_fields(Explorer& explorer, int i) {
 }  // namespace
 
 void objects_section(Explorer& explorer) {
-    ImGui::TextWrapped("figure presets (Ctrl+1-9, Ctrl+0 = spec example):");
+    const char* chord = figure_chord_name(explorer.session.platform.figure_chord);
+    ImGui::TextWrapped("figure presets (%s+1-9, %s+0 = spec example):", chord, chord);
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;

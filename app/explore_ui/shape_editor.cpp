@@ -30,7 +30,12 @@ bool direction_edit(const char* label, dvec3* direction) {
 bool shape_editor(Object& o) {
     bool changed = false;
     int current = static_cast<int>(o.shape);
-    if (ImGui::Combo(field("shape").c_str(), &current, "sphere\0plane\0cube\0cylinder\0torus\0")) {
+    if (o.shape == Shape::mesh) {
+        // A model file's mesh keeps its shape and file here; its size and rotation are edited below.
+        ImGui::TextUnformatted(("mesh: " + o.file).c_str());
+        tooltip("A model file (docs/shapes.md#meshes-from-files): its bounding box centred on the centre, its "
+                "largest side the size, then rotated as a cube.");
+    } else if (ImGui::Combo(field("shape").c_str(), &current, "sphere\0plane\0cube\0cylinder\0torus\0")) {
         set_shape(o, kAllShapes[current]);
         changed = true;
     }
@@ -53,9 +58,13 @@ bool shape_editor(Object& o) {
             changed |= slider_double("size", &o.size, 0.01, 100.0, "%.3f", true);
             tooltip("The side of the square in scene units, 0.01 to 100 here ((0, 1e6] in the format; logarithmic).");
             break;
-        case Shape::cube: {
-            changed |= slider_double("edge", &o.size, 0.01, 20.0, "%.3f", true);
-            tooltip("The cube's edge in scene units, 0.01 to 20 here ((0, 1e6] in the format; logarithmic).");
+        case Shape::cube:
+        case Shape::mesh: {
+            const bool cube = o.shape == Shape::cube;
+            changed |= slider_double(cube ? "edge" : "size", &o.size, 0.01, 20.0, "%.3f", true);
+            tooltip(cube ? "The cube's edge in scene units, 0.01 to 20 here ((0, 1e6] in the format; logarithmic)."
+                         : "The model's largest side in scene units, 0.01 to 20 here ((0, 1e6] in the format; "
+                           "logarithmic).");
             double r[3] = {o.rotation_deg.x, o.rotation_deg.y, o.rotation_deg.z};
             const double lo = -360.0, hi = 360.0;
             if (ImGui::DragScalarN(field("rotation x,y,z").c_str(), ImGuiDataType_Double, r, 3, 0.5f, &lo, &hi, "%.1f deg",

@@ -90,11 +90,15 @@ void Window::set_title(const std::string& title) {
     glfwSetWindowTitle(window_, title_.c_str());
 }
 
-void Window::poll() { glfwPollEvents(); }
+void Window::poll() {
+    asked_sleep_ = 0.0;
+    glfwPollEvents();
+}
 
 void Window::wait(double seconds) {
+    asked_sleep_ = seconds;
 #ifdef __EMSCRIPTEN__
-    (void)seconds;  // a page cannot block: the browser calls the loop again on its next animation frame
+    (void)seconds;  // a page cannot block: it sleeps between animation frames (ExplorerSession::asked_sleep)
 #else
     if (seconds < 0.0) glfwWaitEvents();  // idle: no CPU until the next event
     else glfwWaitEventsTimeout(seconds);

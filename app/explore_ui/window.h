@@ -50,6 +50,9 @@ public:
     void set_title(const std::string& title);  // only touches GLFW when it changes
     void poll();                                // handle pending events, don't wait
     void wait(double seconds);                  // sleep until an event or `seconds` (< 0: forever)
+    // What the last poll or wait asked: 0 (go on), or the sleep (< 0: until an
+    // event). A page cannot block: it stops its animation frames for as long.
+    double asked_sleep() const { return asked_sleep_; }
     double time() const;                        // glfwGetTime()
     // A GL function of the window's context, by name (for load_gl_api).
     static void* gl_proc_address(const char* name);
@@ -62,6 +65,7 @@ private:
     bool glfw_ready_ = false;
     std::string error_, title_;
     WindowEvents events_;
+    double asked_sleep_ = 0.0;
 };
 
 }  // namespace m3055::explore

@@ -1,8 +1,9 @@
 // The page around the explorer (docs/web.md): sizes the canvas in device
 // pixels, starts main() once a practice assignment or a share link is in the
 // work folder, turns the explorer's written files into downloads and its
-// File > Open into the browser's file chooser, and offers window.m3055, the
-// test API.
+// File > Open into the browser's file chooser, shows the current error in the
+// bar, wakes the explorer's sleeping loop on input, asks before unsaved edits
+// are lost, and offers window.m3055, the test API.
 'use strict';
 (function () {
   const WORK = '/work';
@@ -10,9 +11,22 @@
   const note = document.getElementById('note');
   const message = document.getElementById('message');
   const fileInput = document.getElementById('file');
-  let started, failed;
-  let startNote = '';  // why a share or practice link did not open (shown once started)
+  const errorLine = document.getElementById('error');
+  const errorText = document.getElementById('error-text');
+  let started, failed, isReady = false;
+  let startError = '';  // why a share or practice link did not open (shown once started)
   const ready = new Promise((resolve, reject) => { started = resolve; failed = reject; });
+  ready.then(() => { isReady = true; }, () => {});
+
+  // Emscripten's GLFW listens for gamepads being connected, and a page that
+  // listens for them has the browser poll the gamepads 60 times a second
+  // (2 % of a core here while the explorer sleeps). The explorer reads no
+  // gamepad: those two listeners are not added.
+  const addListener = window.addEventListener;
+  window.addEventListener = function (type, ...rest) {
+    if (type === 'gamepadconnected' || type === 'gamepaddisconnected') return;
+    return addListener.call(this, type, ...rest);
+  };
 
   function deviceSize() {
     const dpr = window.devicePixelRatio || 1;
@@ -21,6 +35,46 @@
   }
   function say(text) { note.textContent = text; note.title = text; }
   function basename(path) { return path.split('/').pop(); }
+
+  // The one place for the current error: the explorer's (its newest error
+  // message, explore/current_error.h) or the page's own (a link that did not
+  // open), the newer of the two, whole, on its own line under the buttons.
+  // Its × hides it until another error comes.
+  let explorerError = '';
+  function showError(text) {
+    errorText.textContent = text;
+    errorLine.hidden = !text;
+  }
+  document.getElementById('error-close').addEventListener('click', () => showError(''));
+
+  // The explorer's loop sleeps when it has nothing to do (as the desktop's
+  // waits for an event): any input, a call below, or the time a timed job
+  // asked for wakes it.
+  let sleepTimer = null;
+  function wake() {
+    clearTimeout(sleepTimer);
+    sleepTimer = null;
+    if (isReady) Module.ccall('m3055_wake', null, [], []);
+  }
+  for (const type of ['keydown', 'keyup', 'mousedown', 'mouseup', 'mousemove', 'wheel', 'mouseover', 'mouseout',
+                      'touchstart', 'touchmove', 'touchend', 'focus', 'blur', 'resize', 'drop'])
+    window.addEventListener(type, wake, true);
+  // An exported function of the explorer, then its loop woken to draw what it changed.
+  function call(name, returns, types, args) {
+    const result = Module.ccall(name, returns, types, args);
+    wake();
+    return result;
+  }
+
+  // Screenshots are numbered after every file downloaded before, in this
+  // visit or an earlier one (the browser's downloads folder keeps them).
+  const DOWNLOADS = 'm3055.downloads';
+  const downloaded = new Set();
+  try { for (const name of JSON.parse(localStorage.getItem(DOWNLOADS) || '[]')) downloaded.add(name); } catch (e) { /* none kept */ }
+  function noteDownload(name) {
+    downloaded.add(name);
+    try { localStorage.setItem(DOWNLOADS, JSON.stringify(Array.from(downloaded).slice(-5000))); } catch (e) { /* not kept */ }
+  }
 
   // Files written by the explorer (Save, Save as, F12) leave as downloads.
   function download(path) {
@@ -34,6 +88,7 @@
     a.click();
     a.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10000);
+    noteDownload(basename(path));
     say('downloaded ' + basename(path));
   }
 
@@ -50,21 +105,22 @@
   }
 
   // Picked files: every file into the work folder, then the scene (or the
-  // one .brdf) opened, so a scene finds the .brdf files picked with it.
+  // one .brdf) opened, so a scene finds the .brdf and model files (.obj, .mtl,
+  // .gltf, .glb, .bin) picked with it.
   async function openFiles(files) {
     const list = Array.from(files);
     if (list.some((f) => f.name === 'assignment.json')) return practiseFiles(list);
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
-    const scene = list.find((f) => !f.name.endsWith('.brdf')) || list[0];
+    const scene = list.find((f) => f.name.endsWith('.json')) || list.find((f) => !f.name.endsWith('.brdf')) || list[0];
     if (!scene) return;
-    // A chooser gives names without folders: a .brdf the scene names in a
-    // subfolder ("brdfs/my.brdf") and that was picked with it ("my.brdf") is
-    // put where the scene looks for it too.
+    // A chooser gives names without folders: a .brdf or model file the scene
+    // names in a subfolder ("brdfs/my.brdf", "meshes/vase.obj") and that was
+    // picked with it ("my.brdf") is put where the scene looks for it too.
     if (!scene.name.endsWith('.brdf')) {
       let named = [];
       try {
         named = (JSON.parse(await scene.text()).objects || [])
-          .map((o) => o && o.material && o.material.file).filter((f) => typeof f === 'string');
+          .flatMap((o) => [o && o.material && o.material.file, o && o.file]).filter((f) => typeof f === 'string');
       } catch (e) { /* not JSON: the loader says so */ }
       for (const name of named) {
         const picked = list.find((f) => f.name === basename(name));
@@ -72,8 +128,8 @@
           writeWorkFile(name, new Uint8Array(await picked.arrayBuffer()));
       }
     }
-    const error = Module.ccall('m3055_open_file', 'string', ['string'], [scene.name]);
-    say(error ? error : 'opened ' + scene.name);
+    const error = call('m3055_open_file', 'string', ['string'], [scene.name]);
+    say(error ? 'could not open ' + scene.name : 'opened ' + scene.name);  // the error: the error line
     canvas.focus();
   }
   // Picked files being read (m3055.settled() waits for them too), and how
@@ -100,11 +156,12 @@
     const assignment = list.filter((f) => f.name === 'assignment.json')
       .sort((a, b) => place(a).split('/').length - place(b).split('/').length)[0];
     if (!assignment) {
-      say('practice: no assignment.json among the picked files: pick the assignment\'s folder');
+      showError('practice: no assignment.json among the picked files: pick the assignment\'s folder');
       return;
     }
-    const error = Module.ccall('m3055_practise', 'string', ['string'], [WORK + '/' + folder + '/' + place(assignment)]);
-    say(error ? error : 'practising ' + place(assignment) + ': graded as you edit; Ctrl+S downloads submission.json');
+    const error = call('m3055_practise', 'string', ['string'], [WORK + '/' + folder + '/' + place(assignment)]);
+    if (error) showError(error);
+    say(error ? 'practice did not start' : 'practising ' + place(assignment) + ': graded as you edit; Ctrl+S downloads submission.json');
     canvas.focus();
   }
   const folderInput = document.getElementById('assignment-folder');
@@ -123,7 +180,7 @@
     try {
       link = await shareLink();
     } catch (e) {
-      say(e.message);
+      showError(e.message);
       return;
     }
     try {
@@ -135,13 +192,28 @@
   });
 
   // Browser shortcuts that would fight the explorer's: Ctrl+S saves the
-  // scene, not the page; Ctrl+O, Ctrl+Z/Y, F1 and F12 are the explorer's.
+  // scene, not the page; Ctrl+Z/Y, F1 and F12 are the explorer's; Ctrl+O is
+  // Open… (a key press may open the file chooser, as a click on the bar may).
+  // Ctrl+digit stays the browser's: the figure keys are Ctrl+Alt+digit.
   window.addEventListener('keydown', (e) => {
     const ctrl = e.ctrlKey || e.metaKey;
-    if ((ctrl && ['a', 's', 'o', 'z', 'y'].includes(e.key.toLowerCase())) || e.key === 'F1' || e.key === 'F12') {
-      e.preventDefault();
-    }
+    const key = (e.key || '').toLowerCase();
+    if ((ctrl && ['a', 's', 'o', 'z', 'y'].includes(key)) || e.key === 'F1' || e.key === 'F12') e.preventDefault();
+    if (ctrl && !e.altKey && !e.shiftKey && key === 'o' && !e.repeat) fileInput.click();
+    if (e.key === 'Escape' && !help.hidden) help.hidden = true;
   }, true);
+
+  // The page's help: the keys (the figure keys the browser does not own).
+  const help = document.getElementById('help');
+  document.getElementById('help-button').addEventListener('click', () => { help.hidden = !help.hidden; });
+
+  // Closing or reloading the tab with unsaved edits: the browser asks first,
+  // as the desktop explorer does before it quits.
+  window.addEventListener('beforeunload', (e) => {
+    if (!isReady || !Module.ccall('m3055_unsaved', 'number', [], [])) return;
+    e.preventDefault();
+    e.returnValue = '';
+  });
 
   // Practice mode: ?assignment=FOLDER/ fetches the assignment and its scenes
   // into the work folder; main() then starts with --assignment.
@@ -178,11 +250,11 @@
         writeWorkFile('.keep', '');
         const error = Module.ccall('m3055_unpack_share_token', 'string', ['string', 'string'],
                                    [hash.get('scene'), WORK + '/shared-scene.json']);
-        if (error) startNote = 'the share link did not open: ' + error;
+        if (error) startError = 'the share link did not open: ' + error;
         else args.push('shared-scene.json');  // relative to the work folder (main's): its .brdf files show by their names
       }
     } catch (e) {
-      startNote = String(e.message || e);
+      startError = String(e.message || e);
     }
     const [w, h] = deviceSize();
     canvas.width = w;
@@ -212,21 +284,41 @@
     },
     started: () => {
       message.remove();
-      say(startNote || 'ready: drop a scene or .brdf file on the explorer, or use Open…');
+      say('ready: drop a scene or .brdf file on the explorer, or use Open…');
+      if (startError) showError(startError);
       canvas.focus();
       started();
     },
+    // The loop sleeps until the next input, or `ms` milliseconds (>= 0).
+    sleeping: (ms) => {
+      clearTimeout(sleepTimer);
+      sleepTimer = ms >= 0 ? setTimeout(wake, ms) : null;
+    },
+    explorerError: (text) => {
+      if (text) showError(text);
+      else if (errorText.textContent === explorerError) showError('');
+      explorerError = text;
+    },
+    downloadedBefore: (name) => downloaded.has(name),
     startFailed: () => {
       message.textContent = 'The explorer could not start: ' + (window.m3055Page.lastError || 'see the console');
       failed(new Error(message.textContent));
     },
   };
 
-  window.addEventListener('resize', () => {
+  // The canvas's drawing buffer follows its size in device pixels: a resized
+  // window, the bar growing (an error line), the browser's zoom or another screen.
+  function fitCanvas() {
     if (!Module.setCanvasSize) return;
     const [w, h] = deviceSize();
     if (w !== canvas.width || h !== canvas.height) Module.setCanvasSize(w, h);
-  });
+    wake();
+  }
+  window.addEventListener('resize', fitCanvas);
+  new ResizeObserver(fitCanvas).observe(canvas);
+  (function watchPixelRatio() {
+    matchMedia(`(resolution: ${window.devicePixelRatio}dppx)`).addEventListener('change', () => { fitCanvas(); watchPixelRatio(); }, { once: true });
+  })();
 
   window.Module = {
     canvas,
@@ -243,11 +335,11 @@
     async loadScene(jsonText, name = 'scene.json') {
       await ready;
       writeWorkFile(name, jsonText);
-      rejectIf(Module.ccall('m3055_load_scene', 'string', ['string'], [name]));
+      rejectIf(call('m3055_load_scene', 'string', ['string'], [name]));
     },
     async displayPNG() {
       await ready;
-      const url = Module.ccall('m3055_display_png', 'string', [], []);
+      const url = call('m3055_display_png', 'string', [], []);
       if (!url) throw new Error(Module.ccall('m3055_last_error', 'string', [], []));
       return url;
     },
@@ -257,7 +349,7 @@
     },
     async gradeLine() {
       await ready;
-      return Module.ccall('m3055_grade_line', 'string', [], []);
+      return call('m3055_grade_line', 'string', [], []);
     },
     shareLink,
     // How many picks of files (Open…, Practise…) the page has handled so far.

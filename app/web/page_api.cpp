@@ -13,6 +13,7 @@
 #include "gl/program.h"
 #include "image/image.h"
 #include "io/message_text.h"
+#include "scene/load.h"
 
 #include <emscripten.h>
 
@@ -20,6 +21,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace m3055::web {
 
@@ -110,21 +113,31 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_share_fragment(void) {
 
 // A share link's token unpacked into the work folder: the scene as `path` (a
 // scene file main() then starts with), the .brdf files it carries beside it
-// under their names. "" or the one-line reason (nothing written then).
+// under their names, and the scene loaded once as the explorer will load it.
+// "" or the one-line reason, the loader's for a scene it refuses (nothing
+// left written then: the page starts on the spec example).
 EMSCRIPTEN_KEEPALIVE const char* m3055_unpack_share_token(const char* token, const char* path) {
     static std::string result;
     result.clear();
+    std::vector<std::filesystem::path> written;
     try {
         const explore::SharedScene shared = explore::unpack_share_token(token);
-        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        const std::filesystem::path scene = path, folder = scene.parent_path();
         for (const explore::SharedFile& file : shared.files) {
             const std::filesystem::path target = folder / file.name;
             std::filesystem::create_directories(target.parent_path());
+            written.push_back(target);
             write_file_atomic(target.string(), file.text.data(), file.text.size());
         }
-        write_file_atomic(path, shared.scene_text.data(), shared.scene_text.size());
+        written.push_back(scene);
+        write_file_atomic(scene.string(), shared.scene_text.data(), shared.scene_text.size());
+        LoadContext context = LoadContext::trusted();
+        context.folder = folder.string();  // the messages name the scene "shared-scene.json"
+        load_scene_file(scene.filename().string(), context);
     } catch (const std::exception& e) {
-        result = e.what();
+        result = text::one_line(e.what());
+        std::error_code ec;
+        for (const std::filesystem::path& file : written) std::filesystem::remove(file, ec);
     }
     return result.c_str();
 }
@@ -167,6 +180,13 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_render_frame_ms(void) {
 EMSCRIPTEN_KEEPALIVE int m3055_idle(void) {
     ExplorerSession* s = web::session();
     return s && s->idle() ? 1 : 0;
+}
+
+// 1 when the scene has edits since it was loaded or saved (the desktop asks
+// before quitting then; the page asks before it is closed or reloaded), else 0.
+EMSCRIPTEN_KEEPALIVE int m3055_unsaved(void) {
+    ExplorerSession* s = web::session();
+    return s && explore::unsaved(s->explorer().doc) ? 1 : 0;
 }
 
 // The practice grade line as `m3055 grade` scores it ("" outside practice mode).

@@ -1,14 +1,16 @@
 #version 330 core
 // docs/spec.md#2-display: the M3055's post pass. Linear colour (no gamma) to display
 // levels, then to the 8-bit value the PNG stores:
-//   level = clamp(floor(c (2^bits - 1) + 0.5), 0, 2^bits - 1),  c clamped to [0, 1]
+//   level = clamp(floor(v (2^bits - 1) + 0.5), 0, 2^bits - 1),  v = c clamped to [0, 1]
 //   png   = round(level * 255 / (2^bits - 1))
+// With the sRGB view transform (u_srgb), v is c's sRGB encoding.
 // The output is png / 255, which an RGBA8 target stores exactly as png.
 // C++ twin: renderer/image/quantize.h.
 
 uniform sampler2D u_colour;   // the unquantized frame (RGBA32F)
 uniform int u_bits;           // 1..8
 uniform bool u_dither;        // ordered 4x4 Bayer dithering instead of rounding
+uniform bool u_srgb;          // the view transform: sRGB's encoding before the levels
 
 out vec4 o_display;
 
@@ -18,8 +20,14 @@ float bayer4(ivec2 p) {
     return (float(m[(p.y & 3) * 4 + (p.x & 3)]) + 0.5) / 16.0;
 }
 
+// IEC 61966-2-1's encoding of a linear value in [0, 1] (C++ twin: srgb_encode).
+float srgb_encode(float c) {
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
 float quantize(float c, float max_level, float offset) {
     c = c > 0.0 ? min(c, 1.0) : 0.0;  // also sends NaN to 0
+    if (u_srgb) c = srgb_encode(c);
     float level = clamp(floor(c * max_level + offset), 0.0, max_level);
     return floor(level * 255.0 / max_level + 0.5) / 255.0;
 }

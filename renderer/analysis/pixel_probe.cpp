@@ -31,17 +31,20 @@ PixelHit ScenePicker::pick(int x, int y) const {
         const Object& object = scene_.objects[std::size_t(i)];
         double t = 0.0;
         dvec3 N(0.0);
+        std::size_t group = 0;
         if (meshes_[std::size_t(i)]) {
             const auto hits = meshes_[std::size_t(i)]->intersect_all(ray);
             if (hits.empty()) continue;
             t = hits.front().t;
             N = hits.front().N;
+            group = hits.front().group;
         } else if (!ref::intersect_sphere(ray, object.center, object.radius, &t)) {
             continue;
         }
         if (!(t < nearest)) continue;  // ties: the lower index, as the reference renderer
         nearest = t;
         best.object = i;
+        best.group = group;
         best.P = ray.origin + t * ray.dir;
         best.N = meshes_[std::size_t(i)] ? N : glm::normalize((best.P - object.center) / object.radius);
         best.V = -ray.dir;
@@ -65,7 +68,7 @@ int level_of_png(int png, int bits) {
 std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit) {
     std::vector<PairColour> pairs;
     if (hit.object < 0) return pairs;
-    const Material& material = scene.objects[std::size_t(hit.object)].material;
+    const Material& material = material_of(scene.objects[std::size_t(hit.object)], hit.group);
     if (!ref::is_spectral(material)) return pairs;
     const std::optional<ConductorUse> use = conductor_use(material);
     const bool by_angle = !material.colour_spectrum() && use && use->fresnel != ConductorFresnel::normal;
@@ -103,7 +106,7 @@ PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbF
     const PixelHit hit = picker.pick(x, y);
     p.object = hit.object;
     if (hit.object < 0) return p;
-    p.model = scene.objects[std::size_t(hit.object)].material.shown_name();
+    p.model = material_of(scene.objects[std::size_t(hit.object)], hit.group).shown_name();
     p.pairs = pair_colours(scene, hit);
     if (light < 0 || light >= static_cast<int>(scene.lights.size())) return p;
     const dvec3 L = ref::sample_light(scene.lights[std::size_t(light)], hit.P).L;

@@ -24,6 +24,7 @@ namespace m3055 {
 
 struct PixelHit {
     int object = -1;  // -1: the background
+    std::size_t group = 0;  // a mesh from a file: the group hit (its material: material_of)
     dvec3 P{0.0}, N{0.0}, V{0.0};
 };
 

@@ -81,7 +81,9 @@ const char* glsl_type(BrdfParam::Kind kind) {
 std::vector<std::pair<std::string, std::string>> sources(const BrdfFile& file, int id, const std::string& wrapper_path,
                                                          const std::string& hook, const std::vector<std::string>& fields,
                                                          bool es) {
-    const std::string prefix = "m3055_b" + std::to_string(id) + "_";
+    // "m3055_b<ID>_n" + name: no "__" even for a name that starts with "_"
+    // (GLSL ES reserves such names and WebGL's compiler refuses them).
+    const std::string prefix = "m3055_b" + std::to_string(id) + "_n";
     std::string shown = file.name;  // an #include "..." path: no double quote in it
     for (char& c : shown)
         if (c == '"') c = '\'';

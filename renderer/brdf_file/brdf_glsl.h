@@ -2,7 +2,7 @@
 // The block is written for a program of its own (BRDF Explorer's), so its
 // top-level names (BRDF, helpers such as sqr, constants such as PI) would
 // collide with the renderer's and with other files'. Each of them is renamed
-// by a #define to m3055_b<ID>_<name> around the block (and #undef'd after),
+// by a #define to m3055_b<ID>_n<name> around the block (and #undef'd after),
 // the parameters become globals of the file's names set from the material
 // record before BRDF is called, and the block itself is included as its own
 // source string starting at the .brdf's line, so a compile error names the

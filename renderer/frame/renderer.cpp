@@ -90,10 +90,10 @@ struct Renderer::Impl {
             else spans.push_back(DrawSpan{range.first, range.count, kPrimitiveWork * double(range.count / 3), 0, 0});
         }
         chunks->run(plan_chunks(spans, kChunkWork, 3), [&](std::size_t first, std::size_t count) {
-            if (!two_pass_program) return meshes.draw(first, count);
+            if (!two_pass_program) return meshes.draw(first, count, only != nullptr);
             // Back faces culled, a convex shape covers each pixel at most once.
-            const bool convex = only->object->shape != Shape::torus;
-            blender.draw_two_pass(two_pass_program, [&] { meshes.draw(first, count); }, convex);
+            const bool convex = only->object->shape != Shape::torus && only->object->shape != Shape::mesh;
+            blender.draw_two_pass(two_pass_program, [&] { meshes.draw(first, count, true); }, convex);
         });
     }
 

@@ -14,7 +14,9 @@
 // - `parts` numbers the smooth pieces of a shape (cube faces 0-5, cylinder
 //   side 0 / bottom 1 / top 2, plane and torus 0): the reference's coverage
 //   signature includes them, so creases are excluded from pixel comparisons
-//   like silhouettes.
+//   like silhouettes; a model file's are its smooth pieces (model_file/model.h);
+// - `groups` (a model file's only) gives each triangle's group, whose
+//   material is material_of(object, group) (empty: group 0 throughout).
 #pragma once
 
 #include "scene/scene.h"
@@ -29,7 +31,8 @@ struct Mesh {
     std::vector<dvec3> positions;
     std::vector<dvec3> normals;          // unit, one per position
     std::vector<std::uint32_t> indices;  // 3 per triangle
-    std::vector<std::uint8_t> parts;     // one per triangle
+    std::vector<std::uint32_t> parts;    // one per triangle
+    std::vector<std::uint32_t> groups;   // one per triangle, or empty
     std::size_t triangles() const { return indices.size() / 3; }
 };
 
@@ -55,6 +58,10 @@ Mesh make_cylinder(const dvec3& center, const dvec3& axis, double radius, double
                    int segments);
 Mesh make_torus(const dvec3& center, const dvec3& axis, double major_radius, double minor_radius,
                 int segments);
+// A model file's triangles placed: its bounding box centred on `center`,
+// scaled uniformly so that its largest side is `size`, then rotated about
+// `center` as cubes are (rotate_xyz).
+Mesh place_model(const model_file::Model& model, const dvec3& center, double size, const dvec3& rotation_deg);
 
 // The mesh of any non-sphere object (empty for a sphere).
 Mesh make_mesh(const Object& object);

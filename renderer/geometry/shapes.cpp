@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace m3055::geometry {
@@ -149,6 +150,20 @@ Mesh make_torus(const dvec3& center, const dvec3& axis, double major_radius, dou
     return mesh;
 }
 
+Mesh place_model(const model_file::Model& model, const dvec3& center, double size, const dvec3& rotation_deg) {
+    const dvec3 middle = (model.lo + model.hi) * 0.5, extent = model.hi - model.lo;
+    const double scale = size / std::max(extent.x, std::max(extent.y, extent.z));
+    Mesh mesh;
+    mesh.positions.reserve(model.positions.size());
+    mesh.normals.reserve(model.normals.size());
+    for (const dvec3& p : model.positions) mesh.positions.push_back(center + rotate_xyz((p - middle) * scale, rotation_deg));
+    for (const dvec3& n : model.normals) mesh.normals.push_back(rotate_xyz(n, rotation_deg));
+    mesh.indices = model.indices;
+    mesh.parts = model.parts;
+    mesh.groups = model.groups;
+    return mesh;
+}
+
 Mesh make_mesh(const Object& object) {
     switch (object.shape) {
         case Shape::sphere: return {};
@@ -160,6 +175,8 @@ Mesh make_mesh(const Object& object) {
         case Shape::torus:
             return make_torus(object.center, object.axis, object.major_radius, object.minor_radius,
                               segments_of(object));
+        case Shape::mesh:
+            return object.model ? place_model(*object.model, object.center, object.size, object.rotation_deg) : Mesh{};
     }
     return {};
 }
@@ -171,6 +188,11 @@ double bounding_radius(const Object& object) {
         case Shape::cube: return object.size * std::sqrt(0.75);
         case Shape::cylinder: return std::hypot(object.radius, object.height / 2);
         case Shape::torus: return object.major_radius + object.minor_radius;
+        case Shape::mesh: {
+            if (!object.model) return 0.0;
+            const dvec3 extent = object.model->hi - object.model->lo;
+            return object.size * 0.5 * glm::length(extent) / std::max(extent.x, std::max(extent.y, extent.z));
+        }
     }
     return object.radius;
 }

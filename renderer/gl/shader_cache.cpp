@@ -75,14 +75,23 @@ std::string mesa_shader_cache_folder() {
     return base + "/mesa_shader_cache";
 }
 
+void keep_shader_cache_in(const std::string& folder) {
+    ::setenv("MESA_SHADER_CACHE_DIR", folder.c_str(), 1);
+    ::setenv("MESA_GLSL_CACHE_DIR", folder.c_str(), 1);  // the older name, for older Mesa
+}
+
+void switch_shader_cache_off() {
+    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
+    ::setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);
+}
+
 std::string disable_shader_cache_if_unusable() {
     const std::string folder = mesa_shader_cache_folder();
     if (folder.empty()) return "";
     const std::string problem = folder_problem(folder);
     if (problem.empty()) return "";
     // Read by Mesa when the first context is made; both names, old and new.
-    ::setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
-    ::setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);
+    switch_shader_cache_off();
     return "note: the Mesa shader cache " + text::quote_name(folder) + " " + problem +
            ": shaders are compiled without it this run";
 }

@@ -19,6 +19,15 @@ inline constexpr std::uint64_t kMinShaderCacheFreeBytes = std::uint64_t(64) << 2
 // MESA_SHADER_CACHE_DISABLE (or the older MESA_GLSL_CACHE_DISABLE) is set true.
 std::string mesa_shader_cache_folder();
 
+// Where Mesa keeps this process's shader cache, set before the first context
+// is made: `folder`/mesa_shader_cache (MESA_SHADER_CACHE_DIR, which wins over
+// XDG_CACHE_HOME and ~/.cache). `grade` and `batch` keep it in their output
+// folder: a student's .brdf is code, and its compiled shaders are not written
+// to the teacher's home.
+void keep_shader_cache_in(const std::string& folder);
+// No on-disk shader cache for this process (before the first context).
+void switch_shader_cache_off();
+
 // When the cache folder (or the nearest folder above it that exists, where
 // Mesa would create it) is not writable, not a folder, or has less than
 // kMinShaderCacheFreeBytes or no inode free, sets MESA_SHADER_CACHE_DISABLE

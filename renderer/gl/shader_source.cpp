@@ -109,29 +109,46 @@ ComposedShader compose_shader(const std::string& path, const std::vector<std::st
     return composer.out;
 }
 
+namespace {
+
+// A source position: the source-string number and its line, a .brdf block's
+// (numbered from kBrdfLineBase x its number by compose_shader) as its own.
+std::string position(const std::string& number, const std::string& line_text,
+                     const std::vector<std::string>& files) {
+    std::size_t file = std::stoul(number);
+    std::string line = line_text;
+    if (line.size() < 11 && std::stol(line) > kBrdfLineBase) {
+        file = std::size_t(std::stol(line) / kBrdfLineBase);
+        line = std::to_string(std::stol(line) % kBrdfLineBase);
+    }
+    return (file < files.size() ? files[file] : "source " + number) + ":" + line;
+}
+
+}  // namespace
+
 std::string annotate_shader_log(const std::string& log, const std::vector<std::string>& files) {
-    // Mesa writes "0:12(5): error: ...", other drivers "0(12) : error ...".
-    static const std::regex prefix(R"((^|\n)(\d+)(?::(\d+)\((\d+)\)|\((\d+)\)))");
+    // Mesa writes "0:12(5): error: ...", other drivers "0(12) : error ...",
+    // ANGLE (WebGL) "ERROR: 0:12: ..." (written here as "FILE:12: error: ...").
+    static const std::regex prefix(
+        R"((^|\n)(?:(\d+)(?::(\d+)\((\d+)\)|\((\d+)\))|(ERROR|WARNING): (\d+):(\d+):))");
     std::string result;
     auto begin = log.cbegin();
     std::smatch match;
     while (std::regex_search(begin, log.cend(), match, prefix)) {
         result.append(begin, match[0].first);
-        std::size_t file = std::stoul(match[2].str());
-        std::string line = match[3].matched ? match[3].str() : match[5].str();
-        if (line.size() < 11 && std::stol(line) > kBrdfLineBase) {  // a .brdf block's (compose_shader)
-            file = std::size_t(std::stol(line) / kBrdfLineBase);
-            line = std::to_string(std::stol(line) % kBrdfLineBase);
-        }
         result += match[1].str();
-        result += file < files.size() ? files[file] : "source " + match[2].str();
-        result += ":" + line;
-        if (match[4].matched) result += ":" + match[4].str();
+        if (match[6].matched) {
+            result += position(match[7].str(), match[8].str(), files) + ": " +
+                      (match[6].str() == "ERROR" ? "error:" : "warning:");
+        } else {
+            result += position(match[2].str(), match[3].matched ? match[3].str() : match[5].str(), files);
+            if (match[4].matched) result += ":" + match[4].str();
+        }
         begin = match[0].second;
     }
     result.append(begin, log.cend());
     // The .brdf code's names as its author wrote them (brdf_file/brdf_glsl.h renames them).
-    static const std::regex renamed("m3055_b[0-9]+_");
+    static const std::regex renamed("m3055_b[0-9]+_n");
     return std::regex_replace(result, renamed, "");
 }
 

@@ -1,6 +1,7 @@
 #include "passes/frame_targets.h"
 
 #include "passes/material_buffer.h"
+#include "passes/material_slots.h"
 #include "passes/spectral_tables.h"
 
 #include <algorithm>
@@ -26,10 +27,11 @@ void FrameTargets::ensure_size(int width, int height) {
 
 void FrameTargets::begin(const Scene& scene) {
     ensure_size(scene.display.width, scene.display.height);
+    const MaterialSlots slots = material_slots(scene.objects);
     std::vector<float> records;
-    records.reserve(scene.objects.size() * std::size_t(material_record_texels()) * 4);
-    for (const Object& object : scene.objects) pack_material(object.material, records);
-    append_spectral_tables(scene.objects, scene.lights, records);
+    records.reserve(slots.records.size() * std::size_t(material_record_texels()) * 4);
+    for (const Material* material : slots.records) pack_material(*material, records);
+    append_spectral_tables(slots.records, scene.lights, records);
     materials_.upload(records);
     const bool shadows = std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) {
         return light.shadow && light.enabled && light.intensity > 0.0;
@@ -62,6 +64,7 @@ void FrameTargets::quantize(const Display& display) {
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_colour"), 0);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_bits"), display.bits);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_dither"), display.dither ? 1 : 0);
+    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_srgb"), display.view_transform == ViewTransform::srgb ? 1 : 0);
     gl_.BindVertexArray(empty_vao_.id());
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     gl_.BindVertexArray(0);

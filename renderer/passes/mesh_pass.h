@@ -1,7 +1,13 @@
-// The meshes of the non-sphere shapes (geometry/mesh.h) on the GPU: built and
-// uploaded once per frame, drawn with glsl/passes/mesh.{vert,frag} by the
-// Renderer in its opaque pass (one batch) and its translucent pass (one draw
-// per mesh, interleaved with the spheres back to front).
+// The meshes of the non-sphere shapes (geometry/mesh.h) on the GPU, drawn
+// with glsl/passes/mesh.{vert,frag} by the Renderer in its opaque pass (one
+// batch) and its translucent pass (one draw per mesh, interleaved with the
+// spheres back to front). The opaque batch is built and uploaded again only
+// when its meshes change (a frame that moves the camera or edits a material's
+// values reuses it: a model of a million triangles is not rebuilt each
+// frame); the translucent meshes, sorted from the eye, every frame. Each
+// vertex carries its material record (passes/material_slots.h): a mesh from
+// a file has one a group, its opaque groups drawn in the opaque batch and its
+// translucent ones with the translucent meshes.
 #pragma once
 
 #include "gl/gl_api.h"
@@ -10,6 +16,8 @@
 #include "scene/scene.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace m3055 {
@@ -27,8 +35,11 @@ public:
     };
 
     // Builds and uploads every non-sphere object's mesh: opaque ones in one
-    // batch; each translucent one with its triangles sorted far to near.
+    // batch (unless the last frame's holds the same meshes); each translucent
+    // one with its triangles sorted far to near.
     void prepare(const Scene& scene, const CameraFrame& frame);
+    // Whether the last prepare() reused the opaque batch (tests, m3055 bench).
+    bool reused_opaque() const { return reused_opaque_; }
 
     const std::vector<const Object*>& opaque_objects() const { return opaque_objects_; }
     // Each opaque mesh's range of the index buffer, in draw order (draw_opaque
@@ -45,12 +56,34 @@ public:
     // Back faces are culled: only front faces are shaded (docs/spec.md#3-geometry).
     void draw_opaque() const;
     void draw_translucent(const Translucent& mesh) const;
-    // Any part of the index buffer, e.g. a chunk of the ranges above.
-    void draw(std::size_t first, std::size_t count) const;
+    // Any part of the opaque batch's index buffer (or the translucent
+    // meshes'), e.g. a chunk of the ranges above.
+    void draw(std::size_t first, std::size_t count, bool translucent = false) const;
 
 private:
+    // What makes an opaque batch: each mesh's shape, placement, model and
+    // material records, and which of its groups are opaque.
+    struct MeshKey {
+        std::size_t object;
+        Shape shape;
+        dvec3 center, axis, rotation_deg;
+        double radius, size, height, major_radius, minor_radius;
+        bool capped;
+        int segments;
+        std::shared_ptr<const model_file::Model> model;  // held, so its address names it alone
+        std::vector<bool> opaque_groups;
+        std::uint32_t more_records;
+        bool operator==(const MeshKey& other) const;
+    };
+
     const GlApi& gl_;
-    IndexedVertexArray buffers_;
+    IndexedVertexArray buffers_, translucent_buffers_;
+    std::vector<MeshKey> opaque_key_;
+    struct OpaqueRange {
+        std::size_t first, count, object;
+    };
+    std::vector<OpaqueRange> opaque_layout_;
+    bool reused_opaque_ = false;
     std::size_t opaque_count_ = 0;
     std::vector<const Object*> opaque_objects_, translucent_objects_;
     std::vector<Translucent> translucent_;

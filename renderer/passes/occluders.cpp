@@ -50,6 +50,8 @@ std::string geometry_key(const Scene& scene) {
         add(&o.major_radius, sizeof o.major_radius);
         add(&o.minor_radius, sizeof o.minor_radius);
         add(&o.segments, sizeof o.segments);
+        const void* model = o.model.get();  // a model file's triangles, shared while unchanged
+        add(&model, sizeof model);
     }
     return key;
 }

@@ -33,11 +33,12 @@ std::vector<std::string> specialization_defines(ShaderMode mode, const std::vect
         return all;
     }
     std::set<std::string> flags;  // sorted and unique: equal scenes give equal keys
-    for (const Object* object : objects) {
-        const ModelSpec& model = object->material.model();
-        flags.insert(has_define(model));
-        flags.insert(family_define(static_cast<int>(model.family)));
-    }
+    for (const Object* object : objects)
+        for (const Material* material : materials_of(*object)) {
+            const ModelSpec& model = material->model();
+            flags.insert(has_define(model));
+            flags.insert(family_define(static_cast<int>(model.family)));
+        }
     int count = 0;
     for (const Light& light : lights) {
         if (!light.enabled || light.intensity <= 0.0) continue;  // dropped (passes/light_uniforms.cpp)

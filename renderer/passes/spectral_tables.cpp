@@ -96,21 +96,22 @@ void append_classic_table(const Material& material, const std::vector<const Ligh
 
 }  // namespace
 
-void append_spectral_tables(const std::vector<Object>& objects, const std::vector<Light>& lights,
+void append_spectral_tables(const std::vector<const Material*>& materials, const std::vector<Light>& lights,
                             std::vector<float>& records) {
     const std::size_t record_floats = std::size_t(material_record_texels()) * 4;
     std::vector<const Light*> shaded;
     for (const Light& light : lights)
         if (reaches_shader(light)) shaded.push_back(&light);
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const ReflectanceSpectrum* spectrum = objects[i].material.colour_spectrum();
-        if (objects[i].material.model().family == Family::classic) {
-            append_classic_table(objects[i].material, shaded, records, i * record_floats);
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const Material& material = *materials[i];
+        const ReflectanceSpectrum* spectrum = material.colour_spectrum();
+        if (material.model().family == Family::classic) {
+            append_classic_table(material, shaded, records, i * record_floats);
             continue;
         }
         if (spectrum) {
             // A colour spectrum (docs/spec.md#73-spectral-colours): one C0 per light, the same at every angle.
-            const int slot = table_float(objects[i].material);
+            const int slot = table_float(material);
             if (slot < 0) continue;
             records[i * record_floats + std::size_t(slot)] = float(records.size() / 4);
             const dvec3 background = spectrum_c0(*spectrum, nullptr);
@@ -121,8 +122,8 @@ void append_spectral_tables(const std::vector<Object>& objects, const std::vecto
             }
             continue;
         }
-        const std::optional<ConductorUse> use = conductor_use(objects[i].material);
-        const int slot = use ? table_float(objects[i].material) : -1;
+        const std::optional<ConductorUse> use = conductor_use(material);
+        const int slot = use ? table_float(material) : -1;
         if (slot < 0) continue;
         const int samples = use->fresnel == ConductorFresnel::normal ? 1 : spectral::kConductorCosSamples;
         records[i * record_floats + std::size_t(slot)] = float(records.size() / 4);

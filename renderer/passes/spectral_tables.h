@@ -21,11 +21,11 @@
 
 namespace m3055 {
 
-// Appends the tables of the spectral materials among `objects` (records:
-// one per object, pack_material's) and points their records at them. Tables
+// Appends the tables of the spectral materials among `materials` (records:
+// one each, pack_material's, passes/material_slots.h) and points their records at them. Tables
 // of metals are computed once per (metal, fresnel, light spectrum) and kept for
 // the process; a colour spectrum's (one texel per light) each time. Throws spectral::SpectralError when the CIE data cannot be read.
-void append_spectral_tables(const std::vector<Object>& objects, const std::vector<Light>& lights,
+void append_spectral_tables(const std::vector<const Material*>& materials, const std::vector<Light>& lights,
                             std::vector<float>& records);
 
 }  // namespace m3055

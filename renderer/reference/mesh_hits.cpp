@@ -86,6 +86,7 @@ bool MeshIntersector::hit_triangle(const Ray& ray, std::uint32_t triangle, MeshH
     if (!(t > 0.0)) return false;
     hit->t = t;
     hit->part = mesh_.parts[triangle];
+    hit->group = mesh_.groups.empty() ? 0 : mesh_.groups[triangle];
     hit->N = glm::normalize((1.0 - u - v) * mesh_.normals[ia] + u * mesh_.normals[ib] + v * mesh_.normals[ic]);
     return true;
 }

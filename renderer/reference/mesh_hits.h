@@ -16,7 +16,8 @@ namespace m3055::ref {
 
 struct MeshHit {
     double t;  // ray parameter, > 0
-    int part;  // the triangle's smooth piece (geometry::Mesh::parts)
+    std::uint32_t part;   // the triangle's smooth piece (geometry::Mesh::parts)
+    std::uint32_t group;  // its group (geometry::Mesh::groups; 0 when the mesh has none)
     dvec3 N;   // unit, barycentric interpolation of the vertex normals
 };
 

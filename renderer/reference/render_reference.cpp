@@ -26,7 +26,8 @@ namespace {
 struct Hit {
     double t;
     int object;
-    int part = 0;           // meshes: the triangle's smooth piece (geometry/mesh.h)
+    std::uint32_t part = 0;   // meshes: the triangle's smooth piece (geometry/mesh.h)
+    std::uint32_t group = 0;  // meshes from files: the triangle's group (its material: material_of)
     dvec3 N = dvec3(0.0);   // meshes: the interpolated normal
 };
 
@@ -44,7 +45,7 @@ std::vector<Hit> all_hits(const Scene& scene, const SceneBvh& bvh, const Ray& ra
             const double b = glm::dot(oc, ray.dir);
             if (glm::dot(oc, oc) > reach * reach && (b > 0 || glm::dot(oc - b * ray.dir, oc - b * ray.dir) > reach * reach))
                 continue;
-            for (const MeshHit& hit : mesh->intersect_all(ray)) hits.push_back({hit.t, i, hit.part, hit.N});
+            for (const MeshHit& hit : mesh->intersect_all(ray)) hits.push_back({hit.t, i, hit.part, hit.group, hit.N});
             continue;
         }
         double t = 0.0;
@@ -61,12 +62,12 @@ std::vector<Hit> all_hits(const Scene& scene, const SceneBvh& bvh, const Ray& ra
 // indices); 0 only when nothing is hit.
 std::uint64_t coverage_signature(std::vector<Hit> hits) {
     if (hits.empty()) return 0;
-    std::vector<int> ids;  // object and part: a mesh's creases separate pixels like silhouettes
-    for (const Hit& h : hits) ids.push_back(h.object * 8 + h.part);
+    std::vector<std::uint64_t> ids;  // object and part: a mesh's creases separate pixels like silhouettes
+    for (const Hit& h : hits) ids.push_back(std::uint64_t(h.object) << 32 | h.part);
     std::sort(ids.begin(), ids.end());
     std::uint64_t sig = 0x9e3779b97f4a7c15ULL;
-    for (int id : ids) {
-        std::uint64_t z = sig + std::uint64_t(id) + 0x9e3779b97f4a7c15ULL;
+    for (std::uint64_t id : ids) {
+        std::uint64_t z = sig + id + 0x9e3779b97f4a7c15ULL;
         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
         sig = z ^ (z >> 31);
@@ -91,17 +92,19 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
     double t_opaque = std::numeric_limits<double>::infinity();
     for (const Hit& hit : hits) {
         const Object& object = scene.objects[hit.object];
-        if (is_translucent(object.material)) continue;
-        color = shade_opaque(object.material, scene.lights, surface_point(object, ray, hit), scene.ambient, options);
+        const Material& material = material_of(object, hit.group);
+        if (is_translucent(material)) continue;
+        color = shade_opaque(material, scene.lights, surface_point(object, ray, hit), scene.ambient, options);
         t_opaque = hit.t;
         break;
     }
     // Translucent front faces in front of it, farthest first: C = color + T * C_behind.
     for (auto it = hits.rbegin(); it != hits.rend(); ++it) {
         const Object& object = scene.objects[it->object];
-        if (!is_translucent(object.material) || !(it->t < t_opaque)) continue;
+        const Material& material = material_of(object, it->group);
+        if (!is_translucent(material) || !(it->t < t_opaque)) continue;
         const TranslucentShade shade =
-            shade_translucent_model(object.material, scene.lights, surface_point(object, ray, *it), options);
+            shade_translucent_model(material, scene.lights, surface_point(object, ray, *it), options);
         color = shade.color + shade.transmittance * color;
     }
     return color;

@@ -136,8 +136,16 @@ void apply_overrides(json& doc, const std::vector<Override>& overrides, const st
                 walked = scene_json::join_index(walked, step.index);
             } else {
                 if (!here->is_object()) fail(source, item.path, where + " is not an object");
-                if (!leaf && !here->contains(step.key))
-                    fail(source, item.path, "no such key " + quoted(step.key));
+                if (!leaf && !here->contains(step.key)) {
+                    // A model file's material by its name (objects[i].materials.NAME.KEY)
+                    // may be changed where the scene overrides none yet.
+                    const bool under_object = s >= 2 && steps[s - 1].is_index && steps[s - 2].key == "objects";
+                    const bool mesh_material = (step.key == "materials" && under_object) ||
+                                               (s >= 3 && steps[s - 1].key == "materials" && steps[s - 2].is_index &&
+                                                steps[s - 3].key == "objects");
+                    if (!mesh_material) fail(source, item.path, "no such key " + quoted(step.key));
+                    (*here)[step.key] = json::object();
+                }
                 here = &(*here)[step.key];
                 walked = scene_json::join_key(walked, step.key);
             }

@@ -17,6 +17,7 @@ std::vector<std::string> shape_keys(Shape shape) {
         case Shape::cube: return {"center", "size", "rotation_deg"};
         case Shape::cylinder: return {"center", "axis", "radius", "height", "capped", "segments"};
         case Shape::torus: return {"center", "axis", "major_radius", "minor_radius", "segments"};
+        case Shape::mesh: return {"center", "file", "size", "rotation_deg", "materials"};
     }
     return {};
 }
@@ -28,6 +29,7 @@ const char* plural(Shape shape) {
         case Shape::cube: return "cubes";
         case Shape::cylinder: return "cylinders";
         case Shape::torus: return "tori";
+        case Shape::mesh: return "meshes";
     }
     return "?";
 }
@@ -35,7 +37,7 @@ const char* plural(Shape shape) {
 // For a key that other shapes read: "only for cylinders and tori"; else "".
 std::string owners(const std::string& key) {
     std::vector<std::string> found;
-    for (Shape shape : {Shape::sphere, Shape::plane, Shape::cube, Shape::cylinder, Shape::torus})
+    for (Shape shape : {Shape::sphere, Shape::plane, Shape::cube, Shape::cylinder, Shape::torus, Shape::mesh})
         for (const std::string& k : shape_keys(shape))
             if (k == key) found.push_back(plural(shape));
     if (found.empty()) return {};
@@ -48,7 +50,7 @@ std::string owners(const std::string& key) {
 
 void read_shape(const Node& node, Object& object) {
     if (node.has("shape"))
-        object.shape = static_cast<Shape>(node.child("shape").one_of({"sphere", "plane", "cube", "cylinder", "torus"}));
+        object.shape = static_cast<Shape>(node.child("shape").one_of({"sphere", "plane", "cube", "cylinder", "torus", "mesh"}));
     std::vector<std::string> allowed = shape_keys(object.shape);
     allowed.insert(allowed.end(), {"shape", "material"});
     node.check_keys(allowed, [](const std::string& key) { return owners(key); });
@@ -63,6 +65,7 @@ void read_shape(const Node& node, Object& object) {
             object.size = node.required("size").number_in(kLength);
             break;
         case Shape::cube:
+        case Shape::mesh:  // its file and materials: scene/json_model_file.h
             object.size = node.required("size").number_in(kLength);
             if (node.has("rotation_deg")) object.rotation_deg = node.child("rotation_deg").vec3_in(kAngle);
             break;
@@ -100,6 +103,7 @@ json shape_json(const Object& object) {
             out["size"] = object.size;
             break;
         case Shape::cube:
+        case Shape::mesh:  // its file and materials: write_mesh_file
             out["size"] = object.size;
             out["rotation_deg"] = vec(object.rotation_deg);
             break;

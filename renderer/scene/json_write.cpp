@@ -7,6 +7,7 @@
 
 #include "scene/json_lights.h"
 #include "scene/json_material.h"
+#include "scene/json_model_file.h"
 #include "scene/json_shapes.h"
 
 #include <nlohmann/json.hpp>
@@ -20,8 +21,9 @@ namespace {
 json vec(const dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
 json display_json(const Display& display) {
-    return {{"width", display.width}, {"height", display.height}, {"bits", display.bits},
-            {"dither", display.dither}};
+    json out = {{"width", display.width}, {"height", display.height}, {"bits", display.bits}, {"dither", display.dither}};
+    if (display.view_transform != ViewTransform::none) out["view_transform"] = to_string(display.view_transform);  // absent = none
+    return out;
 }
 
 json camera_json(const Camera& camera) {
@@ -44,7 +46,10 @@ json scene_to_json(const Scene& scene, const PathWriting& writing) {
     json objects = json::array();
     for (const Object& object : scene.objects) {
         json entry = scene_json::shape_json(object);
-        entry["material"] = scene_json::material_json(object.material, writing);
+        if (object.shape == Shape::mesh)
+            scene_json::write_mesh_file(object, writing, entry);
+        else
+            entry["material"] = scene_json::material_json(object.material, writing);
         objects.push_back(std::move(entry));
     }
     json out = {{"display", display_json(scene.display)},

@@ -6,6 +6,7 @@
 #include "io/message_text.h"
 #include "scene/json_lights.h"
 #include "scene/json_material.h"
+#include "scene/json_model_file.h"
 #include "scene/json_node.h"
 #include "scene/json_parse.h"
 #include "scene/json_shapes.h"
@@ -35,12 +36,15 @@ constexpr std::size_t kMaxObjects = 100000;
 
 Display read_display(const Node& node) {
     node.expect_object();
-    node.check_keys({"width", "height", "bits", "dither"});
+    node.check_keys({"width", "height", "bits", "dither", "view_transform"});
     Display display;
     if (node.has("width")) display.width = node.child("width").whole_in(1, kMaxDisplaySize);
     if (node.has("height")) display.height = node.child("height").whole_in(1, kMaxDisplaySize);
     if (node.has("bits")) display.bits = node.child("bits").whole_in(1, 8);
     if (node.has("dither")) display.dither = node.child("dither").boolean();
+    if (node.has("view_transform"))
+        display.view_transform = node.child("view_transform").one_of({"none", "srgb"}) == 0 ? ViewTransform::none
+                                                                                           : ViewTransform::srgb;
     return display;
 }
 
@@ -93,7 +97,10 @@ Object read_object(const Node& node, const scene_json::SceneFiles& files) {
     node.expect_object();
     Object object;
     scene_json::read_shape(node, object);  // shape, centre and the shape's own keys
-    object.material = scene_json::read_material(node.required("material"), files);
+    if (object.shape == Shape::mesh)
+        scene_json::read_mesh_file(node, files, object);  // the model file and its materials
+    else
+        object.material = scene_json::read_material(node.required("material"), files);
     return object;
 }
 
@@ -122,7 +129,8 @@ Scene read_scene(const json& doc, const std::string& source, const scene_json::S
         triangles += triangle_count(scene.objects.back());
         if (triangles > kMaxSceneTriangles)
             objects.at(i).fail("the scene's meshes would have more than " +
-                               std::to_string(kMaxSceneTriangles) + " triangles (fewer segments?)");
+                               std::to_string(kMaxSceneTriangles) + " triangles (" +
+                               (scene.objects.back().shape == Shape::mesh ? "a smaller model?)" : "fewer segments?)"));
     }
     return scene;
 }

@@ -3,6 +3,7 @@
 // load and every write of a scene, so that a call says what it allows.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,6 +27,9 @@ struct LoadContext {
     // Why a file of code (a .brdf material: its GLSL runs) is refused; "": accepted.
     std::string code_refused;
     std::optional<Confinement> confinement;
+    // Where a load's notes go (what a file holds that is ignored: a model's
+    // textures), one line each; unset: stderr, as "m3055: note: LINE".
+    std::function<void(const std::string&)> note;
 
     // The user's own files: from the working folder, code accepted, not confined.
     static LoadContext trusted();

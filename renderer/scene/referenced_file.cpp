@@ -50,6 +50,18 @@ io::InputPath referenced_file(const Node& node, const SceneFiles& files, const s
     return found;
 }
 
+io::InputPath referenced_by_file(const std::string& name, const io::InputPath& parent, const SceneFiles& files,
+                                 const std::string& what, std::string& problem) {
+    const fs::path path(name);
+    const fs::path folder = fs::path(parent.shown).parent_path();
+    const std::string named = path.is_absolute() || folder.empty() ? name : (folder / path).string();
+    const io::InputPath found = io::InputPath::in_folder(files.context.folder, named);
+    problem.clear();
+    if (const auto& confinement = files.context.confinement)
+        problem = confinement_problem(*confinement, files.context.folder, name, found.path, what);
+    return found;
+}
+
 std::string written_path(const std::string& path, const PathWriting& writing) {
     if (writing.relative_to.empty()) return fs::absolute(path).string();
     const fs::path full = fs::absolute(path).lexically_normal();

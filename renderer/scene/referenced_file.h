@@ -26,6 +26,13 @@ struct SceneFiles {
 // names the kind of file in that refusal ("a .brdf file").
 io::InputPath referenced_file(const Node& node, const SceneFiles& files, const std::string& what);
 
+// A file that a named file names in turn (a model file's .mtl or .bin):
+// `name` relative to the folder of `parent` (found by referenced_file), under
+// the same confinement. Sets `problem` to the refusal, before anything is
+// opened, when it may not be read.
+io::InputPath referenced_by_file(const std::string& name, const io::InputPath& parent, const SceneFiles& files,
+                                 const std::string& what, std::string& problem);
+
 // The refusal under a confinement without a folder: "WHAT is not accepted here: WHY_NONE".
 std::string without_folder_reason(const std::string& what, const std::string& why_none);
 

@@ -4,6 +4,10 @@
 
 namespace m3055 {
 
+const char* to_string(ViewTransform transform) {
+    return transform == ViewTransform::srgb ? "srgb" : "none";
+}
+
 const char* to_string(LightType type) {
     switch (type) {
         case LightType::directional: return "directional";
@@ -23,6 +27,7 @@ const char* to_string(Shape shape) {
         case Shape::cube: return "cube";
         case Shape::cylinder: return "cylinder";
         case Shape::torus: return "torus";
+        case Shape::mesh: return "mesh";
     }
     return "?";
 }

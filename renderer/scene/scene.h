@@ -4,6 +4,9 @@
 #pragma once
 
 #include "models/material.h"  // Material, Lobe, LobeKind
+#include "model_file/model.h"
+
+#include <memory>
 
 #include <glm/vec3.hpp>
 
@@ -14,12 +17,18 @@ namespace m3055 {
 
 using glm::dvec3;
 
+// docs/spec.md#2-display: what a display does to a linear value before its
+// levels: nothing (the M3055 showed levels of the linear value, as the paper's
+// figures do), or sRGB's encoding (IEC 61966-2-1), as other tools show colour.
+enum class ViewTransform { none, srgb };
+
 // docs/spec.md#2-display: the emulated display. The M3055 is 512 x 320, 5 bits a channel.
 struct Display {
     int width = 512;
     int height = 320;
     int bits = 5;         // 1..8 bits per channel
     bool dither = false;  // ordered (4x4 Bayer) dithering before quantization
+    ViewTransform view_transform = ViewTransform::none;
 };
 
 enum class Projection { perspective, orthographic };
@@ -85,8 +94,18 @@ struct Light {
 };
 
 // Spheres are exact (ray-cast); the other shapes are triangle meshes made by
-// renderer/geometry/ (docs/shapes.md: fields, tessellation, normals, limits).
-enum class Shape { sphere, plane, cube, cylinder, torus };
+// renderer/geometry/ (docs/shapes.md: fields, tessellation, normals, limits);
+// a mesh's triangles come from a model file (docs/shapes.md#meshes-from-files).
+enum class Shape { sphere, plane, cube, cylinder, torus, mesh };
+
+// The material of one group of a model file's triangles (the file's
+// material of that name): the file's own, made a model of the table, or the
+// scene's "materials" entry of that name.
+struct GroupMaterial {
+    std::string name;
+    Material material;
+    bool overridden = false;  // from the scene's "materials" (written back), not the file's own
+};
 
 struct Object {
     Shape shape = Shape::sphere;
@@ -103,7 +122,20 @@ struct Object {
     double major_radius = 1.0;    // torus: centre of the tube to the axis
     double minor_radius = 0.25;   // torus: radius of the tube
     int segments = 0;             // cylinder, torus: segments a full circle (0 = the default)
+    // mesh: the model file as opened (relative to the load's folder, or
+    // absolute), its triangles in the file's coordinates (placed by `center`,
+    // `size` and `rotation_deg`), and, when the object gives no "material",
+    // one material a group of the file; `material` is then the first group's.
+    std::string file{};
+    std::shared_ptr<const model_file::Model> model{};
+    std::vector<GroupMaterial> groups{};
 };
+
+// The material of group `group` of a mesh from a file (the object's own
+// material for every other shape, and for a mesh given one "material").
+const Material& material_of(const Object& object, std::size_t group);
+// Every material the object wears: its groups' in order, else its `material`.
+std::vector<const Material*> materials_of(const Object& object);
 
 struct Scene {
     Display display;
@@ -119,6 +151,7 @@ inline constexpr int kMaxLights = 16;
 inline constexpr int kMaxDisplaySize = 8192;
 
 const char* to_string(LightType type);
+const char* to_string(ViewTransform transform);
 const char* to_string(Projection projection);
 const char* to_string(Shape shape);
 

@@ -15,6 +15,7 @@ std::size_t triangle_count(const Object& object) {
         case Shape::cube: return 12;
         case Shape::cylinder: return object.capped ? 4 * n : 2 * n;
         case Shape::torus: return 2 * n * n;
+        case Shape::mesh: return object.model ? object.model->triangles() : 0;
     }
     return 0;
 }

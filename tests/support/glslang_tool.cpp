@@ -27,7 +27,7 @@ ToolRun run_glslang(const std::vector<std::string>& args) {
     const std::string tool = find_in_path("glslangValidator");
     if (tool.empty()) {
         ADD_FAILURE() << "glslangValidator not found on PATH: install glslang-tools "
-                         "(apt-get install glslang-tools; scripts/setup installs it)";
+                         "(apt-get install glslang-tools; scripts/setup --for-tests installs it)";
         return {};
     }
     TempDir capture;

@@ -51,6 +51,7 @@ namespace {
 // on the reference's interior pixels.
 Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& reference, const Display& display) {
     const int w = display.width, h = display.height, bits = display.bits;
+    const bool srgb = display.view_transform == ViewTransform::srgb;
     Comparison result;
     long same = 0;
     double sum = 0, signed_sum = 0;
@@ -69,7 +70,7 @@ Comparison compare_raw(const RgbFloatImage& raw, const ref::ReferenceImage& refe
                 result.max_scaled_diff = std::max(result.max_scaled_diff, diff / std::max(1.0, std::abs(expected)));
                 sum += diff;
                 signed_sum += actual - expected;
-                const int level_diff = std::abs(quantize_level(actual, bits) - quantize_level(expected, bits));
+                const int level_diff = std::abs(quantize_level(actual, bits, srgb) - quantize_level(expected, bits, srgb));
                 result.max_level_diff = std::max(result.max_level_diff, level_diff);
                 if (level_diff) same_level = false;
             }

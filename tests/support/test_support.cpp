@@ -126,10 +126,14 @@ std::string read_text(const std::string& path) {
 
 bool file_exists(const std::string& path) { return fs::exists(path); }
 
-std::map<std::string, std::string> snapshot(const std::string& folder) {
+std::map<std::string, std::string> snapshot(const std::string& folder, const std::string& except) {
     std::map<std::string, std::string> entries;
     for (auto it = fs::recursive_directory_iterator(folder); it != fs::recursive_directory_iterator(); ++it) {
         const std::string name = fs::relative(it->path(), folder).string();
+        if (!except.empty() && name == except) {
+            it.disable_recursion_pending();
+            continue;
+        }
         const fs::file_status status = it->symlink_status();
         if (fs::is_symlink(status)) entries[name] = "<link> " + fs::read_symlink(it->path()).string();
         else if (fs::is_regular_file(status)) entries[name] = read_text(it->path().string());

@@ -2,13 +2,16 @@
 // Chromium through puppeteer-core (docs/web.md "Tests"):
 //  1. every scene of a set (scenes/, the worked assignment's, every model
 //     under one and three lights, every shape, translucency, bits 1-8, .brdf
-//     files) loaded through window.m3055 and its display PNG compared level by
+//     files, model files (OBJ and MTL)) loaded through window.m3055 and its display PNG compared level by
 //     level with `m3055 render`'s; a scene m3055 render refuses must be
 //     rejected with the same line;
 //  2. real input through the DevTools protocol: a slider dragged changes the
 //     display and Ctrl+Z gives identical bytes; a value typed; a .brdf file
 //     opened through the file chooser; the share link's round trip; practice
-//     mode's score equal to `m3055 grade`'s.
+//     mode's score equal to `m3055 grade`'s;
+//  3. the page around the explorer (page_test.js): bad share links, the
+//     question before unsaved edits are lost, the figure keys, .brdf errors,
+//     devicePixelRatio 2, the error line, idle frames, screenshot numbering.
 // Usage: node browser_test.js --m3055 BUILD/m3055 --site build-web/site
 //          --work DIR --backend swiftshader|angle [--out DIR]
 'use strict';
@@ -19,6 +22,7 @@ const zlib = require('zlib');
 const { execFileSync } = require('child_process');
 const puppeteer = require('puppeteer-core');
 const { decodePng, compareLevels } = require('./png');
+const pageTests = require('./page_test');
 
 const repo = path.resolve(__dirname, '..', '..');
 function option(name, fallback) {
@@ -33,8 +37,9 @@ const out = path.resolve(option('out', work));
 // --only PART[,PART] (all when not given): scenes (the scene sets against m3055
 // render), panes (the A/B split and difference pane: the explorer's own GL
 // drawing), input (the wheel, slider drag, undo, typing, files, share links,
-// practice: the page's logic), latency (slider to pixels, reported).
-const only = option('only', 'scenes,panes,input,latency').split(',');
+// practice: the page's logic), page (the page around the explorer:
+// page_test.js), latency (slider to pixels, reported).
+const only = option('only', 'scenes,panes,input,page,latency').split(',');
 fs.mkdirSync(work, { recursive: true });
 fs.mkdirSync(out, { recursive: true });
 
@@ -118,6 +123,13 @@ function sceneSet() {
     add('.brdf', `brdf-${f}.json`, scene(oneLight, [{ shape: 'sphere', center: [0, 0, 0], radius: 1, material: { model: 'brdf', file: f } }]),
         { [f]: fs.readFileSync(path.join(brdfDir, f), 'utf8') });
   }
+  // Model files: the vase (an OBJ with its MTL: materials, smooth groups) and an
+  // OBJ the loader refuses (a face naming a vertex the file lacks).
+  const modelDir = path.join(repo, 'scenes', 'models');
+  const modelFile = (f) => fs.readFileSync(path.join(modelDir, f), 'utf8');
+  add('model files', 'vase.json', modelFile('vase.json'), { 'vase.obj': modelFile('vase.obj'), 'vase.mtl': modelFile('vase.mtl') });
+  add('model files', 'model-broken.json', scene(oneLight, [{ shape: 'mesh', file: 'broken.obj', center: [0, 0, 0], size: 2 }]),
+      { 'broken.obj': 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n' });
   return scenes;
 }
 
@@ -359,6 +371,14 @@ async function realInput(browser, base) {
   }
   check(subPng.equals(subRendered), `${backend}: a scene naming brdfs/lambert.brdf, picked with lambert.brdf, ` +
     'shows what m3055 render draws of it');
+  // A scene with a model file, picked with the OBJ and its MTL (the model file
+  // listed first: the .json is the one opened).
+  const modelDir = path.join(repo, 'scenes', 'models');
+  await pickFiles(page, '#open', ['vase.obj', 'vase.json', 'vase.mtl'].map((f) => path.join(modelDir, f)));
+  const vasePng = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  execFileSync(m3055, ['render', '--scene', path.join(modelDir, 'vase.json'), '--out', path.join(work, 'vase-picked.png')]);
+  check(vasePng.equals(fs.readFileSync(path.join(work, 'vase-picked.png'))),
+    `${backend}: vase.json picked with vase.obj and vase.mtl shows what m3055 render draws of it`);
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
@@ -586,6 +606,10 @@ async function measureLatency(browser, base) {
     if (only.includes('input')) {
       await wheelScrollsPanel(browser, base);
       await realInput(browser, base);
+    }
+    if (only.includes('page')) {
+      await pageTests(browser, base, { check, openPage, settle, pickFiles, pngOf, sleep, waitForDownload, repo, work, out,
+                                       m3055, backend, site });
     }
     if (only.includes('latency')) await measureLatency(browser, base);
   } finally {
