@@ -133,6 +133,12 @@ FieldChange light_change(const Light& before, const Light& after, int index) {
     first.vector("spot_direction", before.spot_direction, after.spot_direction);
     first.number("spot_exponent", before.spot_exponent, after.spot_exponent);
     first.vector("ambient", before.ambient, after.ambient);
+    first.flag("shadow", before.shadow, after.shadow);
+    first.vector("normal", before.normal, after.normal);
+    first.vector("up", before.up, after.up);
+    first.number("size[0]", before.size[0], after.size[0]);
+    first.number("size[1]", before.size[1], after.size[1]);
+    first.number("radius", before.radius, after.radius);
     first.whole("lobes", before.lobe_kind != after.lobe_kind || before.lobes.size() != after.lobes.size());
     first.lobes("lobes", LobeList(before.lobes), LobeList(after.lobes), lobe_value_key(after.lobe_kind));
     FieldChange change = first.take();

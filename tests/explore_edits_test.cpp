@@ -135,6 +135,17 @@ TEST(ExploreEdits, FieldsAreNamedByTheirSceneFileKeys) {
     EXPECT_EQ(light_change(before, after, 2).label(), "rename light 2") << "a name removed";
     after.name = "key";
     EXPECT_EQ(light_change(before, after, 2).label(), "rename light fill -> key");
+    Light rect = before;
+    rect.type = LightType::rect;
+    Light wider = rect;
+    wider.size[0] = 2.5;
+    EXPECT_EQ(light_change(rect, wider, 1).label(), "light fill size[0] 1 -> 2.5");
+    Light shadowed = rect;
+    shadowed.shadow = true;
+    EXPECT_FALSE(light_change(rect, shadowed, 1).empty()) << "an area light's edits are edits";
+    Light turned = rect;
+    turned.normal = {0, -1, 0};
+    EXPECT_FALSE(light_change(rect, turned, 1).empty());
     Object plane;
     plane.shape = Shape::plane;
     Object tilted = plane;

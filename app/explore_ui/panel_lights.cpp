@@ -5,11 +5,13 @@
 #include "explore_ui/narrow_panel.h"
 #include "explore_ui/widgets.h"
 #include "io/message_text.h"
+#include "scene/area_light.h"
 #include "scene/light_colour.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +101,66 @@ bool colour_editor(Light& light, std::string& error) {
     return changed;
 }
 
+// A light made another type keeps its colour, intensity and name; an area
+// light gets a place and a facing it can be seen from: where a directional
+// light came from, 4 units out, facing the origin.
+void change_type(Light& light, LightType type) {
+    const bool had_position = light.type != LightType::directional && light.type != LightType::sky;
+    if (!had_position) light.position = 4.0 * light.direction;
+    light.type = type;
+    if (type == LightType::rect || type == LightType::disk) {
+        const double distance = glm::length(light.position);
+        light.normal = distance > 1e-9 ? -light.position / distance : dvec3(0.0, -1.0, 0.0);
+        light.up = default_rect_up(light.normal);
+    }
+    if (type == LightType::directional && glm::length(light.position) > 1e-9)
+        light.direction = glm::normalize(light.position);
+}
+
+// Where a rect or disk is and which way it faces, its size; the sky's up.
+bool area_light_fields(Light& light) {
+    bool changed = false;
+    if (light.type == LightType::sky) {
+        ImGui::TextUnformatted("up (the sky's zenith):");
+        changed |= light_sphere_widget("##up", &light.up, 30.0f);
+        changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0, "%.3f", true, kIntensityDecades);
+        tooltip("a_l: radiance a c / pi from every direction above the horizon of up; a unit sky lights an upward "
+                "white Lambert plane as a unit light from the zenith does");
+        return changed;
+    }
+    double p[3] = {light.position.x, light.position.y, light.position.z};
+    if (ImGui::DragScalarN(field("position").c_str(), ImGuiDataType_Double, p, 3, 0.05f)) {
+        light.position = {p[0], p[1], p[2]};
+        changed = true;
+    }
+    tooltip("the emitter's centre, in scene units");
+    ImGui::TextUnformatted("faces (the emitting side's normal):");
+    if (light_sphere_widget("##normal", &light.normal, 30.0f)) {
+        if (light.type == LightType::rect && glm::length(glm::cross(light.normal, light.up)) < 1e-3)
+            light.up = default_rect_up(light.normal);  // up parallel to the normal is refused
+        changed = true;
+    }
+    if (ImGui::SmallButton("face the origin") && glm::length(light.position) > 1e-9) {
+        light.normal = -glm::normalize(light.position);
+        if (light.type == LightType::rect) light.up = default_rect_up(light.normal);
+        changed = true;
+    }
+    tooltip("Turns the emitter to face the scene's origin from where it is.");
+    if (light.type == LightType::rect) {
+        changed |= slider_double("width", &light.size[0], 0.01, 100.0, "%.3f", true);
+        tooltip("size[0], the side along normal x up, in scene units (logarithmic)");
+        changed |= slider_double("height", &light.size[1], 0.01, 100.0, "%.3f", true);
+        tooltip("size[1], the side along up, in scene units (logarithmic)");
+    } else {
+        changed |= slider_double("radius", &light.radius, 0.01, 100.0, "%.3f", true);
+        tooltip("the disk's radius, in scene units (logarithmic)");
+    }
+    changed |= slider_double("intensity a", &light.intensity, 0.0, 10.0, "%.3f", true, kIntensityDecades);
+    tooltip("a_l: far away the emitter is a point light of intensity a cos(theta_e) with 1/d^2 falloff; its "
+            "radiance is a c / area (docs/spec.md section 7.5)");
+    return changed;
+}
+
 // Edits `light` (a copy of light `index`; `material` the selected object's, for the metals' own lobes).
 bool light_editor(Light& light, int index, const Material* material, std::string& error) {
     bool changed = name_field(light);
@@ -112,14 +174,19 @@ bool light_editor(Light& light, int index, const Material* material, std::string
         ImGui::SameLine();
         ImGui::SetNextItemWidth(120);
     }
-    const bool type_changed = ImGui::Combo(field("type").c_str(), &type, "directional\0point\0spot\0");
-    tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation)");
+    const bool type_changed =
+        ImGui::Combo(field("type").c_str(), &type, "directional\0point\0spot\0rect\0disk\0sky\0");
+    tooltip("directional (the paper's lights), point or spot (the lecture's, with attenuation), or a light with "
+            "an area: a rect or disk emitting from one side (a softbox, a window), or the whole sky "
+            "(docs/spec.md section 7.5)");
     if (type_changed) {
-        light.type = static_cast<LightType>(type);
+        change_type(light, static_cast<LightType>(type));
         changed = true;
     }
     static double azimuth_memory[kMaxLights] = {};
-    if (light.type == LightType::directional) {
+    if (is_area_light(light.type)) {
+        changed |= area_light_fields(light);
+    } else if (light.type == LightType::directional) {
         changed |= light_sphere_widget("##sphere", &light.direction, 38.0f);
         if (!narrow_panel()) ImGui::SameLine();  // narrow: the sliders under the sphere, whole width
         ImGui::BeginGroup();
@@ -152,6 +219,11 @@ bool light_editor(Light& light, int index, const Material* material, std::string
         }
     }
     changed |= colour_editor(light, error);
+    // Last, so that the rows above stay where they were before shadows existed.
+    changed |= checkbox("shadow", &light.shadow);
+    tooltip("On: objects block this light (hard shadows from directional, point and spot lights, soft from rect, "
+            "disk and sky). The explorer's display previews area lights at their centres, one shadow ray each; "
+            "a screenshot and m3055 render take 8 x 8 (docs/lights.md).");
 
     // Per-light lobes (Fig. 11): only meaningful when the selected material is a metal.
     if (material && material->model().light_lobes) {

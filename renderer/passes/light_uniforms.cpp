@@ -53,8 +53,9 @@ LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_
         u.shadow.push_back(light.shadow ? 1 : 0);
         u.any_area = u.any_area || area;
         u.any_shadow = u.any_shadow || light.shadow;
-        const std::size_t samples = area ? std::size_t(sampling.light * sampling.light) : 1;
-        const std::size_t rays = !light.shadow ? 0 : area ? std::size_t(4 + sampling.shadow * sampling.shadow) : 1;
+        const std::size_t samples = area ? std::size_t(2 * sampling.light * sampling.light) : 1;
+        const std::size_t penumbra = std::size_t(sampling.shadow * sampling.shadow);
+        const std::size_t rays = !light.shadow ? 0 : !area ? 1 : sampling.shadow > 3 ? 9 + penumbra : penumbra;
         u.work += samples + 10 * rays;
         float lobes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (std::size_t j = 0; j < light.lobes.size() && j < 4; ++j) {

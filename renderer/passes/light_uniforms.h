@@ -12,11 +12,12 @@
 namespace m3055 {
 
 // How an area or sky light is sampled (glsl/common/area_lights.glsl): n x n
-// samples of the emitter for the shading (`light`), and, with a shadow, up to
-// m x m rays in a penumbra (`shadow`). The render's reaches the reference
-// within docs/spec.md's tolerance (docs/lights.md has the error against both);
-// the explorer's fast one, while a slider moves, takes each light's centre
-// (n = 1: exact for Lambert terms) and 2 x 2 rays.
+// samples of the emitter (and as many of the model's highlight) for the
+// shading (`light`), and, with a shadow, m x m rays (`shadow`; a rect or disk
+// probes 3 x 3 first and traces m x m only in a penumbra). The render's
+// setting and its error against the reference: docs/lights.md. The explorer's
+// preview while a slider moves takes each emitter's centre (n = 1: exact for
+// Lambert terms) and one ray to it (a hard shadow from the centre).
 struct AreaSampling {
     int light = 8;
     int shadow = 8;
@@ -24,7 +25,7 @@ struct AreaSampling {
     bool operator!=(const AreaSampling& o) const { return !(*this == o); }
 };
 inline constexpr AreaSampling kRenderSampling{8, 8};
-inline constexpr AreaSampling kFastSampling{1, 2};
+inline constexpr AreaSampling kFastSampling{1, 1};
 
 struct LightUniforms {
     int count = 0;
@@ -34,7 +35,7 @@ struct LightUniforms {
     AreaSampling sampling = kRenderSampling;
     bool any_area = false, any_shadow = false;
     // The lights' shading work in plain lights (passes/draw_chunks.h's pixel-lights): an
-    // area light's n x n samples count n^2, a shadow ray about ten (measured: docs/lights.md).
+    // area light's samples one each, a shadow ray about ten.
     std::size_t work = 0;
     std::vector<int> lobe_count, lobe_kind;
     std::vector<float> ambient;                  // vec3 per light: a_l ambient_l (classic models)
