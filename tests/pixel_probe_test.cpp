@@ -125,6 +125,33 @@ TEST(PixelProbe, EachLightsColourForAConductorIsEq2ForThePairAndLightsThatAreOff
     EXPECT_EQ(text.find("V.H"), std::string::npos) << "F(lambda, 0) does not depend on the angle";
 }
 
+TEST(PixelProbe, AreaAndSkyLightsAreReadTowardsTheEmittersCentreOrTheSkysUp) {
+    Scene scene = gold_scene("normal");
+    Light rect;
+    rect.type = LightType::rect;
+    rect.position = {0, 3, 3};
+    rect.normal = glm::normalize(dvec3(0, -1, -1));
+    rect.up = {0, 1, 0};
+    Light sky;
+    sky.type = LightType::sky;
+    scene.lights = {rect, sky};
+    const ScenePicker picker(scene);
+    const PixelHit hit = picker.pick(32, 20);
+    ASSERT_EQ(hit.object, 0);
+    EXPECT_EQ(pair_colours(scene, hit).size(), 2u);
+    RgbFloatImage raw;
+    raw.width = scene.display.width, raw.height = scene.display.height;
+    raw.pixels.assign(std::size_t(raw.width) * raw.height * 3, 0.0f);
+    Rgb8Image display;
+    display.width = raw.width, display.height = raw.height;
+    display.pixels.assign(std::size_t(raw.width) * raw.height * 3, 0);
+    const PixelProbe towards_rect = probe_pixel(scene, picker, raw, display, 32, 20, 0);
+    ASSERT_TRUE(towards_rect.lit);
+    EXPECT_NEAR(towards_rect.NoL, glm::dot(hit.N, glm::normalize(rect.position - hit.P)), 1e-12);
+    const PixelProbe towards_sky = probe_pixel(scene, picker, raw, display, 32, 20, 1);
+    EXPECT_NEAR(towards_sky.NoL, hit.N.y, 1e-12);
+}
+
 TEST(PixelProbe, WithTheFullEq19EachLightsColourIsTakenAtThePixelsVDotH) {
     const Scene scene = gold_scene("full");
     const ScenePicker picker(scene);

@@ -50,6 +50,16 @@ TEST(PlaneCurve, IncidenceIsNotClampedTo90Degrees) {
     EXPECT_NEAR(incidence_at_target(light, camera), 142.0, 1e-9);
 }
 
+TEST(PlaneCurve, TheSkyIsPlottedFromItsZenith) {
+    Camera camera;
+    camera.position = {0.0, 0.0, 5.0};
+    camera.target = {0.0, 0.0, 0.0};
+    Light sky = white_light();
+    sky.type = LightType::sky;
+    sky.up = {0.0, 1.0, 0.0};
+    EXPECT_NEAR(incidence_at_target(sky, camera), 90.0, 1e-9);
+}
+
 // A translucent sphere on a coloured background, rendered by `m3055 render`:
 // the centre pixel (an odd-sized display, so its ray is the camera axis and
 // N = V there) holds, unquantized (--raw), what the curve gives at view 0.

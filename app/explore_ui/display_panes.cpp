@@ -127,16 +127,21 @@ bool DisplayPanes::compile_deferred(Explorer& explorer) {
 }
 
 Rgb8Image DisplayPanes::render_display_now(Explorer& explorer) {
+    // What `m3055 render` writes: its program and its area lights' samples.
     Renderer& a = *renderer_a_;
     const bool deferring = a.defers_compiles();
+    const AreaSampling sampling = a.area_sampling();
     a.set_defer_compiles(false);
+    a.set_area_sampling(kRenderSampling);
     try {
         a.render(explorer.doc.scene);
     } catch (...) {
         a.set_defer_compiles(deferring);
+        a.set_area_sampling(sampling);
         throw;
     }
     a.set_defer_compiles(deferring);
+    a.set_area_sampling(sampling);
     explorer.session.render_needed = true;  // the panes, read-outs and practice follow on the next frame
     return a.read_display();
 }

@@ -5,6 +5,7 @@
 #include "explore_ui/narrow_panel.h"
 #include "explore_ui/profile_plot.h"
 #include "explore_ui/widgets.h"
+#include "scene/area_light.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -127,6 +128,15 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     else ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%d x %d, %d bits, %s, shrunk", d.width, d.height, d.bits, transform);
     tooltip("The display's size and bits, and its magnification: whole pixels, nearest-neighbour; shrunk (not "
             "whole pixels) when even 1:1 does not fit.");
+    const auto& lights = explorer.doc.scene.lights;
+    if (std::any_of(lights.begin(), lights.end(),
+                    [](const Light& l) { return l.enabled && l.intensity > 0.0 && is_area_light(l.type); })) {
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "area lights: preview");
+        tooltip("The display draws each rect, disk and sky light from its centre with one shadow ray (hard "
+                "shadows, a fast approximation). A screenshot (F12) and m3055 render integrate them with 8 x 8 "
+                "samples and soft shadows; after F12 the display shows that image until the next edit "
+                "(docs/lights.md).");
+    }
     if (!info.compare_count.empty()) {
         ImGui::TextWrapped("A/B: %s", info.compare_count.c_str());
         tooltip("Pixels of B whose display level differs from A's in any channel (the count `m3055 compare` "

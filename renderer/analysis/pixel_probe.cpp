@@ -1,5 +1,7 @@
 #include "analysis/pixel_probe.h"
 
+#include "scene/area_light.h"
+
 #include "geometry/mesh.h"
 #include "models/model_spec.h"
 #include "reference/conductor.h"
@@ -65,6 +67,20 @@ int level_of_png(int png, int bits) {
     return static_cast<int>(std::lround(png * double(top) / 255.0));
 }
 
+// The direction the read-outs take N.L, R.V and V.H against: a directional,
+// point or spot light's own. A rect, disk or sky light has no one direction
+// (its light is an integral over the emitter): the way to the emitter's
+// centre, or the sky's up, stand for it.
+dvec3 probe_direction(const Light& light, const dvec3& P) {
+    if (light.type == LightType::sky) return glm::normalize(light.up);
+    if (is_area_light(light.type)) {
+        const dvec3 to_centre = light.position - P;
+        const double distance = glm::length(to_centre);
+        return distance > 0.0 ? to_centre / distance : -light.normal;
+    }
+    return ref::sample_light(light, P).L;
+}
+
 std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit) {
     std::vector<PairColour> pairs;
     if (hit.object < 0) return pairs;
@@ -80,7 +96,7 @@ std::vector<PairColour> pair_colours(const Scene& scene, const PixelHit& hit) {
         pair.name = light.name;
         pair.by_angle = by_angle;
         if (material.colour_spectrum() && material.model().family == Family::classic) pair.symbol = "kd";
-        const dvec3 L = ref::sample_light(light, hit.P).L;
+        const dvec3 L = probe_direction(light, hit.P);
         const dvec3 H = L + hit.V;
         // V.H: the angle of the metals' Fresnel term (docs/spec.md#72-measured-metals), as the reference takes it.
         pair.cos_theta = glm::length(H) > 0.0 ? std::clamp(glm::dot(hit.V, glm::normalize(H)), 0.0, 1.0) : 0.0;
@@ -109,7 +125,7 @@ PixelProbe probe_pixel(const Scene& scene, const ScenePicker& picker, const RgbF
     p.model = material_of(scene.objects[std::size_t(hit.object)], hit.group).shown_name();
     p.pairs = pair_colours(scene, hit);
     if (light < 0 || light >= static_cast<int>(scene.lights.size())) return p;
-    const dvec3 L = ref::sample_light(scene.lights[std::size_t(light)], hit.P).L;
+    const dvec3 L = probe_direction(scene.lights[std::size_t(light)], hit.P);
     p.lit = true;
     p.NoL = glm::dot(hit.N, L);
     p.RoV = glm::dot(2.0 * p.NoL * hit.N - L, hit.V);

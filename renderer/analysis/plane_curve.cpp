@@ -63,8 +63,10 @@ PlaneCurve plane_curve(const Material& material, const Light& light, double inci
 
 double incidence_at_target(const Light& light, const Camera& camera) {
     const dvec3 N = glm::normalize(camera.position - camera.target);
+    // The sky's stand-in direction is its zenith; a rect's or disk's, its centre.
     const dvec3 L = light.type == LightType::directional ? glm::normalize(light.direction)
-                                                          : glm::normalize(light.position - camera.target);
+                    : light.type == LightType::sky      ? glm::normalize(light.up)
+                                                         : glm::normalize(light.position - camera.target);
     return std::acos(std::clamp(glm::dot(N, L), -1.0, 1.0)) / kDegree;
 }
 
