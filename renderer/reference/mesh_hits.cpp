@@ -13,9 +13,10 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 4;
 
-// Slab test: does the ray (t > 0) meet the box?
-bool hits_box(const Ray& ray, const dvec3& inv_dir, const dvec3& lo, const dvec3& hi) {
-    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+}  // namespace
+
+bool ray_meets_box(const Ray& ray, const dvec3& inv_dir, const dvec3& lo, const dvec3& hi, double t_max) {
+    double t0 = 0.0, t1 = t_max;
     for (int axis = 0; axis < 3; ++axis) {
         double a = (lo[axis] - ray.origin[axis]) * inv_dir[axis];
         double b = (hi[axis] - ray.origin[axis]) * inv_dir[axis];
@@ -26,8 +27,6 @@ bool hits_box(const Ray& ray, const dvec3& inv_dir, const dvec3& lo, const dvec3
     }
     return t0 <= t1;
 }
-
-}  // namespace
 
 MeshIntersector::MeshIntersector(geometry::Mesh mesh) : mesh_(std::move(mesh)) {
     order_.resize(mesh_.triangles());
@@ -117,7 +116,7 @@ bool MeshIntersector::any_hit(const Ray& ray, double t_max) const {
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[stack[--top]];
-        if (!hits_box(ray, inv_dir, node.lo, node.hi)) continue;
+        if (!ray_meets_box(ray, inv_dir, node.lo, node.hi, std::numeric_limits<double>::infinity())) continue;
         if (node.count == 0) {
             stack[top++] = node.first;
             stack[top++] = node.right;
@@ -145,7 +144,7 @@ std::vector<MeshHit> MeshIntersector::intersect_all(const Ray& ray) const {
     while (!stack.empty()) {
         const Node& node = nodes_[stack.back()];
         stack.pop_back();
-        if (!hits_box(ray, inv_dir, node.lo, node.hi)) continue;
+        if (!ray_meets_box(ray, inv_dir, node.lo, node.hi, std::numeric_limits<double>::infinity())) continue;
         if (node.count == 0) {
             stack.push_back(node.first);
             stack.push_back(node.right);

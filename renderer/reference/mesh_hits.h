@@ -14,6 +14,10 @@
 
 namespace m3055::ref {
 
+// Slab test: whether the ray meets the box [lo, hi] for t in (0, t_max);
+// inv_dir = 1 / ray.dir (a 0 * inf from a parallel ray on a slab counts as inside).
+bool ray_meets_box(const Ray& ray, const dvec3& inv_dir, const dvec3& lo, const dvec3& hi, double t_max);
+
 struct MeshHit {
     double t;  // ray parameter, > 0
     std::uint32_t part;   // the triangle's smooth piece (geometry::Mesh::parts)

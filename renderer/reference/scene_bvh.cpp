@@ -13,20 +13,6 @@ namespace {
 
 constexpr std::uint32_t kObjectsPerLeaf = 2;
 
-// Slab test over t in (0, t_max).
-bool ray_meets_box(const Ray& ray, const dvec3& inv_dir, const dvec3& lo, const dvec3& hi, double t_max) {
-    double t0 = 0.0, t1 = t_max;
-    for (int axis = 0; axis < 3; ++axis) {
-        double a = (lo[axis] - ray.origin[axis]) * inv_dir[axis];
-        double b = (hi[axis] - ray.origin[axis]) * inv_dir[axis];
-        if (std::isnan(a) || std::isnan(b)) continue;  // 0 * inf: origin on the slab, parallel ray
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-    }
-    return t0 <= t1;
-}
-
 // Either root of |O + t D - C|^2 = r^2 in (0, t_max): the solid sphere blocks
 // the segment whether it starts outside or inside it. The distance of the
 // centre from the line comes from q = oc - b D, without the cancellation of
