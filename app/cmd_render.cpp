@@ -4,6 +4,7 @@
 #include "interrupt.h"
 #include "progress.h"
 
+#include "analysis/nonfinite.h"
 #include "capture/capture.h"
 #include "gl/program.h"
 #include "io/message_text.h"
@@ -66,8 +67,10 @@ void add_render_command(CLI::App& app) {
             capture.renderer().set_deadline(
                 scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));
             NonFinite nonfinite;
+            // The raw image is read back for the count only where a .brdf material can make NaN (as batch does).
+            NonFinite* counted = may_render_nonfinite(scene) ? &nonfinite : nullptr;
             try {
-                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, &nonfinite);
+                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, counted);
             } catch (const RenderTimeout&) {
                 throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +
                                          "; nothing written");
