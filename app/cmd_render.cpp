@@ -1,5 +1,6 @@
 // `m3055 render`: one scene to PNG (and PFM), headless (docs/spec.md#8-command-line).
 #include "commands.h"
+#include "exit_now.h"
 #include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
@@ -77,6 +78,7 @@ void add_render_command(CLI::App& app) {
             }
             // Written all the same (exit 0): the warning says what the PNG's levels there mean.
             if (nonfinite.pixels > 0) std::cerr << nonfinite_warning(options->scene, nonfinite) << "\n";
+            exit_now(kExitOk);  // the context, its threads and memory are left to the OS
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
             throw CLI::RuntimeError(kExitFailure);
