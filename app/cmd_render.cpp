@@ -1,9 +1,11 @@
 // `m3055 render`: one scene to PNG (and PFM), headless (docs/spec.md#8-command-line).
 #include "commands.h"
+#include "exit_now.h"
 #include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
 
+#include "analysis/nonfinite.h"
 #include "capture/capture.h"
 #include "gl/program.h"
 #include "io/message_text.h"
@@ -66,14 +68,17 @@ void add_render_command(CLI::App& app) {
             capture.renderer().set_deadline(
                 scene_deadline(start + (std::chrono::steady_clock::now() - loaded), options->scene_timeout));
             NonFinite nonfinite;
+            // The raw image is read back for the count only where a .brdf material can make NaN (as batch does).
+            NonFinite* counted = may_render_nonfinite(scene) ? &nonfinite : nullptr;
             try {
-                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, &nonfinite);
+                capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, counted);
             } catch (const RenderTimeout&) {
                 throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +
                                          "; nothing written");
             }
             // Written all the same (exit 0): the warning says what the PNG's levels there mean.
             if (nonfinite.pixels > 0) std::cerr << nonfinite_warning(options->scene, nonfinite) << "\n";
+            exit_now(kExitOk);  // the context, its threads and memory are left to the OS
         } catch (const std::exception& error) {
             std::cerr << error_text(error) << "\n";
             throw CLI::RuntimeError(kExitFailure);

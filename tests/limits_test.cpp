@@ -71,6 +71,25 @@ TEST(Limits, Display8192SquaredRendersWithBoundedMemory) {
     }
 }
 
+// Without --raw and without a .brdf material nothing reads the float frame
+// back (built-in models give finite values, analysis/nonfinite.h): the GL side
+// (24 bytes a pixel) and the 8-bit display (3) stay, and the 12-byte float
+// copy a non-finite count would read is not made (about 45 bytes a pixel with it).
+TEST(Limits, RenderWithoutRawReadsNoFloatsBack) {
+    TempDir dir;
+    nlohmann::json scene = spec_scene();
+    scene["display"] = {{"width", 4096}, {"height", 4096}, {"bits", 5}};
+    write_text(dir.file("big.json"), scene.dump());
+    const RunResult run = run_m3055({"render", "--scene", dir.file("big.json"), "--out", dir.file("big.png")});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const double pixels = 4096.0 * 4096.0;
+    const double peak = run.peak_rss_mib * 1048576.0;
+    std::printf("4096 x 4096 without --raw: peak RSS %.0f MiB (%.1f bytes per pixel)\n", peak / 1048576.0,
+                peak / pixels);
+    if (kAsan) GTEST_SKIP() << "ASan's shadow memory and quarantine hide a 12-byte share";
+    EXPECT_LT(peak / pixels, 38.0);
+}
+
 // 100 x 100 spheres in a grid, the five models in turn, a directional and an
 // attenuated point light, seen from z = 7 with a 30 degree vertical field.
 nlohmann::json ten_thousand_spheres(int width, int height) {

@@ -27,7 +27,7 @@ fail() { echo "FAIL: $*" | tee -a "$failures" >&2; }
 # the m3055 it builds; test: the rest of what scripts/test and .ci/run run.)
 run_shell=(scripts/run scripts/setup)
 test_shell=(scripts/test scripts/test-web scripts/web scripts/test-sanitize scripts/sanitizer-tree scripts/fuzz
-            scripts/test-noexplorer .ci/run scripts/slurm/submit scripts/slurm/*.sbatch tests/*.sh)
+            scripts/test-noexplorer scripts/bench-capture .ci/run scripts/slurm/submit scripts/slurm/*.sbatch tests/*.sh)
 mapfile -t run_cpp < <(find app grading renderer explore -name '*.cpp' -o -name '*.h' | sort)
 test_cpp=(tests/*.cpp tests/support/*.cpp tests/fakes/*.c)
 test_js=(tests/web/*.js)

@@ -1,6 +1,8 @@
 /* m3055_measure_child RESULT_FILE PROGRAM [ARG...]: runs PROGRAM as its own
- * child and writes "seconds peak_rss_kb signal" to RESULT_FILE when it ends;
- * exits with the child's status (128 + N when signal N killed it).
+ * child and writes "seconds peak_rss_kb signal cpu_seconds minor_faults
+ * major_faults" to RESULT_FILE when it ends (the tests read the first three,
+ * scripts/bench-capture all); exits with the child's status (128 + N when
+ * signal N killed it).
  *
  * Why a separate process: a child's getrusage peak includes the resident
  * memory of the process it was forked from (Linux keeps the old image's high
@@ -65,7 +67,10 @@ int main(int argc, char** argv) {
     const double seconds = (double)(end.tv_sec - start.tv_sec) + 1e-9 * (double)(end.tv_nsec - start.tv_nsec);
     FILE* result = fopen(argv[1], "w");
     if (result) {
-        fprintf(result, "%.6f %ld %d\n", seconds, usage.ru_maxrss, WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+        const double cpu = (double)(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                           1e-6 * (double)(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+        fprintf(result, "%.6f %ld %d %.6f %ld %ld\n", seconds, usage.ru_maxrss,
+                WIFSIGNALED(status) ? WTERMSIG(status) : 0, cpu, usage.ru_minflt, usage.ru_majflt);
         fclose(result);
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
