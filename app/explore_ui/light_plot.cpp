@@ -98,8 +98,8 @@ void light_plot(Explorer& explorer) {
     }
     const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene, subject);
     ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
-    tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
-            "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
+    tooltip("The irradiance of the light named \"key\" against the one named \"fill\" at the subject's centre, "
+            "on a surface facing the camera (renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
 }
 
 }  // namespace m3055::explore
