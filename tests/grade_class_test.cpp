@@ -778,6 +778,22 @@ TEST(GradeCheck, TemperatureRuleNeedsALightOfTheReference) {
         EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
 }
 
+TEST(GradeCheck, ShadowRuleNeedsALightOfTheReference) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["rules"] = json::parse(R"([{"rule": "shadow", "light": "Key", "points": 10},
+                                     {"rule": "shadow", "light": "key", "points": 10}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string line : {
+             "a.json: rules[0].light: no light named \"Key\" in the reference scene (its lights: \"key\", \"fill\", "
+             "\"back\"); light names are case-sensitive",
+             "a.json: rules[1] (shadow): the reference fails it: \"key\" casts no shadows (its \"shadow\" is false)"})
+        EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
+}
+
 TEST(GradeCheck, KeyToFillNeedsLightsNamedKeyAndFill) {
     TempDir dir;
     json reference = read_json(kAssignment.substr(0, kAssignment.rfind('/')) + "/reference.json");
