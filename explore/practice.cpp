@@ -87,7 +87,7 @@ std::optional<grading::Grade> Practice::refusal(const Scene& scene, const std::s
     // scene.json beside the file); a single NAME.json is refused.
     if (std::filesystem::path(scene_file).filename() == "scene.json") return std::nullopt;
     return grading::broken_grade(assignment_, "",
-                                 field + scene_json::brdf_without_folder_reason(scene_json::kBrdfNeedsAFolder));
+                                 field + scene_json::brdf_without_folder_reason(scene_json::kFilesNeedAFolder));
 }
 
 void Practice::regrade(PracticeStatus& status, const Scene& scene, const std::string& scene_file,

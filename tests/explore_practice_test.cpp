@@ -98,8 +98,9 @@ TEST(ExplorePractice, ABrdfMaterialInASingleFileSceneIsRefusedAsGradeRefusesIt) 
         EXPECT_EQ(refused->score, 0);
         const std::vector<std::string> reasons = refused->reasons();
         ASSERT_FALSE(reasons.empty());
-        EXPECT_NE(reasons.back().find("objects[1].material.file: a .brdf file is not accepted here: a submission with a "
-                                      ".brdf material is a folder NAME/ holding scene.json and the .brdf file"),
+        EXPECT_NE(reasons.back().find("objects[1].material.file: a .brdf file is not accepted here: a submission that "
+                                      "names a file (a .brdf material, a model) is a folder NAME/ holding scene.json "
+                                      "and the file"),
                   std::string::npos)
             << reasons.back();
     }

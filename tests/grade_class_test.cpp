@@ -292,8 +292,8 @@ TEST(GradeClass, BrdfFilesOutsideTheSubmissionAreRefusedUnreadNamingTheField) {
         {"inner_dotdot", "objects[0].material.file: must be a path inside the submission's folder, without \"..\""},
         {"link_out", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
         {"folder_link", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
-        {"flat", "objects[0].material.file: a .brdf file is not accepted here: a submission with a .brdf material is "
-                 "a folder NAME/ holding scene.json and the .brdf file"},
+        {"flat", "objects[0].material.file: a .brdf file is not accepted here: a submission that names a file (a "
+                 ".brdf material, a model) is a folder NAME/ holding scene.json and the file"},
     };
     for (const auto& [name, reason] : refused) {
         ASSERT_TRUE(s.count(name)) << name;
