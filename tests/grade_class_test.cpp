@@ -625,11 +625,13 @@ std::string write_assignment(TempDir& dir, const std::string& name, const std::f
     return dir.file(name);
 }
 
-TEST(GradeCheck, TheWorkedAssignmentPassesItsOwnCheck) {
-    const RunResult run = run_m3055({"grade", "--check", kAssignment});
-    EXPECT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.err.find("assignment.json: 0 errors; the reference scores 100 of 100 points"), std::string::npos)
-        << run.err;
+TEST(GradeCheck, TheWorkedAssignmentsPassTheirOwnCheck) {
+    for (const std::string& assignment : {kAssignment, source_path("assignments/vase-softbox/assignment.json")}) {
+        const RunResult run = run_m3055({"grade", "--check", assignment});
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_NE(run.err.find("assignment.json: 0 errors; the reference scores 100 of 100 points"), std::string::npos)
+            << run.err;
+    }
 }
 
 TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAssignment) {
