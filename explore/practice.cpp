@@ -5,6 +5,7 @@
 #include "io/message_text.h"
 #include "models/model_spec.h"
 #include "scene/json_brdf.h"
+#include "scene/referenced_file.h"
 #include "scene/load.h"
 
 #include <algorithm>
@@ -22,6 +23,13 @@ namespace {
 int first_brdf_object(const Scene& scene) {
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         if (scene.objects[i].material.model().family == Family::brdf) return int(i);
+    return -1;
+}
+
+// The first object that is a model from a file, or -1.
+int first_model_file_object(const Scene& scene) {
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].shape == Shape::mesh && !scene.objects[i].file.empty()) return int(i);
     return -1;
 }
 
@@ -79,7 +87,7 @@ double Practice::settle_left(const PracticeStatus& status, double now) const {
 
 std::optional<grading::Grade> Practice::refusal(const Scene& scene, const std::string& scene_file) const {
     const int brdf_object = first_brdf_object(scene);
-    if (brdf_object < 0) return std::nullopt;
+    if (brdf_object < 0) return model_file_refusal(scene, scene_file);
     const std::string field = "objects[" + std::to_string(brdf_object) + "].material.file: ";
     // grade without --allow-brdf refuses the file when it loads the scene: the same reason here.
     if (!allow_brdf_) return grading::broken_grade(assignment_, "", field + scene_json::brdf_not_allowed_reason());
@@ -87,7 +95,16 @@ std::optional<grading::Grade> Practice::refusal(const Scene& scene, const std::s
     // scene.json beside the file); a single NAME.json is refused.
     if (std::filesystem::path(scene_file).filename() == "scene.json") return std::nullopt;
     return grading::broken_grade(assignment_, "",
-                                 field + scene_json::brdf_without_folder_reason(scene_json::kBrdfNeedsAFolder));
+                                 field + scene_json::brdf_without_folder_reason(scene_json::kFilesNeedAFolder));
+}
+
+// grade reads a model file only in a folder submission NAME/scene.json, as a .brdf.
+std::optional<grading::Grade> Practice::model_file_refusal(const Scene& scene, const std::string& scene_file) const {
+    const int object = first_model_file_object(scene);
+    if (object < 0 || std::filesystem::path(scene_file).filename() == "scene.json") return std::nullopt;
+    return grading::broken_grade(assignment_, "",
+                                 "objects[" + std::to_string(object) + "].file: " +
+                                     scene_json::without_folder_reason("a model file", scene_json::kFilesNeedAFolder));
 }
 
 void Practice::regrade(PracticeStatus& status, const Scene& scene, const std::string& scene_file,

@@ -45,7 +45,8 @@ public:
     // The grade of a scene `grade` refuses before rendering it, 0 with
     // grade's reason: a .brdf material without allow_brdf; with it, a .brdf
     // material in a scene that is not a folder submission's NAME/scene.json
-    // (a single NAME.json, or no file yet), which grade refuses too. None otherwise.
+    // (a single NAME.json, or no file yet), which grade refuses too; a model
+    // from a file in such a scene likewise. None otherwise.
     std::optional<grading::Grade> refusal(const Scene& scene, const std::string& scene_file) const;
 
     // The reference as shown beside the student's display (the PNG, the
@@ -57,6 +58,8 @@ public:
     PracticeStatus start_status() const;
 
 private:
+    std::optional<grading::Grade> model_file_refusal(const Scene& scene, const std::string& scene_file) const;
+
     grading::Assignment assignment_;
     grading::LevelImage reference_;
     Rgb8Image shown_;           // the reference as shown (the PNG, the render, a PFM's display)

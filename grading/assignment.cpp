@@ -106,8 +106,25 @@ private:
     std::string path_;
 };
 
-constexpr RuleKind kRuleKinds[] = {RuleKind::model, RuleKind::light_count, RuleKind::warmer,      RuleKind::key_to_fill,
-                                   RuleKind::eq14,  RuleKind::range,       RuleKind::temperature, RuleKind::equals};
+constexpr RuleKind kRuleKinds[] = {RuleKind::model, RuleKind::light_count, RuleKind::warmer,
+                                   RuleKind::key_to_fill, RuleKind::eq14, RuleKind::range,
+                                   RuleKind::temperature, RuleKind::equals, RuleKind::shadow};
+
+constexpr LightType kLightTypes[] = {LightType::directional, LightType::point, LightType::spot,
+                                     LightType::rect,        LightType::disk,  LightType::sky};
+
+// light_count's "type": a light type of the scene format, as a scene's lights spell it.
+LightType light_type(const Fields& fields, const std::string& key) {
+    const std::string type = fields.string(key);
+    if (type.empty()) return LightType::directional;  // said already
+    std::string known;
+    for (LightType t : kLightTypes) {
+        if (type == to_string(t)) return t;
+        known += (known.empty() ? "" : ", ") + std::string(to_string(t));
+    }
+    fields.fail(fields.name(key), "unknown light type " + text::quote(type) + " (" + known + ")");
+    return LightType::directional;
+}
 
 std::optional<RuleKind> rule_kind(const Fields& fields, const std::string& key) {
     const std::string kind = fields.string(key);
@@ -155,8 +172,10 @@ Rule load_rule(const json& node, Problems& problems, std::size_t index, bool& kn
             rule.object = f.whole("object", 0, 99999, -1);
             break;
         case RuleKind::light_count:
-            f.only({"rule", "name", "points", "equals"});
+            f.only({"rule", "name", "points", "equals", "type"});
             rule.min = rule.max = f.whole("equals", 0, 16);
+            rule.of_type = f.has("type");
+            if (rule.of_type) rule.light_type = light_type(f, "type");
             break;
         case RuleKind::warmer:
             f.only({"rule", "name", "points", "light", "than"});
@@ -190,6 +209,10 @@ Rule load_rule(const json& node, Problems& problems, std::size_t index, bool& kn
             rule.text = f.string("path");
             rule.value = equals_value(f);
             break;
+        case RuleKind::shadow:
+            f.only({"rule", "name", "points", "light"});
+            rule.text = f.string("light");
+            break;
     }
     return rule;
 }
@@ -211,6 +234,7 @@ const char* to_string(RuleKind kind) {
         case RuleKind::range: return "range";
         case RuleKind::temperature: return "temperature";
         case RuleKind::equals: return "equals";
+        case RuleKind::shadow: return "shadow";
     }
     return "?";
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "grading/level_compare.h"
+#include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,13 +31,14 @@ private:
 // One rule of the vocabulary (docs/grading.md#rules). Fields unused by a kind stay at their defaults.
 enum class RuleKind {
     model,        // {"rule": "model", "is": "metal", "object": 0}       (no "object": every object)
-    light_count,  // {"rule": "light_count", "equals": 3}                 (enabled lights)
+    light_count,  // {"rule": "light_count", "equals": 3, "type": "rect"} (enabled lights; of that type only with "type")
     warmer,       // {"rule": "warmer", "light": "key", "than": "fill"}
     key_to_fill,  // {"rule": "key_to_fill", "min": 2, "max": 4}          (analysis/lighting_ratio.h)
     eq14,         // {"rule": "eq14", "object": 0, "within_percent": 1}  (scene/presets.h: highlight_peak)
     range,        // {"rule": "range", "path": "objects[0].material.m", "min": 5, "max": 20}
     temperature,  // {"rule": "temperature", "light": "key", "min": 3000, "max": 3400}  (kelvin)
     equals,       // {"rule": "equals", "path": "objects[0].material.conductor", "value": "gold"}
+    shadow,       // {"rule": "shadow", "light": "key"}                   (the light casts shadows)
 };
 const char* to_string(RuleKind kind);
 
@@ -44,11 +46,13 @@ struct Rule {
     RuleKind kind = RuleKind::model;
     std::string label;   // "rules[2] (key_to_fill)", or the rule's own "name"
     double points = 0;
-    std::string text;    // model: the model's name; warmer: the warmer light; range, equals: the path; temperature: the light
+    std::string text;    // model: the model's name; warmer: the warmer light; range, equals: the path; temperature, shadow: the light
     std::string other;   // warmer: the other light
     int object = -1;     // model, eq14: the object's index (-1: every object, model only)
     double min = 0, max = 0;  // key_to_fill, range, temperature (inclusive); light_count: min = max = N; eq14: max = percent
     nlohmann::json value;     // equals: the string or boolean the value at the path must be
+    bool of_type = false;     // light_count: only lights of `light_type` are counted
+    LightType light_type = LightType::directional;
 };
 
 struct Assignment {

@@ -128,7 +128,7 @@ AssignmentCheck check_assignment(const AssignmentRead& read, const LoadContext& 
         if (has_object && rule.object >= int(scene->objects.size()))
             error(field + ".object", "no objects[" + std::to_string(rule.object) + "] in the reference scene (it has " +
                                          objects_text(scene->objects.size()) + ")");
-        if (rule.kind == RuleKind::temperature && !has_light(*scene, rule.text))
+        if ((rule.kind == RuleKind::temperature || rule.kind == RuleKind::shadow) && !has_light(*scene, rule.text))
             error(field + ".light", no_light_text(*scene, rule.text));
         if (rule.kind == RuleKind::warmer) {
             if (!has_light(*scene, rule.text)) error(field + ".light", no_light_text(*scene, rule.text));

@@ -158,7 +158,7 @@ Graded grade_submission_alone(const Assignment& assignment, const Submission& s,
     LoadContext submission = scenes;
     submission.folder = class_dir;
     // Nothing outside the submission is read: its .brdf files are its own.
-    submission.confinement = Confinement{relative_to(s.folder, class_dir), scene_json::kBrdfNeedsAFolder};
+    submission.confinement = Confinement{relative_to(s.folder, class_dir), scene_json::kFilesNeedAFolder};
     try {
         const auto start = std::chrono::steady_clock::now();
         const Scene scene = load_scene_file(scene_path, submission);

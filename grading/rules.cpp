@@ -40,10 +40,18 @@ Check check_model(const Rule& rule, const Scene& scene) {
     return result(rule, true, (rule.object >= 0 ? object_name(rule.object) : "every object") + " is " + rule.text);
 }
 
-int enabled_lights(const Scene& scene) {
+bool lights_up(const Light& light) { return light.enabled && light.intensity > 0; }
+
+// "3 lights enabled", "1 rect light enabled, not 2": the enabled lights, of the rule's type if it names one.
+Check check_light_count(const Rule& rule, const Scene& scene) {
     int count = 0;
-    for (const Light& light : scene.lights) count += (light.enabled && light.intensity > 0) ? 1 : 0;
-    return count;
+    for (const Light& light : scene.lights)
+        count += lights_up(light) && (!rule.of_type || light.type == rule.light_type) ? 1 : 0;
+    const int want = int(rule.min);
+    const std::string kind = rule.of_type ? std::string(to_string(rule.light_type)) + " " : "";
+    return result(rule, count == want,
+                  std::to_string(count) + " " + kind + (count == 1 ? "light enabled" : "lights enabled") +
+                      (count == want ? "" : ", not " + std::to_string(want)));
 }
 
 const Light* named_light(const Scene& scene, const std::string& name) {
@@ -95,6 +103,16 @@ Check check_temperature(const Rule& rule, const Scene& scene) {
     const bool ok = light->temperature_k >= rule.min && light->temperature_k <= rule.max;
     return result(rule, ok, text::quote(rule.text) + " is " + kelvin_text(light->temperature_k) +
                                 (ok ? ", within " : ", not within ") + range);
+}
+
+// The light casts shadows: its "shadow" is true, and it is on (a light that is off casts nothing).
+Check check_shadow(const Rule& rule, const Scene& scene) {
+    const Light* light = named_light(scene, rule.text);
+    if (!light) return result(rule, false, no_light_named(scene, rule.text));
+    const std::string name = text::quote(rule.text);
+    if (!light->shadow) return result(rule, false, name + " casts no shadows (its \"shadow\" is false)");
+    if (!lights_up(*light)) return result(rule, false, name + " is off (disabled or of intensity 0): it casts no shadows");
+    return result(rule, true, name + " casts shadows");
 }
 
 Check check_key_to_fill(const Rule& rule, const Scene& scene) {
@@ -162,18 +180,14 @@ bool same_but_case(const std::string& a, const std::string& b) {
 Check check_rule(const Rule& rule, const Scene& scene, const nlohmann::json& document) {
     switch (rule.kind) {
         case RuleKind::model: return check_model(rule, scene);
-        case RuleKind::light_count: {
-            const int count = enabled_lights(scene);
-            const int want = int(rule.min);
-            return result(rule, count == want,
-                          std::to_string(count) + (count == 1 ? " light enabled" : " lights enabled") + (count == want ? "" : ", not " + std::to_string(want)));
-        }
+        case RuleKind::light_count: return check_light_count(rule, scene);
         case RuleKind::warmer: return check_warmer(rule, scene);
         case RuleKind::key_to_fill: return check_key_to_fill(rule, scene);
         case RuleKind::eq14: return check_eq14(rule, scene);
         case RuleKind::range: return check_range(rule, document);
         case RuleKind::temperature: return check_temperature(rule, scene);
         case RuleKind::equals: return check_equals(rule, document);
+        case RuleKind::shadow: return check_shadow(rule, scene);
     }
     return result(rule, false, "unknown rule");
 }

@@ -14,6 +14,7 @@
 // from docs/spec.md's target (99.5 % on the same level, none more than one off).
 #include "gpu_compare.h"
 
+#include "frame/renderer.h"
 #include "scene/load.h"
 
 #include <gtest/gtest.h>
@@ -101,6 +102,29 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     } else {
         EXPECT_LE(c.mean_abs_diff, kMeanDiff);
         EXPECT_GE(c.same_level_share, kSameLevelShare);
+    }
+}
+
+// A shadowed directional light with no area light in the scene (the programs
+// then have shadows and no emitters): every family draws it, and the shadow
+// only takes light away, from some pixels and never adds any.
+TEST(HardShadowsAlone, CompileForEveryFamilyAndOnlyTakeLightAway) {
+    const LightCase key{"directional", {{"type", "directional"}, {"direction", {1, 1.2, 0.8}}, {"intensity", 0.9}}};
+    Renderer& renderer = test::shared_renderer();
+    for (const MaterialCase& material : kMaterials) {
+        SCOPED_TRACE(material.name);
+        renderer.render(lit_scene(key, material, false));
+        const std::vector<float> lit = renderer.read_raw().pixels;
+        ASSERT_NO_THROW(renderer.render(lit_scene(key, material, true)));
+        const std::vector<float> shadowed = renderer.read_raw().pixels;
+        ASSERT_EQ(shadowed.size(), lit.size());
+        long darker = 0, brighter = 0;
+        for (std::size_t i = 0; i < lit.size(); ++i) {
+            darker += shadowed[i] < lit[i];
+            brighter += shadowed[i] > lit[i];
+        }
+        EXPECT_GT(darker, 300);
+        EXPECT_EQ(brighter, 0);
     }
 }
 

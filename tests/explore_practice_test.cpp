@@ -98,12 +98,34 @@ TEST(ExplorePractice, ABrdfMaterialInASingleFileSceneIsRefusedAsGradeRefusesIt) 
         EXPECT_EQ(refused->score, 0);
         const std::vector<std::string> reasons = refused->reasons();
         ASSERT_FALSE(reasons.empty());
-        EXPECT_NE(reasons.back().find("objects[1].material.file: a .brdf file is not accepted here: a submission with a "
-                                      ".brdf material is a folder NAME/ holding scene.json and the .brdf file"),
+        EXPECT_NE(reasons.back().find("objects[1].material.file: a .brdf file is not accepted here: a submission that "
+                                      "names a file (a .brdf material, a model) is a folder NAME/ holding scene.json "
+                                      "and the file"),
                   std::string::npos)
             << reasons.back();
     }
     EXPECT_FALSE(allowing.refusal(default_scene(), "/class/submission.json")) << "no .brdf: a single file is fine";
+}
+
+// grade reads a model file only in a folder submission too: the live grade of
+// a single-file scene with a mesh from a file is grade's refusal.
+TEST(ExplorePractice, AModelFileInASingleFileSceneIsRefusedAsGradeRefusesIt) {
+    Scene scene = default_scene();
+    scene.objects.push_back(scene.objects[0]);
+    scene.objects[1].shape = Shape::mesh;
+    scene.objects[1].file = "vase.obj";
+    const Practice practice(png_assignment(), nullptr, false);
+    for (const std::string file : {"/class/submission.json", ""}) {
+        const std::optional<grading::Grade> refused = practice.refusal(scene, file);
+        ASSERT_TRUE(refused) << file;
+        EXPECT_EQ(refused->score, 0);
+        ASSERT_FALSE(refused->reasons().empty());
+        EXPECT_EQ(refused->reasons().back(),
+                  "objects[1].file: a model file is not accepted here: a submission that names a file (a .brdf "
+                  "material, a model) is a folder NAME/ holding scene.json and the file");
+    }
+    EXPECT_FALSE(practice.refusal(scene, "/class/pat/scene.json")) << "a folder submission's model is graded";
+    EXPECT_FALSE(practice.refusal(default_scene(), "/class/submission.json")) << "no model file: a single file is fine";
 }
 
 TEST(ExplorePractice, GradeLineIsWhatPrintGradePrints) {

@@ -612,7 +612,7 @@ TEST_F(Explorer, AssignmentNewSceneFileAndBrdfPermissionAsGradeHasThem) {
         const char* expected;  // in the first reason, or in the output when graded
     };
     for (const Try& t : {Try{"brdf.json", false, "objects[0].material.file: a .brdf file is code"},
-                         Try{"brdf.json", true, "a submission with a .brdf material is a folder NAME/"},
+                         Try{"brdf.json", true, "a submission that names a file (a .brdf material, a model) is a folder"},
                          Try{"pat/scene.json", true, "objects[0] is lambert (.brdf), not metal"}}) {
         std::vector<std::string> args = {"--assignment", assignment, t.scene, "--script", dir.file("grade.txt"),
                                          "--exit-after-script"};

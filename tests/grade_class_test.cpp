@@ -292,8 +292,8 @@ TEST(GradeClass, BrdfFilesOutsideTheSubmissionAreRefusedUnreadNamingTheField) {
         {"inner_dotdot", "objects[0].material.file: must be a path inside the submission's folder, without \"..\""},
         {"link_out", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
         {"folder_link", "objects[0].material.file: leads out of the submission's folder (a symbolic link)"},
-        {"flat", "objects[0].material.file: a .brdf file is not accepted here: a submission with a .brdf material is "
-                 "a folder NAME/ holding scene.json and the .brdf file"},
+        {"flat", "objects[0].material.file: a .brdf file is not accepted here: a submission that names a file (a "
+                 ".brdf material, a model) is a folder NAME/ holding scene.json and the file"},
     };
     for (const auto& [name, reason] : refused) {
         ASSERT_TRUE(s.count(name)) << name;
@@ -625,11 +625,13 @@ std::string write_assignment(TempDir& dir, const std::string& name, const std::f
     return dir.file(name);
 }
 
-TEST(GradeCheck, TheWorkedAssignmentPassesItsOwnCheck) {
-    const RunResult run = run_m3055({"grade", "--check", kAssignment});
-    EXPECT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_NE(run.err.find("assignment.json: 0 errors; the reference scores 100 of 100 points"), std::string::npos)
-        << run.err;
+TEST(GradeCheck, TheWorkedAssignmentsPassTheirOwnCheck) {
+    for (const std::string& assignment : {kAssignment, source_path("assignments/vase-softbox/assignment.json")}) {
+        const RunResult run = run_m3055({"grade", "--check", assignment});
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_NE(run.err.find("assignment.json: 0 errors; the reference scores 100 of 100 points"), std::string::npos)
+            << run.err;
+    }
 }
 
 TEST(GradeCheck, EveryStructuralErrorIsOneLineNamingTheFieldAndGradeRefusesTheAssignment) {
@@ -775,6 +777,22 @@ TEST(GradeCheck, TemperatureRuleNeedsALightOfTheReference) {
              "a.json: rules[0].light: no light named \"rim\" in the reference scene (its lights: \"key\", \"fill\", \"back\")",
              "a.json: rules[1] (temperature): the reference fails it: \"key\" has no \"temperature_k\" (an RGB colour), "
              "wanted [3000 K, 3400 K]"})
+        EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
+}
+
+TEST(GradeCheck, ShadowRuleNeedsALightOfTheReference) {
+    TempDir dir;
+    const std::string a = write_assignment(dir, "a.json", [](json& a) {
+        a["rules"] = json::parse(R"([{"rule": "shadow", "light": "Key", "points": 10},
+                                     {"rule": "shadow", "light": "key", "points": 10}])");
+        a.erase("pass");
+    });
+    const RunResult check = run_m3055({"grade", "--check", a});
+    EXPECT_EQ(check.exit_code, 1);
+    for (const std::string line : {
+             "a.json: rules[0].light: no light named \"Key\" in the reference scene (its lights: \"key\", \"fill\", "
+             "\"back\"); light names are case-sensitive",
+             "a.json: rules[1] (shadow): the reference fails it: \"key\" casts no shadows (its \"shadow\" is false)"})
         EXPECT_NE(check.err.find(line), std::string::npos) << line << "\n" << check.err;
 }
 

@@ -51,6 +51,45 @@ TEST(GradeRules, LightCountCountsEnabledLights) {
     EXPECT_EQ(two.reason, "2 lights enabled, not 3");
 }
 
+// With "type", only lights of that type count: "one rect softbox" is a light_count of rects.
+TEST(GradeRules, LightCountCountsLightsOfATypeWhenItNamesOne) {
+    nlohmann::json doc = reference_doc();
+    const std::string one_rect = R"({"rule": "light_count", "equals": 1, "type": "rect", "points": 1})";
+    const Check none = check(one_rect, doc);
+    EXPECT_FALSE(none.ok);
+    EXPECT_EQ(none.reason, "0 rect lights enabled, not 1");
+    EXPECT_EQ(check(R"({"rule": "light_count", "equals": 3, "type": "directional", "points": 1})", doc).reason,
+              "3 directional lights enabled");
+    doc["lights"][0] = {{"name", "key"}, {"type", "rect"}, {"position", {2, 2, 2}}, {"normal", {-1, -1, -1}},
+                        {"size", {1, 0.5}}, {"intensity", 2}};
+    const Check rect = check(one_rect, doc);
+    EXPECT_TRUE(rect.ok);
+    EXPECT_EQ(rect.reason, "1 rect light enabled");
+    EXPECT_EQ(check(R"({"rule": "light_count", "equals": 3, "points": 1})", doc).reason, "3 lights enabled")
+        << "without a type every light counts";
+    doc["lights"][0]["enabled"] = false;
+    EXPECT_EQ(check(one_rect, doc).reason, "0 rect lights enabled, not 1");
+    doc["lights"][0]["enabled"] = true;
+    doc["lights"][0]["intensity"] = 0;
+    EXPECT_FALSE(check(one_rect, doc).ok) << "a light of intensity 0 is no light";
+}
+
+TEST(GradeRules, ShadowWantsTheNamedLightToCastShadows) {
+    nlohmann::json doc = reference_doc();
+    const std::string rule = R"({"rule": "shadow", "light": "key", "points": 1})";
+    const Check none = check(rule, doc);
+    EXPECT_FALSE(none.ok);
+    EXPECT_EQ(none.reason, "\"key\" casts no shadows (its \"shadow\" is false)");
+    doc["lights"][0]["shadow"] = true;
+    const Check casts = check(rule, doc);
+    EXPECT_TRUE(casts.ok);
+    EXPECT_EQ(casts.reason, "\"key\" casts shadows");
+    doc["lights"][0]["enabled"] = false;
+    EXPECT_EQ(check(rule, doc).reason, "\"key\" is off (disabled or of intensity 0): it casts no shadows");
+    EXPECT_EQ(check(R"({"rule": "shadow", "light": "Key", "points": 1})", doc).reason,
+              "no light named \"Key\" (names are case-sensitive: the scene has \"key\")");
+}
+
 TEST(GradeRules, WarmerComparesRedMinusBlue) {
     nlohmann::json doc = reference_doc();
     const std::string rule = R"({"rule": "warmer", "light": "key", "than": "fill", "points": 1})";
@@ -106,12 +145,14 @@ TEST(GradeRules, TemperatureWantsAKelvinLightInRange) {
 
 TEST(GradeRules, KeyToFillUsesTheExplorersRatio) {
     nlohmann::json doc = reference_doc();
-    // Y(key) = 0.2126 + 0.7152 * 0.82 + 0.0722 * 0.6 = 0.842384; fill 0.3: 2.808:1.
+    // Y(key) = 0.2126 + 0.7152 * 0.82 + 0.0722 * 0.6 = 0.842384, fill 0.3, facing the camera at
+    // (0, 0.3, 6): cos 0.605461 for the key (1, 1, 1), 0.706259 for the fill (-1, 0.2, 1): 2.4072:1.
     const Check ok = check(R"({"rule": "key_to_fill", "min": 2, "max": 4, "points": 1})", doc);
     EXPECT_TRUE(ok.ok) << ok.reason;
-    EXPECT_EQ(ok.reason.rfind("key-to-fill 2.81:1", 0), 0u) << ok.reason;
+    EXPECT_EQ(ok.reason.rfind("key-to-fill 2.41:1", 0), 0u) << ok.reason;
     // The edges are inclusive: a range ending just below the ratio fails.
-    EXPECT_FALSE(check(R"({"rule": "key_to_fill", "min": 2, "max": 2.8, "points": 1})", doc).ok);
+    EXPECT_FALSE(check(R"({"rule": "key_to_fill", "min": 2, "max": 2.407, "points": 1})", doc).ok);
+    EXPECT_TRUE(check(R"({"rule": "key_to_fill", "min": 2, "max": 2.4072, "points": 1})", doc).ok);
     doc["lights"][1]["intensity"] = 0.65;
     EXPECT_FALSE(check(R"({"rule": "key_to_fill", "min": 2, "max": 4, "points": 1})", doc).ok);
 }
@@ -215,7 +256,7 @@ TEST(GradeAssignment, EveryProblemIsReportedAtOnceEachOnce) {
             "a.json: image.points: must be in [0, 1000000], got -1",
             "a.json: image.fail_levels: must be a whole number, got 1.5",
             "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range, "
-            "temperature, equals)",
+            "temperature, equals, shadow)",
             "a.json: rules[1]: must be an object",
             "a.json: rules[2].also: is not a field here",
             "a.json: rules[2].object: must be in [0, 99999], got -1",
@@ -237,7 +278,21 @@ TEST(GradeAssignment, ErrorsNameTheField) {
     EXPECT_EQ(error(R"({})"), "a.json: reference: is required");
     EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "colour", "points": 1}]})"),
               "a.json: rules[0].rule: unknown rule \"colour\" (model, light_count, warmer, key_to_fill, eq14, range, "
-              "temperature, equals)");
+              "temperature, equals, shadow)");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "light_count", "equals": 1, "type": "square",
+                                                          "points": 1}]})"),
+              "a.json: rules[0].type: unknown light type \"square\" (directional, point, spot, rect, disk, sky)");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "light_count", "equals": 1, "type": 3, "points": 1}]})"),
+              "a.json: rules[0].type: must be a non-empty string");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "light_count", "equals": 1, "type": "Rect",
+                                                          "points": 1}]})"),
+              "a.json: rules[0].type: unknown light type \"Rect\" (directional, point, spot, rect, disk, sky)");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "shadow", "points": 1}]})"),
+              "a.json: rules[0].light: is required");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "shadow", "light": "key", "type": "rect", "points": 1}]})"),
+              "a.json: rules[0].type: is not a field here");
+    EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "shadow", "light": "", "points": 1}]})"),
+              "a.json: rules[0].light: must be a non-empty string");
     EXPECT_EQ(error(R"({"reference": "r.json", "rules": [{"rule": "temperature", "light": "key", "min": 500,
                                                           "max": 3400, "points": 1}]})"),
               "a.json: rules[0].min: must be in [1000, 40000], got 500");

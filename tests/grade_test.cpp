@@ -182,6 +182,38 @@ TEST(Grade, WorkedAssignmentScores) {
     EXPECT_EQ(read_json(out.file("results.json"))["tests"].size(), 5u * 7u + 1u);  // frank: one line
 }
 
+// The second worked assignment: three-point lighting on the repository's vase
+// under a shadowed rect softbox. Each student misses what the rules name: a
+// fill behind the subject (ben), a hard directional key (cleo), a key that
+// casts no shadows (dan), a model file not handed in (eve), a model in a
+// one-file submission (fay).
+TEST(Grade, WorkedModelAssignmentScores) {
+    const std::string folder = source_path("assignments/vase-softbox");
+    TempDir out;
+    const RunResult run = run_m3055({"grade", folder + "/assignment.json", folder + "/submissions", "--out", out.path()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto s = by_student(read_json(out.file("grades.json")));
+    const std::map<std::string, double> expected = {{"ada", 100}, {"ben", 50}, {"cleo", 50},
+                                                    {"dan", 50},  {"eve", 0},  {"fay", 0}};
+    ASSERT_EQ(s.size(), expected.size());
+    for (const auto& [name, score] : expected) EXPECT_EQ(s.at(name)["score"], score) << name;
+    EXPECT_EQ(s.at("ada")["comparison"]["same_pixels"], s.at("ada")["comparison"]["pixels"]);
+    // The one failed rule of each graded student, after the image.
+    const std::map<std::string, std::string> failed = {
+        {"ben", "key to fill: the fill light gives no light at the subject facing the camera"},
+        {"cleo", "softbox key: 0 rect lights enabled, not 1"},
+        {"dan", "key shadow: \"key\" casts no shadows (its \"shadow\" is false)"}};
+    for (const auto& [name, reason] : failed) {
+        ASSERT_EQ(s.at(name)["reasons"].size(), 2u) << name;
+        EXPECT_EQ(s.at(name)["reasons"][1], reason) << name;
+    }
+    EXPECT_EQ(s.at("eve")["result"], "refused");
+    EXPECT_EQ(s.at("eve")["broken"],
+              "eve/scene.json: objects[1].file: eve/vase.obj: cannot read file: No such file or directory");
+    EXPECT_NE(s.at("fay")["broken"].get<std::string>().find("objects[1].file: a model file is not accepted here"),
+              std::string::npos);
+}
+
 // "fail": graded, below the pass score; "refused": not graded (frank's scene
 // is out of range). The same word for the same student in every output.
 TEST(Grade, RefusedAndFailMeanOneThingInEveryOutput) {

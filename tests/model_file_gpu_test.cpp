@@ -172,6 +172,35 @@ TEST(ModelFileAccuracy, TheSameMeshAsObjGltfAndGlbRendersByteIdentically) {
     }
 }
 
+// A model of two materials (the vase's glaze and rim) dressed whole by "material"
+// draws every face of either in that material: the same bytes as the model
+// with each of its materials overridden to it, render after render (under a
+// shadowed rect key, where a wrong group's faces went missing in some renders).
+TEST(ModelFileAccuracy, AModelDressedWholeByMaterialDrawsEveryGroupInIt) {
+    TempDir dir;
+    for (const char* file : {"vase.obj", "vase.mtl"})
+        test::write_text(dir.file(file), test::read_text(test::source_path(std::string("scenes/models/") + file)));
+    const json glaze = highlight({0.55, 0.25, 0.12});
+    json whole = mesh_object("vase.obj", {0, 0, 0}, 2.4, {0, 0, 0});
+    whole["material"] = glaze;
+    json by_name = mesh_object("vase.obj", {0, 0, 0}, 2.4, {0, 0, 0});
+    by_name["materials"] = {{"glaze", glaze}, {"rim", glaze}};
+    const auto render = [&](const json& object) {
+        const json doc = {{"display", {{"width", 128}, {"height", 80}, {"bits", 5}}},
+                          {"camera", camera(false)},
+                          {"lights",
+                           {{{"type", "rect"}, {"position", {2, 3, 2}}, {"normal", {-2, -3, -2}}, {"size", {1, 1}},
+                             {"intensity", 6}, {"shadow", true}}}},
+                          {"objects", json::array({object})}};
+        test::write_text(dir.file("scene.json"), doc.dump());
+        Renderer& renderer = test::shared_renderer();
+        renderer.render(load_scene_file(dir.file("scene.json"), LoadContext::trusted()));
+        return renderer.read_display().pixels;
+    };
+    const auto expected = render(by_name);
+    for (int i = 0; i < 2; ++i) EXPECT_EQ(render(whole), expected) << "render " << i;
+}
+
 TEST(ModelFileAccuracy, AFlatCubeFileEqualsTheBuiltInCube) {
     TempDir dir;
     // The built-in cube's own triangles and face normals, at size 2 around the origin (whole numbers).

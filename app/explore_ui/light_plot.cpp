@@ -51,10 +51,13 @@ void light_plot(Explorer& explorer) {
     static int dragged = -1;
     const auto& lights = explorer.doc.scene.lights;
     // The subject's centre averages every object: found again only when the document changes.
+    // So is the ratio (a disk light's irradiance is a quadrature of about 25 ms).
     static std::uint64_t subject_revision = ~std::uint64_t(0);
     static dvec3 subject;
+    static KeyFillRatio ratio;
     if (subject_revision != explorer.doc.revision) {
         subject = subject_centre(explorer.doc.scene);
+        ratio = key_to_fill_ratio(explorer.doc.scene, subject);
         subject_revision = explorer.doc.revision;
     }
     const float size = 150.0f, reach = size * 0.5f - 14.0f;
@@ -96,10 +99,9 @@ void light_plot(Explorer& explorer) {
         const std::string label = light.name.empty() ? std::to_string(i) : light.name;
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
-    const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene, subject);
     ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
-    tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
-            "(renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
+    tooltip("The irradiance of the light named \"key\" against the one named \"fill\" at the subject's centre, "
+            "on a surface facing the camera (renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
 }
 
 }  // namespace m3055::explore

@@ -1,13 +1,14 @@
 #include "analysis/lighting_ratio.h"
 
+#include "reference/emitters.h"
 #include "reference/reference.h"
 #include "scene/area_light.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 namespace m3055 {
 
@@ -22,21 +23,45 @@ int light_named(const Scene& scene, const char* name) {
     return -1;
 }
 
-// Why `light`'s illuminance is not computed, or "": an area or sky light's
-// would be an integral over the emitter, which this function does not do yet.
-std::string no_illuminance(const Light& light, const char* role) {
-    if (!is_area_light(light.type)) return {};
-    return std::string("the ") + role + " light is a " + to_string(light.type) +
-           " light: its illuminance is not computed by this build yet";
+// The integral of (N.w)+ over the part of a disk above the horizon: the
+// reference's own patches (exact in the horizon's cut) integrated by its
+// quadrature, the integrand scaled by a first estimate so that the tolerance
+// is relative to the result.
+double disk_projected_solid_angle(const Light& light, const ref::SurfacePoint& point) {
+    const std::vector<ref::Patch> patches = ref::emitter_patches(light, point);
+    if (patches.empty()) return 0.0;
+    const auto integrate = [&](double scale, double tolerance) {
+        ref::AreaIntegrand lambert;
+        lambert.value = [&](const std::vector<ref::QuadratureNode>& nodes) {
+            ref::Shade6 sum{};
+            for (const ref::QuadratureNode& node : nodes)
+                sum[0] += std::max(glm::dot(point.N, node.direction), 0.0) * node.solid_angle / scale;
+            return sum;
+        };
+        ref::AreaQuadrature options;
+        options.tolerance = tolerance;
+        options.max_cells = 1 << 12;
+        double total = 0.0;
+        for (const ref::QuadratureNode& node : ref::integrate_area(patches, lambert, options, nullptr))
+            total += std::max(glm::dot(point.N, node.direction), 0.0) * node.solid_angle;
+        return total;
+    };
+    const double estimate = integrate(1.0, 1e-6);
+    return estimate > 0.0 ? integrate(estimate, 1e-10) : 0.0;
 }
 
 }  // namespace
 
-double illuminance_at(const Light& light, const dvec3& point) {
-    if (const std::string problem = no_illuminance(light, "given"); !problem.empty())
-        throw std::invalid_argument(problem);
-    // ref::sample_light's scale is a_l c_l att C_spot: the same numbers the shading uses.
-    return luminance(ref::sample_light(light, point).scale);
+double irradiance_at(const Light& light, const dvec3& point, const dvec3& normal) {
+    if (!light.enabled) return 0.0;
+    if (!is_area_light(light.type)) {
+        // ref::sample_light's scale is a_l c_l att C_spot: the same numbers the shading uses.
+        const ref::LightSample sample = ref::sample_light(light, point);
+        return luminance(sample.scale) * std::max(glm::dot(normal, sample.L), 0.0);
+    }
+    const ref::SurfacePoint at{point, normal, normal};
+    const std::optional<double> projected = ref::projected_solid_angle(light, at);
+    return luminance(radiance(light)) * (projected ? *projected : disk_projected_solid_angle(light, at));
 }
 
 dvec3 subject_centre(const Scene& scene) {
@@ -48,6 +73,12 @@ dvec3 subject_centre(const Scene& scene) {
         ++count;
     }
     return count ? sum / double(count) : dvec3(0.0);
+}
+
+dvec3 facing_camera(const Camera& camera, const dvec3& subject) {
+    const dvec3 back = camera.position - camera.target;  // the loader keeps them apart
+    const dvec3 towards = camera.projection == Projection::perspective ? camera.position - subject : back;
+    return glm::length(towards) > 0.0 ? glm::normalize(towards) : glm::normalize(back);
 }
 
 std::string KeyFillRatio::text() const {
@@ -65,15 +96,14 @@ KeyFillRatio key_to_fill_ratio(const Scene& scene, const dvec3& subject) {
     r.fill = light_named(scene, "fill");
     if (r.key < 0) return r.problem = "no light named \"key\"", r;
     if (r.fill < 0) return r.problem = "no light named \"fill\"", r;
-    r.problem = no_illuminance(scene.lights[std::size_t(r.key)], "key");
-    if (r.problem.empty()) r.problem = no_illuminance(scene.lights[std::size_t(r.fill)], "fill");
-    if (!r.ok()) return r;
-    r.key_illuminance = illuminance_at(scene.lights[std::size_t(r.key)], subject);
-    r.fill_illuminance = illuminance_at(scene.lights[std::size_t(r.fill)], subject);
-    if (!(r.fill_illuminance > 0.0)) return r.problem = "the fill light gives no light at the subject", r;
-    r.ratio = r.key_illuminance / r.fill_illuminance;
+    const dvec3 facing = facing_camera(scene.camera, subject);
+    r.key_irradiance = irradiance_at(scene.lights[std::size_t(r.key)], subject, facing);
+    r.fill_irradiance = irradiance_at(scene.lights[std::size_t(r.fill)], subject, facing);
+    if (!(r.fill_irradiance > 0.0))
+        return r.problem = "the fill light gives no light at the subject facing the camera", r;
+    r.ratio = r.key_irradiance / r.fill_irradiance;
     r.stops = std::log2(r.ratio);
-    if (!(r.ratio > 0.0)) r.problem = "the key light gives no light at the subject";
+    if (!(r.ratio > 0.0)) r.problem = "the key light gives no light at the subject facing the camera";
     return r;
 }
 

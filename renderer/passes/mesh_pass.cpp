@@ -27,7 +27,10 @@ struct Vertex {
 // when `sort_from` is given.
 void append(const geometry::Mesh& mesh, const std::vector<bool>& take, const std::vector<int>& records,
             const CameraFrame* sort_from, std::vector<Vertex>& vertices, std::vector<std::uint32_t>& indices) {
-    auto group_of = [&](std::size_t t) { return mesh.groups.empty() ? std::size_t(0) : std::size_t(mesh.groups[t]); };
+    // A model dressed whole by its "material" has one record for all its file's groups.
+    auto group_of = [&](std::size_t t) {
+        return mesh.groups.empty() || records.size() == 1 ? std::size_t(0) : std::size_t(mesh.groups[t]);
+    };
     // A vertex's record: its triangles' group (a model file's vertex belongs to one group).
     std::vector<int> vertex_record(mesh.positions.size(), records[0]);
     if (!mesh.groups.empty())

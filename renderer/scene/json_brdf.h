@@ -17,10 +17,10 @@ namespace m3055::scene_json {
 // accepted here: " + why_none (m3055 explore --assignment --allow-brdf gives
 // it for a scene that is one file, as grade does).
 std::string brdf_without_folder_reason(const std::string& why_none);
-// Why a submission that is one NAME.json may not hold a .brdf material
-// (grade_run.cpp's confinement, practice.cpp).
-inline constexpr const char* kBrdfNeedsAFolder =
-    "a submission with a .brdf material is a folder NAME/ holding scene.json and the .brdf file";
+// Why a submission that is one NAME.json may name no file, a .brdf material's
+// or a model's (grade_run.cpp's confinement, practice.cpp).
+inline constexpr const char* kFilesNeedAFolder =
+    "a submission that names a file (a .brdf material, a model) is a folder NAME/ holding scene.json and the file";
 
 // The refusal when .brdf files are not accepted (LoadContext::for_class;
 // m3055 explore --assignment gives the same reason for a scene whose
