@@ -38,6 +38,11 @@ public:
     // the GL log (shader file name and line) if a program fails to build,
     // RenderTimeout past a deadline (frame/render_error.h).
     void render(const Scene& scene);
+    // The explorer's preview of a costly scene while input comes: drawn at
+    // 1/divisor of the display's width and height, then spread over the
+    // display's own pixels (nearest), so the display, its texture and its
+    // read-backs keep the scene's size. divisor <= 1: render(scene).
+    void render_reduced(const Scene& scene, int divisor);
 
     // How area and sky lights are sampled (passes/light_uniforms.h):
     // kRenderSampling by default, what the command line renders with; the
