@@ -40,10 +40,6 @@ DisplayPanes::DisplayPanes(const GlApi& gl, bool compile_at_once) : gl_(gl) {
     renderer_a_ = std::make_unique<Renderer>(gl, *programs_);
     renderer_b_ = std::make_unique<Renderer>(gl, *programs_);
     compare_ = std::make_unique<CompareView>(gl);
-    // Area lights at their centres and 2 x 2 shadow rays: a frame while a slider
-    // moves (docs/lights.md); screenshots take the render's samples.
-    renderer_a_->set_area_sampling(kFastSampling);
-    renderer_b_->set_area_sampling(kFastSampling);
     // No stall on a new specialization (explore/display_renderers.h).
     if (!compile_at_once) {
         defer_compiles(*renderer_a_);
@@ -83,18 +79,38 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (!explorer.session.render_needed) return -1.0;
     explorer.session.render_needed = false;
     const auto start = std::chrono::steady_clock::now();
+    const bool preview = preview_differs(explorer.doc.scene) || (explorer.view.compare && preview_differs(compare_scene(explorer)));
+    const int divisor = preview ? preview_scale_.divisor() : 1;
     try {
-        render_displays(explorer, *renderer_a_, *renderer_b_);
-        readouts_.invalidate();
-        compare_->invalidate();
-        practice_diff_stale_ = true;
-        profile_b_.reset();
+        render_displays(explorer, *renderer_a_, *renderer_b_, divisor);
+        displays_drawn();
         gl_.Finish();
         if (practice_) practice_->scene_changed(explorer.session.practice, now);
     } catch (const std::exception& e) {
         explorer.session.messages.error = e.what();
     }
-    return milliseconds_since(start);
+    const double ms = milliseconds_since(start);
+    if (preview) preview_scale_.note(ms, divisor);
+    refine_pending_ = preview;
+    return ms;
+}
+
+void DisplayPanes::displays_drawn() {
+    readouts_.invalidate();
+    compare_->invalidate();
+    practice_diff_stale_ = true;
+    profile_b_.reset();
+}
+
+void DisplayPanes::refine(Explorer& explorer) {
+    refine_pending_ = false;
+    try {
+        refine_displays(explorer, *renderer_a_, *renderer_b_);
+        displays_drawn();
+        gl_.Finish();
+    } catch (const std::exception& e) {
+        explorer.session.messages.error = e.what();
+    }
 }
 
 void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {
@@ -130,18 +146,15 @@ Rgb8Image DisplayPanes::render_display_now(Explorer& explorer) {
     // What `m3055 render` writes: its program and its area lights' samples.
     Renderer& a = *renderer_a_;
     const bool deferring = a.defers_compiles();
-    const AreaSampling sampling = a.area_sampling();
     a.set_defer_compiles(false);
     a.set_area_sampling(kRenderSampling);
     try {
         a.render(explorer.doc.scene);
     } catch (...) {
         a.set_defer_compiles(deferring);
-        a.set_area_sampling(sampling);
         throw;
     }
     a.set_defer_compiles(deferring);
-    a.set_area_sampling(sampling);
     explorer.session.render_needed = true;  // the panes, read-outs and practice follow on the next frame
     return a.read_display();
 }

@@ -9,6 +9,7 @@
 
 #include "analysis/brdf_views.h"
 #include "analysis/plane_curve_gpu.h"
+#include "explore/display_renderers.h"
 #include "explore/explorer.h"
 #include "explore/layout.h"
 #include "explore/practice.h"
@@ -62,6 +63,10 @@ public:
     // draws its display again (the same pixels). Returns whether one was built.
     std::size_t deferred_programs() const;
     bool compile_deferred(Explorer& explorer);
+    // A preview of area lights is showing (explore/display_renderers.h): the
+    // display is "refining" until refine() has drawn the render's pixels.
+    bool refining() const { return refine_pending_; }
+    void refine(Explorer& explorer);
     // The display as `m3055 render` writes it: A rendered now with its
     // specialized program; the window shows it on the next frame.
     Rgb8Image render_display_now(Explorer& explorer);
@@ -96,6 +101,7 @@ public:
 private:
     bool shows_practice_difference(const Explorer& explorer) const { return practice_ && !explorer.view.compare; }
     void answer(Explorer& explorer, const DisplayRequest& request);
+    void displays_drawn();  // the read-outs of the last drawing are stale
     void update_practice_difference(Explorer& explorer);
 
     const GlApi& gl_;
@@ -109,6 +115,8 @@ private:
     std::unique_ptr<Practice> practice_;                 // --assignment
     std::unique_ptr<PaneTexture> reference_;             // its reference, shown beside A
     std::unique_ptr<PaneTexture> practice_diff_;         // |A - reference|
+    PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
+    bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
     bool practice_diff_stale_ = true;
     int practice_diff_scale_ = 1;
     unsigned long long practice_diff_count_ = 0;
