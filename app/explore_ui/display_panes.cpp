@@ -78,6 +78,8 @@ void DisplayPanes::practise(grading::Assignment assignment, bool allow_brdf, Exp
 double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (!explorer.session.render_needed) return -1.0;
     explorer.session.render_needed = false;
+    if (!explorer.view.compare && refined_revision_ == explorer.doc.revision) return -1.0;
+    refined_revision_.reset();
     const auto start = std::chrono::steady_clock::now();
     const bool preview = preview_differs(explorer.doc.scene) || (explorer.view.compare && preview_differs(compare_scene(explorer)));
     const int divisor = preview ? preview_scale_.divisor() : 1;
@@ -108,12 +110,14 @@ void DisplayPanes::refine(Explorer& explorer) {
         refine_displays(explorer, *renderer_a_, *renderer_b_);
         displays_drawn();
         gl_.Finish();
+        refined_revision_ = explorer.doc.revision;
     } catch (const std::exception& e) {
         explorer.session.messages.error = e.what();
     }
 }
 
 void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {
+    refined_revision_.reset();  // the same scene, other programs
     try {
         for (Renderer* r : {renderer_a_.get(), renderer_b_.get()})
             if (r->defers_compiles()) r->warm_up_general_programs();
@@ -212,6 +216,7 @@ void DisplayPanes::answer(Explorer& explorer, const DisplayRequest& request) {
                        std::printf("%s\n", grade_now(explorer).c_str());
                    },
                    [&](const command::Screenshot& s) { take_screenshot(explorer, *renderer_a_, s.path); },
+                   [&](const command::SaveDisplay& s) { write_png(s.path, renderer_a_->read_display()); },
                },
                request);
 }

@@ -23,6 +23,7 @@
 #include "image/image.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -117,6 +118,9 @@ private:
     std::unique_ptr<PaneTexture> practice_diff_;         // |A - reference|
     PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
     bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
+    // The document revision A shows refined (no split): a render asked for
+    // again (a read-out, a screenshot) keeps those pixels rather than draw a preview.
+    std::optional<std::uint64_t> refined_revision_;
     bool practice_diff_stale_ = true;
     int practice_diff_scale_ = 1;
     unsigned long long practice_diff_count_ = 0;
