@@ -45,6 +45,14 @@ std::size_t deferred_programs(const Renderer& a, const Renderer& b) {
     return a.deferred_programs() + b.deferred_programs();
 }
 
+void refine_rows(const Explorer& e, Renderer& a, Renderer& b, int row0, int row1) {
+    a.set_area_sampling(kRenderSampling);
+    a.render_rows(e.doc.scene, row0, row1);
+    if (!e.view.compare) return;
+    b.set_area_sampling(kRenderSampling);
+    b.render_rows(compare_scene(e), row0, row1);
+}
+
 bool render_specialized_when_idle(const Explorer& e, Renderer& a, Renderer& b) {
     if (a.deferred_programs() > 0) a.render_specialized(e.doc.scene);
     else if (b.deferred_programs() > 0) b.render_specialized(compare_scene(e));

@@ -57,6 +57,12 @@ bool preview_differs(const Scene& scene);
 // with the render's sampling (kRenderSampling), its specialized program built
 // if it waits: the display's pixels are then the render's, byte for byte.
 void refine_displays(const Explorer& explorer, Renderer& a, Renderer& b);
+// The same for rows [row0, row1) only (from the bottom, as GL counts): the
+// explorer refines in bands between frames, so input waits for one band at
+// most; bands over every row give refine_displays's pixels.
+void refine_rows(const Explorer& explorer, Renderer& a, Renderer& b, int row0, int row1);
+// A band of refinement should take about this long.
+inline constexpr double kRefineBandMs = 60.0;
 
 // Specialized programs waiting to be compiled, on A and B together.
 std::size_t deferred_programs(const Renderer& a, const Renderer& b);

@@ -7,6 +7,7 @@
 #include "grading/ab_compare.h"
 #include "passes/brdf_grid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -94,6 +95,7 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     const double ms = milliseconds_since(start);
     if (preview) preview_scale_.note(ms, divisor);
     refine_pending_ = preview;
+    refined_rows_ = 0;
     return ms;
 }
 
@@ -105,15 +107,27 @@ void DisplayPanes::displays_drawn() {
 }
 
 void DisplayPanes::refine(Explorer& explorer) {
-    refine_pending_ = false;
+    const int height = explorer.doc.scene.display.height;
+    // The first band is small: it also builds the specialized program.
+    const int rows = refine_ms_per_row_ > 0.0 && refined_rows_ > 0
+                         ? std::max(1, int(kRefineBandMs / refine_ms_per_row_))
+                         : 8;
+    const int top = height - refined_rows_, bottom = std::max(0, top - rows);
+    const auto start = std::chrono::steady_clock::now();
     try {
-        refine_displays(explorer, *renderer_a_, *renderer_b_);
+        refine_rows(explorer, *renderer_a_, *renderer_b_, bottom, top);
         displays_drawn();
         gl_.Finish();
-        refined_revision_ = explorer.doc.revision;
     } catch (const std::exception& e) {
         explorer.session.messages.error = e.what();
+        refine_pending_ = false;
+        return;
     }
+    if (refined_rows_ > 0) refine_ms_per_row_ = milliseconds_since(start) / double(top - bottom);
+    refined_rows_ += top - bottom;
+    if (refined_rows_ < height) return;
+    refine_pending_ = false;
+    refined_revision_ = explorer.doc.revision;
 }
 
 void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {

@@ -202,6 +202,7 @@ public:
             panes_->answer_requests(e_);
             panes_->update_read_outs(e_);  // the difference panes show with the panels hidden too
             info_.compare_count = panes_->compare_count(e_);
+            info_.refining = panes_->refining();
         }
 
         // 6. The plots and statistics under the display, then the display panes.
@@ -245,10 +246,11 @@ private:
     }
 
     // A preview of area lights on the display: after kIdleBeforeRefine s with
-    // no input, between frames, drawn again with the render's samples; then
-    // one frame shows it, and "refining..." goes.
+    // no input, between frames, drawn again with the render's samples, a band
+    // of rows at a time, each shown by a frame; "refining..." goes with the last.
     void refine_when_idle() {
-        window_.wait(kIdleBeforeRefine);
+        if (!panes_->refine_started()) window_.wait(kIdleBeforeRefine);
+        else window_.poll();
         if (frame_needed()) return;  // input came: that frame first
         panes_->refine(e_);
         owe_frames(1);
