@@ -63,6 +63,7 @@ void light_plot(Explorer& explorer) {
             "or disk turns to keep facing it). Rects and disks are outlined to scale at their distance; a ring is "
             "the sky.");
     ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(corner, ImVec2(corner.x + size, corner.y + size), true);  // a large emitter stays inside
     draw->AddRect(corner, ImVec2(corner.x + size, corner.y + size), IM_COL32(255, 255, 255, 40));
     draw->AddCircleFilled(centre, 9.0f, IM_COL32(170, 170, 170, 255));
     draw->AddText(ImVec2(centre.x - 18, corner.y + size - 16), IM_COL32(255, 255, 255, 110), "camera");
@@ -111,6 +112,7 @@ void light_plot(Explorer& explorer) {
                                 ImVec2(head.x + d.x * 7 + d.y * 4, head.y + d.y * 7 - d.x * 4), colour);
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
+    draw->PopClipRect();
     const KeyFillRatio ratio = key_to_fill_ratio(explorer.doc.scene, subject);
     ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
     tooltip("The illuminance of the light named \"key\" against the one named \"fill\" at the subject's centre "
