@@ -1,6 +1,7 @@
 // `m3055 bench [--out DIR] [--quick]`: run time against error.
 #include "bench/bench.h"
 #include "bench/area_bench.h"
+#include "bench/area_latency.h"
 #include "bench/brdf_bench.h"
 #include "commands.h"
 
@@ -14,6 +15,7 @@ void add_bench_command(CLI::App& app) {
         std::string backend = "auto";
         std::string brdf;  // --brdf DIR: only the .brdf section (app/bench/brdf_bench.h)
         bool area = false;  // --area-lights: only the area lights' section (app/bench/area_bench.h)
+        bool area_latency = false;  // --area-latency: only the explorer's area-light drag (app/bench/area_latency.h)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -37,11 +39,16 @@ void add_bench_command(CLI::App& app) {
                       "Only the area lights' section: their sampling's frame time against its error from the "
                       "CPU reference, written to --out/area_lights.md and .csv")
         ->excludes("--replot");
+    command->add_flag("--area-latency", options->area_latency,
+                      "Only the explorer's latency with area lights: the softbox scene's key dragged, written to "
+                      "--out/area_latency.md")
+        ->excludes("--replot");
     command->callback([options]() {
         try {
             options->bench.backend = parse_backend(options->backend);
             if (!options->brdf.empty()) return bench::run_brdf_bench(options->bench, options->brdf);
             if (options->area) return bench::run_area_bench(options->bench);
+            if (options->area_latency) return bench::run_area_latency(options->bench);
             bench::run_bench(options->bench);
         } catch (const std::exception& error) {
             std::cerr << "m3055: " << error.what() << "\n";

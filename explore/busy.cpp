@@ -9,12 +9,13 @@ std::string file_name_of(const std::string& path) {
 }
 }  // namespace
 
-std::string busy_line(const BrdfWatch& watch, std::size_t deferred) {
+std::string busy_line(const BrdfWatch& watch, std::size_t deferred, bool refining) {
     if (!watch.reload_pending.empty()) {
         std::string files;
         for (const std::string& path : watch.reload_pending) files += (files.empty() ? "" : ", ") + file_name_of(path);
         return "reloading " + files + "...";
     }
+    if (refining) return "refining...";
     if (deferred > 0) return "compiling...";
     return "";
 }

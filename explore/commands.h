@@ -125,6 +125,9 @@ struct SaveDifference {
     std::string path;
 };
 struct PrintGrade {};
+struct SaveDisplay {  // A's pixels as the window shows them now: a preview, or the render's once refined
+    std::string path;
+};
 struct Screenshot {  // the display and its scene JSON ("": the next free NAME-0001.png)
     std::string path;
 };
@@ -134,7 +137,8 @@ struct Screenshot {  // the display and its scene JSON ("": the next free NAME-0
 namespace m3055::explore {
 
 using DisplayRequest = std::variant<command::Probe, command::Pick, command::PrintCompare, command::PrintProfile,
-                                    command::SaveDifference, command::PrintGrade, command::Screenshot>;
+                                    command::SaveDifference, command::PrintGrade, command::Screenshot,
+                                    command::SaveDisplay>;
 
 using Command = std::variant<
     command::SetMaterial, command::SetLight, command::ApplyLightPreset, command::AddLight, command::RemoveLight,

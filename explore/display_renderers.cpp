@@ -1,5 +1,9 @@
 #include "explore/display_renderers.h"
 
+#include "scene/area_light.h"
+
+#include <algorithm>
+
 namespace m3055::explore {
 
 void defer_compiles(Renderer& renderer) {
@@ -7,13 +11,46 @@ void defer_compiles(Renderer& renderer) {
     renderer.warm_up_general_programs();
 }
 
-void render_displays(const Explorer& e, Renderer& a, Renderer& b) {
-    a.render(e.doc.scene);
-    if (e.view.compare) b.render(compare_scene(e));
+int PreviewScale::divisor() const {
+    int divisor = 1;
+    while (divisor < kMaxPreviewDivisor && full_size_ms_ / double(divisor * divisor) > kPreviewBudgetMs) ++divisor;
+    return divisor;
+}
+
+void PreviewScale::note(double ms, int divisor) { full_size_ms_ = ms * double(divisor * divisor); }
+
+void render_displays(const Explorer& e, Renderer& a, Renderer& b, int divisor) {
+    a.set_area_sampling(kFastSampling);
+    a.render_reduced(e.doc.scene, preview_differs(e.doc.scene) ? divisor : 1);
+    if (!e.view.compare) return;
+    const Scene compare = compare_scene(e);
+    b.set_area_sampling(kFastSampling);
+    b.render_reduced(compare, preview_differs(compare) ? divisor : 1);
+}
+
+bool preview_differs(const Scene& scene) {
+    return std::any_of(scene.lights.begin(), scene.lights.end(),
+                       [](const Light& light) { return reaches_shader(light) && is_area_light(light.type); });
+}
+
+void refine_displays(const Explorer& e, Renderer& a, Renderer& b) {
+    a.set_area_sampling(kRenderSampling);
+    a.render_specialized(e.doc.scene);
+    if (!e.view.compare) return;
+    b.set_area_sampling(kRenderSampling);
+    b.render_specialized(compare_scene(e));
 }
 
 std::size_t deferred_programs(const Renderer& a, const Renderer& b) {
     return a.deferred_programs() + b.deferred_programs();
+}
+
+void refine_rows(const Explorer& e, Renderer& a, Renderer& b, int row0, int row1) {
+    a.set_area_sampling(kRenderSampling);
+    a.render_rows(e.doc.scene, row0, row1);
+    if (!e.view.compare) return;
+    b.set_area_sampling(kRenderSampling);
+    b.render_rows(compare_scene(e), row0, row1);
 }
 
 bool render_specialized_when_idle(const Explorer& e, Renderer& a, Renderer& b) {

@@ -17,13 +17,52 @@ namespace m3055::explore {
 
 // Seconds without input before a waiting specialized program is compiled.
 inline constexpr double kIdleBeforeCompile = 0.12;
+// Seconds without input before a preview of area lights is drawn again with the render's samples.
+inline constexpr double kIdleBeforeRefine = 0.12;
 
 // Draws with the general program while a specialization waits, and compiles
 // the general programs now (start-up), so that no later render compiles.
 void defer_compiles(Renderer& renderer);
 
-// A's scene, and B's compare scene when the split is on.
-void render_displays(const Explorer& explorer, Renderer& a, Renderer& b);
+// A frame of the preview should take at most this (slider to pixels).
+inline constexpr double kPreviewBudgetMs = 35.0;
+inline constexpr int kMaxPreviewDivisor = 8;
+
+// How much smaller than the display a preview of area lights is drawn
+// (Renderer::render_reduced): from the last preview's time, the smallest
+// divisor whose frame fits kPreviewBudgetMs, taking a frame's cost as
+// proportional to its pixels.
+class PreviewScale {
+public:
+    int divisor() const;
+    // A preview drawn at `divisor` took `ms` (GPU finished).
+    void note(double ms, int divisor);
+
+private:
+    double full_size_ms_ = 0.0;  // the estimated cost of a preview at the display's size
+};
+
+// A's scene, and B's compare scene when the split is on. A scene with area
+// lights (preview_differs) is drawn as a preview: the area lights' fast
+// sampling (kFastSampling: one sample and one shadow ray an emitter,
+// docs/lights.md), at 1/divisor of the display's size.
+void render_displays(const Explorer& explorer, Renderer& a, Renderer& b, int divisor = 1);
+
+// Whether the last render_displays drew a preview that differs from what
+// `m3055 render` draws (a scene with area or sky lights): then the display
+// is "refining" until refine_when_idle has drawn it again.
+bool preview_differs(const Scene& scene);
+
+// After kIdleBeforeRefine s of no input: A (and B in the split) drawn again
+// with the render's sampling (kRenderSampling), its specialized program built
+// if it waits: the display's pixels are then the render's, byte for byte.
+void refine_displays(const Explorer& explorer, Renderer& a, Renderer& b);
+// The same for rows [row0, row1) only (from the bottom, as GL counts): the
+// explorer refines in bands between frames, so input waits for one band at
+// most; bands over every row give refine_displays's pixels.
+void refine_rows(const Explorer& explorer, Renderer& a, Renderer& b, int row0, int row1);
+// A band of refinement should take about this long.
+inline constexpr double kRefineBandMs = 60.0;
 
 // Specialized programs waiting to be compiled, on A and B together.
 std::size_t deferred_programs(const Renderer& a, const Renderer& b);

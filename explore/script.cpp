@@ -365,6 +365,7 @@ void key(Call& c) {
 }
 
 void screenshot(Call& c) { c.run(DisplayRequest{command::Screenshot{c.word()}}); }
+void save_display(Call& c) { c.run(DisplayRequest{command::SaveDisplay{c.word()}}); }
 
 void save(Call& c) {
     if (!c.run(command::SaveTo{c.word()})) throw std::runtime_error(c.explorer.session.messages.error);
@@ -403,7 +404,7 @@ const std::map<std::string, Handler>& commands() {
         {"open_brdf", open_brdf_command},
         {"replace_file", replace_file}, {"print_brdf", print_brdf},
         {"brdf_views", brdf_views},  {"spectra", spectra},
-        {"print_grade", print_grade},
+        {"print_grade", print_grade}, {"save_display", save_display},
     };
     return table;
 }

@@ -48,6 +48,8 @@
 //                           "grade score=S max=M passed=yes|no<TAB>reason<TAB>..." (the reasons grade writes)
 //   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I"
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
+//   save_display PATH       A's pixels as the window shows them now, as a PNG: with area lights
+//                           a preview until the display has refined (then the render's pixels)
 //   screenshot_dir DIR      the folder F12 writes NAME-0001.png ... into
 //   save PATH               scene JSON
 //   capture PATH            a PNG of the whole window after the next frame

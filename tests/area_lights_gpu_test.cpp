@@ -128,6 +128,21 @@ TEST(HardShadowsAlone, CompileForEveryFamilyAndOnlyTakeLightAway) {
     }
 }
 
+// A point or directional light's shadow in a scene without area lights: one
+// hard-shadow ray a pixel (its program has shadows and no area lights).
+TEST(PointLightShadowOnTheGpu, CompilesAndMatchesTheReference) {
+    const LightCase lights[] = {
+        {"point", {{"type", "point"}, {"position", {1.5, 2.5, 1.5}}, {"intensity", 3.0}}},
+        {"directional", {{"type", "directional"}, {"direction", {0.5, 1.0, 0.4}}, {"intensity", 1.0}}},
+    };
+    for (const LightCase& light : lights) {
+        const test::Comparison c = test::compare_gpu_with_reference(lit_scene(light, kMaterials[0], true));
+        SCOPED_TRACE(light.name + ": " + c.describe());
+        EXPECT_EQ(c.nonfinite_values, 0);
+        EXPECT_LE(c.mean_abs_diff, kMeanDiff);
+    }
+}
+
 std::string param_name(const ::testing::TestParamInfo<Case>& info) { return case_name(info.param); }
 
 // Family outermost, then light, then shadow: every fifth case (the sanitizer tree's part) then still

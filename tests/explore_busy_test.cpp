@@ -36,6 +36,13 @@ TEST(ExploreBusy, IdleSaysNothingAndDeferredProgramsSayCompiling) {
     EXPECT_EQ(busy_line(watch, 2), "compiling...");
 }
 
+TEST(ExploreBusy, APreviewOfAreaLightsSaysRefiningUntilItShowsTheRendersPixels) {
+    const BrdfWatch watch;
+    EXPECT_EQ(busy_line(watch, 0, true), "refining...");
+    EXPECT_EQ(busy_line(watch, 2, true), "refining...") << "refining draws with the specialized program too";
+    EXPECT_EQ(busy_line(watch, 0, false), "");
+}
+
 TEST(ExploreBusy, AChangedBrdfFileIsShownAsReloadingBeforeItIsReloaded) {
     const fs::path dir = fs::path(::testing::TempDir()) / "explore_busy";
     fs::remove_all(dir);

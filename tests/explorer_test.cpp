@@ -341,6 +341,28 @@ TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
     EXPECT_NE(run.out.find("\tselected=2\n"), std::string::npos) << "the click on the right sphere: " << run.out;
 }
 
+// With area lights the display shows a fast preview while edits come, and
+// once input stops it refines to exactly `m3055 render`'s pixels.
+TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
+    TempDir dir;
+    std::string scene = test::read_text(test::source_path("scenes/softbox_three_point.json"));
+    scene = std::regex_replace(scene, std::regex("\"width\": 512"), "\"width\": 160");
+    scene = std::regex_replace(scene, std::regex("\"height\": 320"), "\"height\": 100");
+    test::write_text(dir.file("softbox.json"), scene);
+    test::write_text(dir.file("script.txt"), "load softbox.json\nset lights[0].size[0] 2.2\nsave_display preview.png\n"
+                                             "idle 3\nsave_display refined.png\nsave scene.json\n");
+    const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto render = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("r.png")});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const Rgb8Image rendered = read_png(dir.file("r.png")), preview = read_png(dir.file("preview.png")),
+                    refined = read_png(dir.file("refined.png"));
+    ASSERT_EQ(rendered.width, 160);
+    ASSERT_EQ(preview.width, 160) << "the preview keeps the display's size";
+    EXPECT_NE(preview.pixels, rendered.pixels) << "while edits come, a fast preview";
+    EXPECT_EQ(refined.pixels, rendered.pixels) << "refined: the render's pixels, byte for byte";
+}
+
 // Light names (the scene format's optional "name"): the three-point presets
 // name theirs, the Lights panel edits them, a save keeps them.
 TEST_F(Explorer, LightNamesAreEditedAndKeptOnSave) {

@@ -7,6 +7,7 @@
 #include "grading/ab_compare.h"
 #include "passes/brdf_grid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -40,10 +41,6 @@ DisplayPanes::DisplayPanes(const GlApi& gl, bool compile_at_once) : gl_(gl) {
     renderer_a_ = std::make_unique<Renderer>(gl, *programs_);
     renderer_b_ = std::make_unique<Renderer>(gl, *programs_);
     compare_ = std::make_unique<CompareView>(gl);
-    // Area lights at their centres and 2 x 2 shadow rays: a frame while a slider
-    // moves (docs/lights.md); screenshots take the render's samples.
-    renderer_a_->set_area_sampling(kFastSampling);
-    renderer_b_->set_area_sampling(kFastSampling);
     // No stall on a new specialization (explore/display_renderers.h).
     if (!compile_at_once) {
         defer_compiles(*renderer_a_);
@@ -82,22 +79,59 @@ void DisplayPanes::practise(grading::Assignment assignment, bool allow_brdf, Exp
 double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (!explorer.session.render_needed) return -1.0;
     explorer.session.render_needed = false;
+    if (!explorer.view.compare && refined_revision_ == explorer.doc.revision) return -1.0;
+    refined_revision_.reset();
     const auto start = std::chrono::steady_clock::now();
+    const bool preview = preview_differs(explorer.doc.scene) || (explorer.view.compare && preview_differs(compare_scene(explorer)));
+    const int divisor = preview ? preview_scale_.divisor() : 1;
     try {
-        render_displays(explorer, *renderer_a_, *renderer_b_);
-        readouts_.invalidate();
-        compare_->invalidate();
-        practice_diff_stale_ = true;
-        profile_b_.reset();
+        render_displays(explorer, *renderer_a_, *renderer_b_, divisor);
+        displays_drawn();
         gl_.Finish();
         if (practice_) practice_->scene_changed(explorer.session.practice, now);
     } catch (const std::exception& e) {
         explorer.session.messages.error = e.what();
     }
-    return milliseconds_since(start);
+    const double ms = milliseconds_since(start);
+    if (preview) preview_scale_.note(ms, divisor);
+    refine_pending_ = preview;
+    refined_rows_ = 0;
+    return ms;
+}
+
+void DisplayPanes::displays_drawn() {
+    readouts_.invalidate();
+    compare_->invalidate();
+    practice_diff_stale_ = true;
+    profile_b_.reset();
+}
+
+void DisplayPanes::refine(Explorer& explorer) {
+    const int height = explorer.doc.scene.display.height;
+    // The first band is small: it also builds the specialized program.
+    const int rows = refine_ms_per_row_ > 0.0 && refined_rows_ > 0
+                         ? std::max(1, int(kRefineBandMs / refine_ms_per_row_))
+                         : 8;
+    const int top = height - refined_rows_, bottom = std::max(0, top - rows);
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        refine_rows(explorer, *renderer_a_, *renderer_b_, bottom, top);
+        displays_drawn();
+        gl_.Finish();
+    } catch (const std::exception& e) {
+        explorer.session.messages.error = e.what();
+        refine_pending_ = false;
+        return;
+    }
+    if (refined_rows_ > 0) refine_ms_per_row_ = milliseconds_since(start) / double(top - bottom);
+    refined_rows_ += top - bottom;
+    if (refined_rows_ < height) return;
+    refine_pending_ = false;
+    refined_revision_ = explorer.doc.revision;
 }
 
 void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {
+    refined_revision_.reset();  // the same scene, other programs
     try {
         for (Renderer* r : {renderer_a_.get(), renderer_b_.get()})
             if (r->defers_compiles()) r->warm_up_general_programs();
@@ -130,18 +164,15 @@ Rgb8Image DisplayPanes::render_display_now(Explorer& explorer) {
     // What `m3055 render` writes: its program and its area lights' samples.
     Renderer& a = *renderer_a_;
     const bool deferring = a.defers_compiles();
-    const AreaSampling sampling = a.area_sampling();
     a.set_defer_compiles(false);
     a.set_area_sampling(kRenderSampling);
     try {
         a.render(explorer.doc.scene);
     } catch (...) {
         a.set_defer_compiles(deferring);
-        a.set_area_sampling(sampling);
         throw;
     }
     a.set_defer_compiles(deferring);
-    a.set_area_sampling(sampling);
     explorer.session.render_needed = true;  // the panes, read-outs and practice follow on the next frame
     return a.read_display();
 }
@@ -199,6 +230,7 @@ void DisplayPanes::answer(Explorer& explorer, const DisplayRequest& request) {
                        std::printf("%s\n", grade_now(explorer).c_str());
                    },
                    [&](const command::Screenshot& s) { take_screenshot(explorer, *renderer_a_, s.path); },
+                   [&](const command::SaveDisplay& s) { write_png(s.path, renderer_a_->read_display()); },
                },
                request);
 }

@@ -9,6 +9,7 @@
 
 #include "analysis/brdf_views.h"
 #include "analysis/plane_curve_gpu.h"
+#include "explore/display_renderers.h"
 #include "explore/explorer.h"
 #include "explore/layout.h"
 #include "explore/practice.h"
@@ -22,6 +23,7 @@
 #include "image/image.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,6 +64,13 @@ public:
     // draws its display again (the same pixels). Returns whether one was built.
     std::size_t deferred_programs() const;
     bool compile_deferred(Explorer& explorer);
+    // A preview of area lights is showing (explore/display_renderers.h): the
+    // display is "refining" until refine() has drawn the render's pixels.
+    bool refining() const { return refine_pending_; }
+    bool refine_started() const { return refine_pending_ && refined_rows_ > 0; }
+    // The next band of rows, top down, drawn with the render's samples (about
+    // kRefineBandMs); the last one leaves the displays showing the render's pixels.
+    void refine(Explorer& explorer);
     // The display as `m3055 render` writes it: A rendered now with its
     // specialized program; the window shows it on the next frame.
     Rgb8Image render_display_now(Explorer& explorer);
@@ -96,6 +105,7 @@ public:
 private:
     bool shows_practice_difference(const Explorer& explorer) const { return practice_ && !explorer.view.compare; }
     void answer(Explorer& explorer, const DisplayRequest& request);
+    void displays_drawn();  // the read-outs of the last drawing are stale
     void update_practice_difference(Explorer& explorer);
 
     const GlApi& gl_;
@@ -109,6 +119,13 @@ private:
     std::unique_ptr<Practice> practice_;                 // --assignment
     std::unique_ptr<PaneTexture> reference_;             // its reference, shown beside A
     std::unique_ptr<PaneTexture> practice_diff_;         // |A - reference|
+    PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
+    bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
+    int refined_rows_ = 0;         // rows refined so far, from the top
+    double refine_ms_per_row_ = 0.0;  // the last band's time a row
+    // The document revision A shows refined (no split): a render asked for
+    // again (a read-out, a screenshot) keeps those pixels rather than draw a preview.
+    std::optional<std::uint64_t> refined_revision_;
     bool practice_diff_stale_ = true;
     int practice_diff_scale_ = 1;
     unsigned long long practice_diff_count_ = 0;

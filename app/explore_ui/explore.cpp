@@ -143,6 +143,7 @@ public:
         if (frame_needed() || script_busy) window_.poll();
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
         else if (!e_.session.brdf_watch.reload_pending.empty()) reload_when_idle();  // a script's idle time too
+        else if (panes_ && panes_->refining()) refine_when_idle();  // a script's idle time too
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
@@ -161,7 +162,8 @@ public:
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
-        e_.session.busy = busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0);
+        e_.session.busy =
+            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0, panes_ && panes_->refining());
 
         // 2. Where everything goes this frame (explore/layout.h).
         const ImGuiIO& io = ImGui::GetIO();
@@ -200,6 +202,7 @@ public:
             panes_->answer_requests(e_);
             panes_->update_read_outs(e_);  // the difference panes show with the panels hidden too
             info_.compare_count = panes_->compare_count(e_);
+            info_.refining = panes_->refining();
         }
 
         // 6. The plots and statistics under the display, then the display panes.
@@ -240,6 +243,17 @@ private:
         window_.wait(kIdleBeforeCompile);
         if (frame_needed()) return;  // input came: that frame first
         if (panes_->compile_deferred(e_)) owe_frames(1);
+    }
+
+    // A preview of area lights on the display: after kIdleBeforeRefine s with
+    // no input, between frames, drawn again with the render's samples, a band
+    // of rows at a time, each shown by a frame; "refining..." goes with the last.
+    void refine_when_idle() {
+        if (!panes_->refine_started()) window_.wait(kIdleBeforeRefine);
+        else window_.poll();
+        if (frame_needed()) return;  // input came: that frame first
+        panes_->refine(e_);
+        owe_frames(1);
     }
 
     // A changed .brdf file, after kIdleBeforeCompile s with no input, between

@@ -131,11 +131,12 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     const auto& lights = explorer.doc.scene.lights;
     if (std::any_of(lights.begin(), lights.end(),
                     [](const Light& l) { return l.enabled && l.intensity > 0.0 && is_area_light(l.type); })) {
-        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "area lights: preview");
-        tooltip("The display draws each rect, disk and sky light from its centre with one shadow ray (hard "
-                "shadows, a fast approximation). A screenshot (F12) and m3055 render integrate them with 8 x 8 "
-                "samples and soft shadows; after F12 the display shows that image until the next edit "
-                "(docs/lights.md).");
+        if (info.refining) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "area lights: preview");
+        else ImGui::TextWrapped("area lights: the render's pixels");
+        tooltip("While edits come the display draws each rect, disk and sky light from its centre with one shadow "
+                "ray (hard shadows), at a smaller size when a frame would take over 35 ms. When input stops it "
+                "refines (\"refining...\" beside the menu) to what F12 and m3055 render give: 8 x 8 samples and soft "
+                "shadows, byte for byte (docs/lights.md).");
     }
     if (!info.compare_count.empty()) {
         ImGui::TextWrapped("A/B: %s", info.compare_count.c_str());

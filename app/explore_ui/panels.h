@@ -26,6 +26,7 @@ struct FrameInfo {
     double render_ms = 0.0;   // the last scene render (GPU finished), both halves in compare
     long frames = 0;          // UI frames drawn so far
     long renders = 0;         // scene renders so far
+    bool refining = false;    // the display shows a preview of area lights, not yet the render's pixels
     // frame_ms of the frames that rendered a changed scene, the last kMaxFrameSamples
     // (--stats' render_frame_ms; the page's m3055.frameTimes(): scripts/bench-web).
     std::vector<double> render_frame_ms;

@@ -18,7 +18,9 @@
 #include "scene/presets.h"
 
 #include <algorithm>
+#include <iterator>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 namespace m3055 {
@@ -57,6 +59,9 @@ struct Renderer::Impl {
     std::unique_ptr<ProgramCache> own_programs;  // when no cache is shared
     ProgramCache& programs;
     FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
+    std::unique_ptr<FrameTargets> reduced;  // render_reduced's smaller frame, made at its first use
+    FrameTargets* drawing = &targets;       // the frame this render draws into
+    std::optional<std::pair<int, int>> rows;  // render_rows: the only rows drawn
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
     SpherePass spheres;    // passes/sphere_pass.h
     ShaderMode shader_mode = ShaderMode::specialized;
@@ -118,7 +123,7 @@ struct Renderer::Impl {
         if (instances.empty()) return;
         sequence.use_program(program);
         spheres.draw(instances, deadline ? &*chunks : nullptr, sequence.lights().work,
-                     two_pass ? &blender : nullptr, program, targets.width(), targets.height());
+                     two_pass ? &blender : nullptr, program, drawing->width(), drawing->height());
     }
 
     // Pass 1: opaque spheres and meshes, with depth.
@@ -199,16 +204,22 @@ struct Renderer::Impl {
 
     void draw_scene(const Scene& scene) {
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
+        if (rows) {
+            chunks->clip_rows(rows->first, rows->second);
+            gl.Enable(GL_SCISSOR_TEST);  // the clear, the draws and the quantize pass: only these rows
+            gl.Scissor(0, rows->first, scene.display.width, rows->second - rows->first);
+        }
         chunks->check_deadline();  // loading the scene may have taken it all
-        FrameSequence sequence(gl, targets, scene, sampling);
+        FrameSequence sequence(gl, *drawing, scene, sampling);
         const SphereSets sets = sort_spheres(scene, sequence.camera());
         meshes.prepare(scene, sequence.camera());
         chunks->check_deadline();  // up to 4 million triangles tessellated
-        targets.set_stencil(blend == TranslucentBlend::two_pass);
+        drawing->set_stencil(blend == TranslucentBlend::two_pass);
         sequence.begin();  // background and depth cleared
         draw_opaque(scene, sets, sequence);
         draw_translucent(scene, sets, sequence);
         sequence.finish();  // Pass 3: the display's levels
+        gl.Disable(GL_SCISSOR_TEST);
     }
 };
 
@@ -217,6 +228,44 @@ Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
 Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl, std::make_unique<ProgramCache>(gl), nullptr)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
+void Renderer::render_rows(const Scene& scene, int row0, int row1) {
+    if (impl_->targets.width() != scene.display.width || impl_->targets.height() != scene.display.height)
+        throw std::logic_error("render_rows: the display was not drawn at this size");
+    row0 = std::clamp(row0, 0, scene.display.height);
+    row1 = std::clamp(row1, row0, scene.display.height);
+    if (row1 == row0) return;
+    const bool defer = impl_->defer_compiles;
+    impl_->defer_compiles = false;
+    impl_->rows = std::make_pair(row0, row1);
+    try {
+        impl_->render(scene);
+    } catch (...) {
+        impl_->rows.reset();
+        impl_->defer_compiles = defer;
+        throw;
+    }
+    impl_->rows.reset();
+    impl_->defer_compiles = defer;
+    for (auto key = impl_->deferred.begin(); key != impl_->deferred.end();)
+        key = impl_->programs.contains(*key) ? impl_->deferred.erase(key) : std::next(key);
+}
+
+void Renderer::render_reduced(const Scene& scene, int divisor) {
+    if (divisor <= 1) return impl_->render(scene);
+    Scene small = scene;
+    small.display.width = std::max(1, (scene.display.width + divisor - 1) / divisor);
+    small.display.height = std::max(1, (scene.display.height + divisor - 1) / divisor);
+    if (!impl_->reduced) impl_->reduced = std::make_unique<FrameTargets>(impl_->gl, impl_->programs);
+    impl_->drawing = impl_->reduced.get();
+    try {
+        impl_->render(small);
+    } catch (...) {
+        impl_->drawing = &impl_->targets;
+        throw;
+    }
+    impl_->drawing = &impl_->targets;
+    impl_->targets.show_scaled(*impl_->reduced, scene.display.width, scene.display.height);
+}
 void Renderer::set_shader_mode(ShaderMode mode) { impl_->shader_mode = mode; }
 void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
     impl_->deadline = deadline;
@@ -224,7 +273,7 @@ void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point>
 void Renderer::set_translucent_blend(TranslucentBlend blend) { impl_->blend = blend; }
 TranslucentBlend Renderer::translucent_blend() const { return impl_->blend; }
 void Renderer::set_area_sampling(AreaSampling sampling) {
-    impl_->sampling = {std::max(sampling.light, 1), std::max(sampling.shadow, 2)};
+    impl_->sampling = {std::max(sampling.light, 1), std::max(sampling.shadow, 1)};
 }
 AreaSampling Renderer::area_sampling() const { return impl_->sampling; }
 void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }

@@ -38,6 +38,18 @@ public:
     // the GL log (shader file name and line) if a program fails to build,
     // RenderTimeout past a deadline (frame/render_error.h).
     void render(const Scene& scene);
+    // The explorer's preview of a costly scene while input comes: drawn at
+    // 1/divisor of the display's width and height, then spread over the
+    // display's own pixels (nearest), so the display, its texture and its
+    // read-backs keep the scene's size. divisor <= 1: render(scene).
+    void render_reduced(const Scene& scene, int divisor);
+    // Rows [row0, row1) of the display (counted from the bottom, as GL does)
+    // drawn again, with the specialized programs; the other rows keep what
+    // they show. Each pixel is what render(scene) gives it, so bands covering
+    // every row give render's image: the explorer refines a preview this way
+    // without holding input for a whole frame. The display must already be
+    // at the scene's size (std::logic_error otherwise).
+    void render_rows(const Scene& scene, int row0, int row1);
 
     // How area and sky lights are sampled (passes/light_uniforms.h):
     // kRenderSampling by default, what the command line renders with; the

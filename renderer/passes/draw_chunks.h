@@ -9,7 +9,9 @@
 
 #include <chrono>
 #include <cstddef>
+#include <algorithm>
 #include <optional>
+#include <utility>
 #include <stdexcept>
 #include <vector>
 
@@ -66,29 +68,43 @@ public:
     DrawSpan span_of(std::size_t first, std::size_t count, std::size_t primitives, const float* rect,
                      std::size_t lights) const;
 
+    // Only rows [row0, row1) of the frame are drawn (Renderer::render_rows):
+    // the caller has the scissor test on with that box; bands stay inside it.
+    void clip_rows(int row0, int row1) { clip_ = {row0, row1}; }
+
     // draw(first, count) for each chunk (or band of one).
     template <class Draw>
     void run(const std::vector<DrawSpan>& chunks, const Draw& draw) {
-        const NoScissorAtExit no_scissor{gl_};  // also after a RenderTimeout
+        const ScissorAtExit restore{*this};  // also after a RenderTimeout
         bool first_draw = true;
         for (const DrawSpan& chunk : chunks) {
             const std::vector<int> rows = band_rows(chunk, kChunkWork);
             if (rows.size() > 2) gl_.Enable(GL_SCISSOR_TEST);
             for (std::size_t band = 0; band + 1 < rows.size(); ++band) {
+                int row0 = rows[band], row1 = rows[band + 1];
+                if (clip_) row0 = std::max(row0, clip_->first), row1 = std::min(row1, clip_->second);
+                if (rows.size() > 2 && row1 <= row0) continue;  // a band outside the clip
                 if (!first_draw) between_draws();
                 first_draw = false;
-                if (rows.size() > 2) gl_.Scissor(0, rows[band], width_, rows[band + 1] - rows[band]);
+                if (rows.size() > 2) gl_.Scissor(0, row0, width_, row1 - row0);
                 draw(chunk.first, chunk.count);
             }
-            if (rows.size() > 2) gl_.Disable(GL_SCISSOR_TEST);
+            if (rows.size() > 2) restore_scissor();
         }
     }
 
 private:
-    struct NoScissorAtExit {
-        const GlApi& gl;
-        ~NoScissorAtExit() { gl.Disable(GL_SCISSOR_TEST); }
+    struct ScissorAtExit {
+        const ChunkedDraws& draws;
+        ~ScissorAtExit() { draws.restore_scissor(); }
     };
+    // Off, or the clip's box.
+    void restore_scissor() const {
+        if (!clip_) return gl_.Disable(GL_SCISSOR_TEST);
+        gl_.Enable(GL_SCISSOR_TEST);
+        gl_.Scissor(0, clip_->first, width_, clip_->second - clip_->first);
+    }
+    std::optional<std::pair<int, int>> clip_;
     void between_draws() const;
     const GlApi& gl_;
     const Deadline& deadline_;

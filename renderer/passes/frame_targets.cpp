@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace m3055 {
 
@@ -69,6 +70,19 @@ void FrameTargets::quantize(const Display& display) {
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     gl_.BindVertexArray(0);
     gl_.UseProgram(0);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void FrameTargets::show_scaled(const FrameTargets& small, int width, int height) {
+    ensure_size(width, height);
+    const int w = small.width(), h = small.height();
+    const std::pair<unsigned, unsigned> pairs[2] = {{small.display_fbo_.id(), display_fbo_.id()},
+                                                    {small.scene_.framebuffer(), scene_.framebuffer()}};
+    for (const auto& [from, to] : pairs) {
+        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, from);
+        gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+        gl_.BlitFramebuffer(0, 0, w, h, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -43,6 +43,10 @@ public:
     // target into the display target; leaves framebuffer 0 bound.
     void quantize(const Display& display);
 
+    // `small`'s display and scene colour spread (nearest) over width x height
+    // here, the targets made that size; leaves framebuffer 0 bound.
+    void show_scaled(const FrameTargets& small, int width, int height);
+
     // The quantized display as an RGBA8 GL texture (GL_NEAREST; row 0 at the bottom).
     unsigned display_texture() const { return display_texture_.id(); }
     int width() const { return scene_.width(); }
