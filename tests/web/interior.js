@@ -19,6 +19,7 @@ function coverageColour(i) {
 // and only which object covers each pixel is left.
 function coverageScene(text) {
   const scene = JSON.parse(text);
+  scene.display = { ...scene.display, bits: 8 };  // three levels a channel stay apart at any bits
   scene.background = [0, 0, 0];
   scene.lights = [{ type: 'directional', direction: [0, 1, 0], intensity: 1, color: [0, 0, 0], ambient: [1, 1, 1] }];
   scene.objects = scene.objects.map((o, i) => ({ ...o, material: { model: 'phong', kd: [0, 0, 0], ks: [0, 0, 0], ka: coverageColour(i) } }));
