@@ -131,6 +131,24 @@ module.exports = async function pageTests(browser, base, t) {
     await page.close();
   }
 
+  // The area-light presets are the page's as the desktop's (every scenes/*.json
+  // is a preset): loaded by name with the script's `figure`, the command the
+  // Objects panel's preset buttons give, and shown at 128 x 80 (the render's
+  // sampling takes 13-27 s at 512 x 320), they are m3055 render's pixels of the file.
+  for (const name of ['softbox_three_point', 'sky_fill']) {
+    const script = `figure ${name}\nset display.width 128\nset display.height 80\n`;
+    const page = await t.openPage(browser, base + '?script=' + encodeURIComponent('data:text/plain,' + script));
+    const sharedScene = async () => JSON.parse(zlib.inflateSync(Buffer.from(new URLSearchParams(
+      (await page.evaluate(() => window.m3055.shareLink())).split('#')[1]).get('scene'), 'base64url')).toString());
+    for (let i = 0; i < 600 && (await sharedScene()).display.height !== 80; ++i) await sleep(100);
+    const shown = await display(page);
+    await page.close();
+    const file = JSON.parse(fs.readFileSync(path.join(repo, 'scenes', name + '.json'), 'utf8'));
+    file.display = { ...file.display, width: 128, height: 80 };
+    check(shown.equals(rendered(JSON.stringify(file))),
+      `${backend}: the preset ${name}, at 128 x 80, shows m3055 render's pixels of scenes/${name}.json, byte for byte`);
+  }
+
   // A .brdf file's errors name its own line, as m3055 render does, with the
   // reason; a file with names that begin with "_" compiles and shows what
   // m3055 render draws.

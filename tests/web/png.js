@@ -56,22 +56,27 @@ function decodePng(buffer) {
 }
 
 // Pixels whose level (of 2^bits - 1) differs in any channel, and the largest
-// difference in levels. The display writes level L as round(L * 255 / (2^bits - 1)).
-function compareLevels(a, b, bits) {
-  if (a.width !== b.width || a.height !== b.height) return { sizeDiffers: true, differing: a.width * a.height, maxLevels: Infinity };
+// difference in levels, and the pixels more than one level off. The display
+// writes level L as round(L * 255 / (2^bits - 1)).
+// With `mask` (1 a pixel counted, 0 one left out) only the masked pixels count.
+function compareLevels(a, b, bits, mask = null) {
+  if (a.width !== b.width || a.height !== b.height) return { sizeDiffers: true, differing: a.width * a.height, maxLevels: Infinity, beyondOne: a.width * a.height };
   const top = (1 << bits) - 1;
   const level = (v) => Math.round((v * top) / 255);
-  let differing = 0, maxLevels = 0;
+  let differing = 0, maxLevels = 0, counted = 0, beyondOne = 0;
   for (let i = 0; i < a.width * a.height; ++i) {
+    if (mask && !mask[i]) continue;
+    ++counted;
     let pixelMax = 0;
     for (let c = 0; c < 3; ++c) {
       const d = Math.abs(level(a.pixels[i * a.channels + c]) - level(b.pixels[i * b.channels + c]));
       pixelMax = Math.max(pixelMax, d);
     }
     if (pixelMax > 0) ++differing;
+    if (pixelMax > 1) ++beyondOne;
     maxLevels = Math.max(maxLevels, pixelMax);
   }
-  return { sizeDiffers: false, differing, maxLevels, pixels: a.width * a.height };
+  return { sizeDiffers: false, differing, maxLevels, beyondOne, pixels: counted };
 }
 
 module.exports = { decodePng, compareLevels };
