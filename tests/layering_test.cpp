@@ -112,7 +112,8 @@ std::vector<fs::path> sources_in(const fs::path& folder) {
 }
 
 // The repository's own source files: everything under the source folder but
-// third_party/, hidden folders and build trees (a folder with a CMakeCache.txt).
+// third_party/, npm's installs (tests/web/node_modules), hidden folders and
+// build trees (a folder with a CMakeCache.txt).
 std::vector<fs::path> repository_files() {
     std::vector<fs::path> files;
     const fs::path root = test::source_path("");
@@ -120,7 +121,8 @@ std::vector<fs::path> repository_files() {
         const fs::path& path = it->path();
         const std::string name = path.filename().string();
         if (it->is_directory()) {
-            if (name == "third_party" || name.front() == '.' || fs::exists(path / "CMakeCache.txt"))
+            if (name == "third_party" || name == "node_modules" || name.front() == '.' ||
+                fs::exists(path / "CMakeCache.txt"))
                 it.disable_recursion_pending();
             continue;
         }
