@@ -5,6 +5,7 @@
 #include "geometry/mesh.h"
 #include "scene/load.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace m3055::explore {
 
@@ -52,10 +54,33 @@ bool well_inside_view(const Scene& scene, const CameraBasis& b, const dvec3& poi
     return std::abs(x) <= kInsideView && std::abs(y) <= kInsideView;
 }
 
-bool overlaps_another(const Scene& scene, const dvec3& middle, double radius) {
-    for (const Object& o : scene.objects)
-        if (o.shape != Shape::plane && glm::length(o.center - middle) < radius + geometry::bounding_radius(o)) return true;
-    return false;
+struct Box {
+    dvec3 lo, hi;
+};
+
+// An object's box in the world: a mesh from a file not rotated, its own;
+// anything else the box around its bounding sphere.
+Box box_of(const Object& o) {
+    if (o.shape == Shape::mesh && o.model && o.rotation_deg == dvec3(0.0)) {
+        const dvec3 extent = o.model->hi - o.model->lo;
+        const double largest = std::max({extent.x, extent.y, extent.z, 1e-300});
+        const dvec3 half = 0.5 * o.size * extent / largest;
+        return {o.center - half, o.center + half};
+    }
+    const double r = geometry::bounding_radius(o);
+    return {o.center - dvec3(r), o.center + dvec3(r)};
+}
+
+// The volume `box` shares with the other objects' boxes (floors not counted).
+double overlap_with_others(const Scene& scene, const Box& box) {
+    double volume = 0.0;
+    for (const Object& o : scene.objects) {
+        if (o.shape == Shape::plane) continue;
+        const Box other = box_of(o);
+        const dvec3 shared = glm::min(box.hi, other.hi) - glm::max(box.lo, other.lo);
+        if (shared.x > 0.0 && shared.y > 0.0 && shared.z > 0.0) volume += shared.x * shared.y * shared.z;
+    }
+    return volume;
 }
 
 // The loader's message without the place it gives in the one-object scene
@@ -86,31 +111,34 @@ double floor_height(const Scene& scene) {
 }
 
 Object placed_on_floor(const Scene& scene, Object model) {
-    const dvec3 extent = model.model->hi - model.model->lo;
-    const double largest = std::max({extent.x, extent.y, extent.z, 1e-300});
     const double floor = floor_height(scene);
     const CameraBasis b = basis_of(scene.camera);
     dvec3 across{b.right.x, 0.0, b.right.z};
     across = glm::length(across) > 1e-12 ? glm::normalize(across) : dvec3(1.0, 0.0, 0.0);
     const double full_size = kViewFraction * view_height_at_target(scene.camera);
-    // Smaller where the view is full: a model hidden inside another object is not in view.
+    // Smaller where the view is full; where nothing is free, the place in
+    // view that overlaps the others least (a model inside another is not in view).
+    Object least = model;
+    double least_overlap = std::numeric_limits<double>::infinity();
     for (const double shrink : {1.0, 0.75, 0.5}) {
         model.size = full_size * shrink;
-        const double height = model.size * extent.y / largest;  // no rotation yet: the box's own height
-        const dvec3 base{scene.camera.target.x, floor + 0.5 * height, scene.camera.target.z};
-        model.center = base;
-        const double radius = geometry::bounding_radius(model);
+        model.center = dvec3(0.0);
+        const Box own = box_of(model);
+        const dvec3 base{scene.camera.target.x, floor - own.lo.y, scene.camera.target.z};
         for (int k = 0; k <= 16; ++k) {
             const double offset = (k % 2 == 1 ? 1.0 : -1.0) * double((k + 1) / 2) * 0.25 * full_size;  // 0, +, -, ...
-            const dvec3 middle = base + across * offset;
-            if (!well_inside_view(scene, b, middle) || overlaps_another(scene, middle, radius)) continue;
-            model.center = middle;
-            return model;
+            model.center = base + across * offset;
+            if (!well_inside_view(scene, b, model.center)) continue;
+            const double overlap = overlap_with_others(scene, {own.lo + model.center, own.hi + model.center});
+            if (overlap <= 0.0) return model;
+            if (overlap < least_overlap) least_overlap = overlap, least = model;
         }
     }
+    if (least_overlap < std::numeric_limits<double>::infinity()) return least;
     model.size = full_size;
-    model.center = {scene.camera.target.x, floor + 0.5 * full_size * extent.y / largest, scene.camera.target.z};
-    return model;  // at the target though it overlaps: in view, where Shift+drag can move it
+    model.center = dvec3(0.0);
+    model.center = {scene.camera.target.x, floor - box_of(model).lo.y, scene.camera.target.z};
+    return model;  // nothing of the floor's line in view: at the target
 }
 
 Command dropped_file_command(const std::string& path) {

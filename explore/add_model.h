@@ -22,8 +22,10 @@ double floor_height(const Scene& scene);
 // height at the camera's target and standing on the floor: its bounding
 // box's bottom on floor_height, on the floor's line through the target across
 // the view, at the first place (the target, then alternately right and left)
-// where its bounding sphere overlaps no other object's and its middle is well
-// inside the view; where none is, smaller (3/4, then 1/2); else at the target.
+// where its box overlaps no other object's box (a mesh's own, not rotated;
+// else the box around its bounding sphere) and its middle is well inside the
+// view; where none is, smaller (3/4, then 1/2); where still none is, the place
+// in view that overlaps the others least.
 Object placed_on_floor(const Scene& scene, Object model);
 
 // What a file dropped on the window or the page asks: a .brdf opens on the

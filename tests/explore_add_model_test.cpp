@@ -47,6 +47,14 @@ double lowest_y(const Object& object) {
     return low;
 }
 
+// The placed model's extent in x.
+std::pair<double, double> x_range(const Object& object) {
+    const geometry::Mesh mesh = geometry::make_mesh(object);
+    double low = 1e300, high = -1e300;
+    for (const dvec3& p : mesh.positions) low = std::min(low, p.x), high = std::max(high, p.x);
+    return {low, high};
+}
+
 TEST(ExploreAddModel, StandsOnTheFloorSelectedAsOneUndoStep) {
     const fs::path dir = fresh_folder("explore_add_model_floor");
     const fs::path vase = copied_vase(dir);
@@ -76,8 +84,26 @@ TEST(ExploreAddModel, WithoutAPlaneTheFloorIsYZeroAndItOverlapsNothing) {
     const Object& sphere = explorer.doc.scene.objects.front();
     const Object& added = explorer.doc.scene.objects.back();
     EXPECT_NEAR(lowest_y(added), 0.0, 1e-4);
-    EXPECT_GT(glm::length(added.center - sphere.center),
-              sphere.radius + geometry::bounding_radius(added) - 1e-9) << "beside the sphere, not in it";
+    const auto [low_x, high_x] = x_range(added);
+    EXPECT_TRUE(low_x > sphere.center.x + sphere.radius || high_x < sphere.center.x - sphere.radius)
+        << "beside the sphere, not in it: x in [" << low_x << ", " << high_x << "]";
+}
+
+// The vase scene: its vase fills the view; a second one stands beside it, in view, not inside it.
+TEST(ExploreAddModel, BesideAModelThatFillsTheView) {
+    const fs::path dir = fresh_folder("explore_add_model_beside");
+    const fs::path vase = copied_vase(dir);
+    fs::copy_file(m3055::test::source_path("scenes/models/vase.json"), dir / "vase.json");
+    Explorer explorer = started();
+    ASSERT_TRUE(run(explorer, command::LoadScene{(dir / "vase.json").string()})) << explorer.session.messages.load_error;
+    ASSERT_TRUE(run(explorer, command::AddModel{vase.string()})) << explorer.session.messages.error;
+    const Object& first = explorer.doc.scene.objects[1];
+    const Object& added = explorer.doc.scene.objects[2];
+    const auto [first_low, first_high] = x_range(first);
+    const auto [low, high] = x_range(added);
+    EXPECT_TRUE(low >= first_high || high <= first_low) << "[" << low << ", " << high << "] beside [" << first_low
+                                                          << ", " << first_high << "]";
+    EXPECT_NEAR(lowest_y(added), -1.0, 1e-4) << "on the floor plane";
 }
 
 TEST(ExploreAddModel, TheFilesMaterialsAreEditedByName) {
