@@ -3,6 +3,7 @@
 #include "bench/area_bench.h"
 #include "bench/area_latency.h"
 #include "bench/brdf_bench.h"
+#include "bench/model_bench.h"
 #include "commands.h"
 
 #include <iostream>
@@ -16,6 +17,7 @@ void add_bench_command(CLI::App& app) {
         std::string brdf;  // --brdf DIR: only the .brdf section (app/bench/brdf_bench.h)
         bool area = false;  // --area-lights: only the area lights' section (app/bench/area_bench.h)
         bool area_latency = false;  // --area-latency: only the explorer's area-light drag (app/bench/area_latency.h)
+        bool models = false;  // --model-files: only the model files' section (app/bench/model_bench.h)
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand(
@@ -43,12 +45,17 @@ void add_bench_command(CLI::App& app) {
                       "Only the explorer's latency with area lights: the softbox scene's key dragged, written to "
                       "--out/area_latency.md")
         ->excludes("--replot");
+    command->add_flag("--model-files", options->models,
+                      "Only the model files' section: a million-triangle OBJ and .glb (made at bench time) loaded "
+                      "and shown, each step timed, written to --out/model_files.md and .csv")
+        ->excludes("--replot");
     command->callback([options]() {
         try {
             options->bench.backend = parse_backend(options->backend);
             if (!options->brdf.empty()) return bench::run_brdf_bench(options->bench, options->brdf);
             if (options->area) return bench::run_area_bench(options->bench);
             if (options->area_latency) return bench::run_area_latency(options->bench);
+            if (options->models) return bench::run_model_bench(options->bench);
             bench::run_bench(options->bench);
         } catch (const std::exception& error) {
             std::cerr << "m3055: " << error.what() << "\n";

@@ -1,5 +1,6 @@
 #include "explore/apply.h"
 
+#include "explore/add_model.h"
 #include "explore/brdf_files.h"
 #include "explore/files.h"
 #include "explore/operations.h"

@@ -115,7 +115,7 @@ bool open_brdf(Explorer& e, const std::string& path) {
     e.session.brdf_watch.stamps[model_path] = stamp(model_path);  // watched from now on
     messages.brdf_error.clear();
     const int object = e.view.selected_object;
-    edit_document(e, {MaterialEdit{object, *target, *fresh}, "open " + file_name(path)});
+    edit_document(e, {MaterialEdit{object, *target, *fresh, selected_group(e)}, "open " + file_name(path)});
     messages.status = "opened " + path + " on object " + std::to_string(object);
     return true;
 }

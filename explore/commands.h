@@ -22,6 +22,7 @@ struct SetMaterial {  // the selected object's (or B's) material becomes `value`
     int object;       // an object index, or kMaterialB
     Material value;
     std::string action;  // a button's own name ("rescale weights to eq. 14"), else named after what differs
+    int group = -1;      // a mesh's material from its model file, by index (Object::groups); -1: the object's
 };
 struct SetLight {
     int index;
@@ -85,6 +86,10 @@ struct LoadFigure {  // "fig05" ... "fig13", "spec_example"
 struct OpenBrdf {  // a .brdf file on the selected object
     std::string path;
 };
+struct AddModel {  // an .obj, .gltf or .glb file as a mesh standing on the floor (explore/add_model.h)
+    std::string path;
+    bool error_dialog = false;  // a failed add also shows in a dialog (a drop)
+};
 struct Undo {};
 struct Redo {};
 
@@ -145,7 +150,7 @@ using Command = std::variant<
     command::SetObject, command::AddObject, command::RemoveObject, command::MoveObjectInView, command::SetCamera,
     command::OrbitCamera, command::ZoomCamera, command::ResetCamera, command::SetDisplay, command::SetBackground,
     command::SetSceneValue, command::CopyAToB, command::CompareFresnel, command::LoadScene, command::LoadFigure,
-    command::OpenBrdf, command::Undo, command::Redo, command::Save, command::SaveAs, command::SaveTo,
+    command::OpenBrdf, command::AddModel, command::Undo, command::Redo, command::Save, command::SaveAs, command::SaveTo,
     command::AskSaveAs, command::AskQuit, command::Quit, command::SelectObject,
     command::SelectLight, command::SetCompare, command::TogglePanels, DisplayRequest>;
 

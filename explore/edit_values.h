@@ -18,6 +18,7 @@ inline constexpr int kMaterialB = -1;
 struct MaterialEdit {
     int object;  // an index into scene.objects, or kMaterialB
     Material before, after;
+    int group = -1;  // a model file's material of a mesh (Object::groups), -1: the object's own
 };
 struct LightEdit {
     int index;

@@ -43,7 +43,7 @@ bool merge_into(EditValue& earlier, const EditValue& later) {
             using T = std::decay_t<decltype(e)>;
             const T& next = std::get<T>(later);
             if constexpr (std::is_same_v<T, MaterialEdit>) {
-                if (e.object != next.object) return false;
+                if (e.object != next.object || e.group != next.group) return false;
                 e.after = next.after;
             } else if constexpr (std::is_same_v<T, LightEdit> || std::is_same_v<T, ObjectEdit>) {
                 if (e.index != next.index) return false;
@@ -58,9 +58,20 @@ bool merge_into(EditValue& earlier, const EditValue& later) {
         earlier);
 }
 
-void set_material(Document& doc, int object, const Material& material) {
-    if (object == kMaterialB) doc.material_b = material;
-    else doc.scene.objects[std::size_t(object)].material = material;
+void set_material(Document& doc, const MaterialEdit& edit, const Material& material) {
+    if (edit.object == kMaterialB) {
+        doc.material_b = material;
+        return;
+    }
+    Object& object = doc.scene.objects[std::size_t(edit.object)];
+    if (edit.group < 0) {
+        object.material = material;
+        return;
+    }
+    GroupMaterial& group = object.groups[std::size_t(edit.group)];
+    group.material = material;
+    group.overridden = true;  // saved as the scene's "materials" entry of its name
+    if (edit.group == 0) object.material = material;  // a mesh's `material` is its first group's
 }
 
 void set_content(Document& doc, const DocumentContent& content) {
@@ -91,7 +102,7 @@ std::shared_ptr<const DocumentContent> content_of(const Document& doc) {
 
 void apply_edit(Document& doc, const Edit& edit, bool forward) {
     std::visit(Overloaded{
-                   [&](const MaterialEdit& e) { set_material(doc, e.object, forward ? e.after : e.before); },
+                   [&](const MaterialEdit& e) { set_material(doc, e, forward ? e.after : e.before); },
                    [&](const LightEdit& e) { doc.scene.lights[std::size_t(e.index)] = forward ? e.after : e.before; },
                    [&](const LightListEdit& e) { doc.scene.lights = forward ? e.after : e.before; },
                    [&](const ObjectEdit& e) { doc.scene.objects[std::size_t(e.index)] = forward ? e.after : e.before; },
@@ -121,6 +132,10 @@ std::string edit_label(const Edit& edit, const Scene& scene) {
             change.what = "B " + change.what;
         } else if (change.what == "model") {
             if (scene.objects.size() > 1) change.to += " (object " + std::to_string(material->object) + ")";
+        } else if (material->group >= 0) {
+            const Object& object = scene.objects[std::size_t(material->object)];
+            change.what = "objects[" + std::to_string(material->object) + "].materials." +
+                          object.groups[std::size_t(material->group)].name + "." + change.what;
         } else {
             change.what = "objects[" + std::to_string(material->object) + "].material." + change.what;
         }

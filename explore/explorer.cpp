@@ -7,13 +7,30 @@
 
 namespace m3055::explore {
 
-Material* selected_material(Explorer& explorer) { return material_of(explorer.doc, explorer.view.selected_object); }
+Material* selected_material(Explorer& explorer) {
+    Material* own = material_of(explorer.doc, explorer.view.selected_object);
+    const int group = selected_group(explorer);
+    if (group < 0) return own;
+    explorer.view.selected_group = group;
+    return &explorer.doc.scene.objects[std::size_t(explorer.view.selected_object)].groups[std::size_t(group)].material;
+}
+
+int selected_group(const Explorer& explorer) {
+    const auto& objects = explorer.doc.scene.objects;
+    if (objects.empty()) return -1;
+    const int i = std::clamp(explorer.view.selected_object, 0, static_cast<int>(objects.size()) - 1);
+    const int groups = static_cast<int>(objects[std::size_t(i)].groups.size());
+    return groups == 0 ? -1 : std::clamp(explorer.view.selected_group, 0, groups - 1);
+}
 
 Scene compare_scene(const Explorer& explorer) {
     Scene b = explorer.doc.scene;
     if (!b.objects.empty()) {
         const int i = std::clamp(explorer.view.selected_object, 0, static_cast<int>(b.objects.size()) - 1);
-        b.objects[std::size_t(i)].material = explorer.doc.material_b;
+        Object& object = b.objects[std::size_t(i)];
+        const int group = selected_group(explorer);
+        if (group >= 0) object.groups[std::size_t(group)].material = explorer.doc.material_b;
+        if (group <= 0) object.material = explorer.doc.material_b;
     }
     return b;
 }

@@ -22,8 +22,12 @@ struct Explorer {
     std::vector<DisplayRequest> display_requests;  // read-outs waiting for the displays to be drawn
 };
 
-// The selected object's material (nullptr with no object); clamps the selection.
+// The selected object's material (nullptr with no object): a mesh's from its
+// model file, the selected one of them; clamps the selections.
 Material* selected_material(Explorer& explorer);
+// Which of the selected mesh's model-file materials the Material panel edits
+// (an index into Object::groups), or -1 for an object with one material.
+int selected_group(const Explorer& explorer);
 
 // The second scene of the A/B compare: the same scene, the selected object wearing material B.
 Scene compare_scene(const Explorer& explorer);

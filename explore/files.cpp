@@ -71,10 +71,14 @@ bool apply(Explorer& e, const command::LoadFigure& c) {
 
 namespace {
 
-// The text of a saved scene file (Save, a screenshot's JSON): .brdf files
-// named as the platform asks (Platform::brdf_paths_relative_to).
-std::string scene_file_text(const Explorer& e) {
-    return scene_to_json(e.doc.scene, PathWriting{e.session.platform.brdf_paths_relative_to}).dump(2) + "\n";
+// The text of scene file `path` (Save, a screenshot's JSON): .brdf files
+// named as the platform asks (Platform::brdf_paths_relative_to); model files
+// so too on the page, and on the desktop from the scene file's own folder.
+std::string scene_file_text(const Explorer& e, const std::string& path) {
+    const std::string& folder = e.session.platform.brdf_paths_relative_to;
+    PathWriting writing{folder, folder};
+    if (folder.empty()) writing.model_files_relative_to = std::filesystem::absolute(path).parent_path().string();
+    return scene_to_json(e.doc.scene, writing).dump(2) + "\n";
 }
 
 std::string full_path(const std::string& path) {
@@ -87,7 +91,7 @@ std::string full_path(const std::string& path) {
 
 bool apply(Explorer& e, const command::SaveTo& c) {
     try {
-        const std::string text = scene_file_text(e);
+        const std::string text = scene_file_text(e, c.path);
         write_file_atomic(c.path, text.data(), text.size());
         if (e.session.platform.file_written) e.session.platform.file_written(c.path);
         explore::commit_edits(e.doc);  // the edits before the save are a step; the save itself is none
@@ -180,7 +184,7 @@ void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path) {
         renderer.set_defer_compiles(deferring);
         renderer.set_area_sampling(sampling);
         write_png(png, renderer.read_display());
-        const std::string json = json_beside(png), text = scene_file_text(e);
+        const std::string json = json_beside(png), text = scene_file_text(e, json);
         write_file_atomic(json, text.data(), text.size());
         if (e.session.platform.file_written) {
             e.session.platform.file_written(png);

@@ -69,8 +69,13 @@ bool apply(Explorer& e, const command::SetMaterial& c) {
                                  c.action.empty() ? "" : "B " + c.action});
     }
     if (!valid_index(c.object, e.doc.scene.objects.size())) return false;
-    const Material& current = e.doc.scene.objects[std::size_t(c.object)].material;
-    return edit_document(e, {MaterialEdit{c.object, current, c.value}, c.action});
+    const Object& object = e.doc.scene.objects[std::size_t(c.object)];
+    if (c.group >= 0) {
+        if (!valid_index(c.group, object.groups.size())) return false;
+        return edit_document(e, {MaterialEdit{c.object, object.groups[std::size_t(c.group)].material, c.value, c.group},
+                                 c.action});
+    }
+    return edit_document(e, {MaterialEdit{c.object, object.material, c.value}, c.action});
 }
 
 Material with_model_named(const Material& material, const std::string& name) {

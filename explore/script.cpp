@@ -1,6 +1,7 @@
 #include "explore/script.h"
 
 #include "explore/apply.h"
+#include "explore/add_model.h"
 #include "explore/brdf_files.h"
 #include "explore/busy.h"
 #include "explore/files.h"
@@ -87,7 +88,7 @@ void set_value(Call& c) {
 void model(Call& c) {
     const std::string name = c.word();
     const Material& material = c.material();
-    c.run(command::SetMaterial{c.view().selected_object, with_model_named(material, name), ""});
+    c.run(command::SetMaterial{c.view().selected_object, with_model_named(material, name), "", selected_group(c.explorer)});
 }
 
 void print_models(Call&) {
@@ -103,7 +104,7 @@ void select_object(Call& c) {
 void rescale_eq14(Call& c) {
     Material rescaled;
     if (!eq14_rescaled(c.material(), &rescaled)) throw std::runtime_error("rescale_eq14: not possible for this material");
-    c.run(command::SetMaterial{c.view().selected_object, rescaled, kEq14Action});
+    c.run(command::SetMaterial{c.view().selected_object, rescaled, kEq14Action, selected_group(c.explorer)});
 }
 
 void add_object_command(Call& c) {
@@ -295,6 +296,10 @@ void save_difference(Call& c) {  // the difference pane's image, at display reso
 // File > Open BRDF's dialog with PATH typed (or a drop): errors show in the window, as `load`'s.
 void open_brdf_command(Call& c) { c.run(command::OpenBrdf{c.rest()}); }
 
+// File > Add model...'s dialog with PATH typed; `drop PATH`: what a file dropped on the window gives.
+void add_model_command(Call& c) { c.run(command::AddModel{c.rest()}); }
+void drop_command(Call& c) { c.run(dropped_file_command(c.rest())); }
+
 // What an editor's save does to a watched file: DST's bytes replaced by SRC's
 // (written to a temporary and renamed, so the watcher never reads half a file).
 void replace_file(Call& c) {
@@ -401,7 +406,8 @@ const std::map<std::string, Handler>& commands() {
         {"screenshot_dir", screenshot_dir}, {"compare_diff", compare_diff},
         {"diff_scale", diff_scale},   {"print_compare", print_compare},
         {"print_profile", print_profile}, {"save_difference", save_difference},
-        {"open_brdf", open_brdf_command},
+        {"open_brdf", open_brdf_command}, {"add_model", add_model_command},
+        {"drop", drop_command},
         {"replace_file", replace_file}, {"print_brdf", print_brdf},
         {"brdf_views", brdf_views},  {"spectra", spectra},
         {"print_grade", print_grade}, {"save_display", save_display},

@@ -17,6 +17,8 @@
 //   figure NAME             a figure preset (fig05 ... fig13, spec_example)
 //   load PATH               load a scene file (errors show in the window)
 //   open_brdf PATH          File > Open BRDF: PATH on the selected object (errors show in the window)
+//   add_model PATH          File > Add model...: PATH standing on the floor, selected (errors show in the window)
+//   drop PATH               the command a file dropped on the window gives (.brdf, a model file, else a scene)
 //   replace_file SRC DST    an editor saving DST with SRC's bytes (for the .brdf watcher)
 //   brdf_views on|off       View > BRDF views (the slice, albedo and 3D lobe window)
 //   spectra on|off          View > Spectra (the light's and the material's spectra, larger)

@@ -75,10 +75,9 @@ namespace {
 
 using nlohmann::json;
 
-// A bundle's file name: relative, "/"-separated, each part a plain name, and a .brdf.
-bool plain_relative_brdf_name(const std::string& name) {
+// A bundle's file name: relative, "/"-separated, each part a plain name.
+bool plain_relative_name(const std::string& name) {
     if (name.empty() || name.size() > 255 || name.front() == '/' || name.find('\\') != std::string::npos) return false;
-    if (name.size() < 6 || name.compare(name.size() - 5, 5, ".brdf") != 0) return false;
     std::size_t start = 0;
     while (start <= name.size()) {
         const std::size_t end = std::min(name.find('/', start), name.size());
@@ -89,6 +88,39 @@ bool plain_relative_brdf_name(const std::string& name) {
         start = end + 1;
     }
     return true;
+}
+
+bool plain_relative_brdf_name(const std::string& name) {
+    return plain_relative_name(name) && name.size() >= 6 && name.compare(name.size() - 5, 5, ".brdf") == 0;
+}
+
+// A file of the page's folder as a bundle carries it, read safely (a
+// regular file, at most what a link may unpack to).
+std::string bundled_file(const std::string& folder, const std::string& name) {
+    try {
+        return io::read_input_file((std::filesystem::path(folder) / name).string(), kMaxSharedSceneBytes);
+    } catch (const io::InputError& e) {
+        throw std::runtime_error(std::string("share link: ") + e.what());
+    }
+}
+
+// A mesh's model file and the files it names (an OBJ's .mtl, a glTF's .bin),
+// by their names in the page's folder, into `files` (base64url: a .glb is binary).
+void bundle_model_files(const Object& object, const std::string& name, const std::string& folder, json& files) {
+    if (!plain_relative_name(name))
+        throw std::runtime_error("share link: the model file " + name +
+                                 " is not in the page's folder, so the link cannot carry it");
+    std::vector<std::string> names{name};
+    const std::filesystem::path model_folder = std::filesystem::path(name).parent_path();
+    for (const std::string& side : object.model->side_files) {
+        const std::string side_name = (model_folder / side).lexically_normal().generic_string();
+        if (!plain_relative_name(side_name))
+            throw std::runtime_error("share link: the file " + side + " that the model file " + name +
+                                     " names is not in the page's folder, so the link cannot carry it");
+        names.push_back(side_name);
+    }
+    for (const std::string& file : names)
+        if (!files.contains(file)) files[file] = base64url_encode(bundled_file(folder, file));
 }
 
 std::string deflate_to_token(const std::string& text) {
@@ -128,13 +160,13 @@ std::string inflate_token(const std::string& token) {
 }  // namespace
 
 std::string share_token(const Scene& scene, const std::string& folder) {
-    const json doc = scene_to_json(scene, PathWriting{folder});
-    json files = json::object();
-    for (const json& object : doc.value("objects", json::array())) {
-        if (object.contains("file"))  // a mesh from a model file (and what that names): not carried
-            throw std::runtime_error("share link: the scene's mesh from the model file " +
-                                     object["file"].get<std::string>() +
-                                     " cannot travel in a link; share the scene and its model files instead");
+    const json doc = scene_to_json(scene, PathWriting{folder, {}});
+    json files = json::object(), model_files = json::object();
+    const json objects = doc.value("objects", json::array());
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const json& object = objects[i];
+        if (object.contains("file") && i < scene.objects.size() && scene.objects[i].model)
+            bundle_model_files(scene.objects[i], object["file"].get<std::string>(), folder, model_files);
         const json& material = object.value("material", json::object());
         if (material.value("model", "") != "brdf") continue;
         const std::string name = material.value("file", "");
@@ -142,14 +174,11 @@ std::string share_token(const Scene& scene, const std::string& folder) {
         if (!plain_relative_brdf_name(name))
             throw std::runtime_error("share link: the .brdf file " + name +
                                      " is not in the page's folder, so the link cannot carry it");
-        try {  // io's safe read: a regular file, at most what a link may unpack to
-            files[name] = io::read_input_file((std::filesystem::path(folder) / name).string(), kMaxSharedSceneBytes);
-        } catch (const io::InputError& e) {
-            throw std::runtime_error(std::string("share link: ") + e.what());
-        }
+        files[name] = bundled_file(folder, name);
     }
-    const std::string text = files.empty() ? doc.dump()
-                                           : json{{"m3055_share", 1}, {"scene", doc}, {"brdf_files", files}}.dump();
+    json bundle{{"m3055_share", 1}, {"scene", doc}, {"brdf_files", files}};
+    if (!model_files.empty()) bundle["model_files"] = std::move(model_files);
+    const std::string text = files.empty() && !bundle.contains("model_files") ? doc.dump() : bundle.dump();
     std::string token = deflate_to_token(text);
     if (token.size() > kMaxShareTokenChars)
         throw std::runtime_error("share link: the scene and its .brdf files make a link of " +
@@ -174,6 +203,14 @@ SharedScene unpack_share_token(const std::string& token) {
             throw std::runtime_error("share link: brdf_files: \"" + name + "\" is not a plain relative NAME.brdf");
         if (!file.is_string()) throw std::runtime_error("share link: brdf_files: \"" + name + "\" is not text");
         shared.files.push_back({name, file.get<std::string>()});
+    }
+    const json model_files = doc.value("model_files", json::object());
+    if (!model_files.is_object()) throw std::runtime_error("share link: model_files is not an object of files");
+    for (const auto& [name, file] : model_files.items()) {
+        if (!plain_relative_name(name))
+            throw std::runtime_error("share link: model_files: \"" + name + "\" is not a plain relative name");
+        if (!file.is_string()) throw std::runtime_error("share link: model_files: \"" + name + "\" is not base64url text");
+        shared.files.push_back({name, base64url_decode(file.get<std::string>())});
     }
     shared.scene_text = doc["scene"].dump();
     return shared;

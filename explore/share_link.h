@@ -1,9 +1,11 @@
 // A scene in a link: the compact scene JSON, deflated (zlib) and written in
 // base64url (RFC 4648 §5, no padding), for the page's `#scene=` fragment
 // (docs/web.md). A scene whose materials come from .brdf files travels with
-// them: the deflated JSON is then a bundle,
-//   {"m3055_share": 1, "scene": SCENE, "brdf_files": {"NAME.brdf": TEXT, ...}},
-// SCENE naming each file by the bundle's NAME. Nothing here knows about
+// them, and one with a mesh from a model file with that file and the files it
+// names (.mtl, .bin): the deflated JSON is then a bundle,
+//   {"m3055_share": 1, "scene": SCENE, "brdf_files": {"NAME.brdf": TEXT, ...},
+//    "model_files": {"NAME": BASE64URL, ...}},
+// SCENE naming each file by the bundle's NAME; the same limits hold. Nothing here knows about
 // browsers, so it is tested natively.
 #pragma once
 
@@ -31,8 +33,8 @@ inline constexpr std::size_t kMaxShareTokenChars = 2000000 - 4096;
 std::string share_token(const Scene& scene, const std::string& folder = "");
 
 struct SharedFile {
-    std::string name;  // relative, "/"-separated, no "..", ends in .brdf
-    std::string text;
+    std::string name;  // relative, "/"-separated, no ".." (a .brdf, or a model file or one it names)
+    std::string text;  // its bytes
 };
 struct SharedScene {
     std::string scene_text;  // loaded like any scene file, from the folder holding the files

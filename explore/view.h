@@ -15,10 +15,11 @@ namespace m3055::explore {
 inline constexpr const char* kPlotsTitle = "Plane of incidence";
 
 // The modal dialogs, opened by the frame after a command asks for one.
-enum class Dialog { none, unsaved_edits, save_as, load_error, open_brdf };
+enum class Dialog { none, unsaved_edits, save_as, load_error, open_brdf, add_model };
 
 struct View {
     int selected_object = 0;  // whose material the Material panel edits
+    int selected_group = 0;   // which of a model file's materials, when it is a mesh with several
     int selected_light = 0;   // the light last edited in the Lights panel
     int plotted_light = 0;    // the polar plot's light: picked in the plot's own header only
 
@@ -48,6 +49,7 @@ struct View {
     std::string save_path = "m3055-scene.json";  // Save As
     std::string load_path;                       // File > load
     std::string brdf_path;                       // File > Open BRDF
+    std::string model_path;                      // File > Add model
 };
 
 }  // namespace m3055::explore

@@ -100,6 +100,7 @@ void draw_menu_bar(Explorer& explorer) {
         if (ImGui::MenuItem("Save", "Ctrl+S")) explorer.commands.push(command::Save{});
         if (ImGui::MenuItem("Save as...")) explorer.commands.push(command::AskSaveAs{});
         if (ImGui::MenuItem("Open BRDF...")) explorer.view.dialog = Dialog::open_brdf;
+        if (ImGui::MenuItem("Add model...")) explorer.view.dialog = Dialog::add_model;
         if (ImGui::MenuItem("Screenshot", "F12")) explorer.commands.push(command::Screenshot{});
         if (explorer.session.platform.can_quit) {
             ImGui::Separator();
@@ -137,6 +138,7 @@ void draw_dialogs(Explorer& explorer) {
     save_as_dialog(explorer);
     load_error_dialog(explorer);
     open_brdf_dialog(explorer);
+    add_model_dialog(explorer);
 }
 
 }  // namespace m3055::explore

@@ -10,6 +10,7 @@
 // answered; the panes and panels are drawn; the window is shown.
 #include "explore_ui/explore.h"
 
+#include "explore/add_model.h"
 #include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore/busy.h"
@@ -155,10 +156,7 @@ public:
     void draw_frame() {
         const auto frame_start = std::chrono::steady_clock::now();
         // 1. Input: files dropped on the window, ImGui's new frame with this frame's keys.
-        for (const std::string& path : window_.events().dropped) {
-            if (is_brdf_path(path)) e_.commands.push(command::OpenBrdf{path});
-            else e_.commands.push(command::LoadScene{path, true});  // a failed drop shows a dialog
-        }
+        for (Command& command : dropped_files_commands(window_.events().dropped)) e_.commands.push(std::move(command));
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();

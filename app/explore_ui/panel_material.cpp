@@ -182,15 +182,37 @@ bool material_editor(Material& material, std::string& action) {
     return changed;
 }
 
+namespace {
+
+// A mesh's materials from its model file, by the file's names: which one the panel edits.
+void model_file_material_combo(Explorer& explorer, int group) {
+    const Object& object = explorer.doc.scene.objects[std::size_t(explorer.view.selected_object)];
+    auto label = [&](std::size_t i) {
+        const GroupMaterial& g = object.groups[i];
+        return (g.name.empty() ? "(unnamed)" : g.name) + (g.overridden ? "  (edited)" : "");
+    };
+    if (ImGui::BeginCombo("file material", label(std::size_t(group)).c_str())) {
+        for (std::size_t i = 0; i < object.groups.size(); ++i)
+            if (ImGui::Selectable(label(i).c_str(), int(i) == group)) explorer.view.selected_group = int(i);
+        ImGui::EndCombo();
+    }
+    tooltip("The model file's materials by their names; an edited one is saved in the scene's \"materials\".");
+}
+
+}  // namespace
+
 void material_section(Explorer& explorer) {
     Material* material = selected_material(explorer);
     if (!material) return;
     ImGui::TextWrapped("object %d of %zu (choose in Objects)", explorer.view.selected_object,
                 explorer.doc.scene.objects.size());
+    const int group = selected_group(explorer);
+    if (group >= 0) model_file_material_combo(explorer, group);
     brdf_material_note(explorer, *material);
     Material edited = *material;
     std::string action;
-    if (material_editor(edited, action)) explorer.commands.push(command::SetMaterial{explorer.view.selected_object, edited, action});
+    if (material_editor(edited, action))
+        explorer.commands.push(command::SetMaterial{explorer.view.selected_object, edited, action, group});
     else if (material->model().family == Family::metal) {
         // docs/spec.md#72-measured-metals: what assumption 3 costs, side by side.
         if (ImGui::Button("A/B: F(\u03bb, 0) vs full eq. 19")) explorer.commands.push(command::CompareFresnel{});

@@ -74,6 +74,8 @@ void draw_dialogs(Explorer& explorer);
 // material (its file, the last error in red): panel_brdf.cpp.
 void open_brdf_dialog(Explorer& explorer);
 void brdf_material_note(const Explorer& explorer, const Material& material);
+// File > Add model...'s dialog: a model file's path (model_dialog.cpp).
+void add_model_dialog(Explorer& explorer);
 // The "Spectra" window (View menu): the Spectra section's plot, larger, docked as the BRDF views are.
 void draw_spectra(Explorer& explorer, float x, float y, float width, float height);
 // The "BRDF views" window: slice, albedo and 3D lobe of the selected material (panel_brdf_views.cpp).

@@ -106,12 +106,15 @@
 
   // Picked files: every file into the work folder, then the scene (or the
   // one .brdf) opened, so a scene finds the .brdf and model files (.obj, .mtl,
-  // .gltf, .glb, .bin) picked with it.
+  // .gltf, .glb, .bin) picked with it; a model file picked without a scene
+  // (with its .mtl or .bin) is added to the scene, standing on the floor.
   async function openFiles(files) {
     const list = Array.from(files);
     if (list.some((f) => f.name === 'assignment.json')) return practiseFiles(list);
     for (const file of list) writeWorkFile(file.name, new Uint8Array(await file.arrayBuffer()));
-    const scene = list.find((f) => f.name.endsWith('.json')) || list.find((f) => !f.name.endsWith('.brdf')) || list[0];
+    const isModel = (f) => /\.(obj|gltf|glb)$/i.test(f.name);
+    const scene = list.find((f) => f.name.endsWith('.json')) || list.find(isModel) ||
+                  list.find((f) => !/\.(brdf|mtl|bin)$/i.test(f.name)) || list[0];
     if (!scene) return;
     // A chooser gives names without folders: a .brdf or model file the scene
     // names in a subfolder ("brdfs/my.brdf", "meshes/vase.obj") and that was
@@ -141,6 +144,16 @@
     work.finally(() => { --filesInFlight; ++filesHandled; });
   }
   fileInput.addEventListener('change', () => { reading(openFiles(fileInput.files)); fileInput.value = ''; });
+  // Files dropped on the explorer go where picked files go (the work folder,
+  // not GLFW's own folder), so a saved scene and a share link name and carry
+  // them as picked ones: a scene, a .brdf, or a model file (with its .mtl or .bin).
+  canvas.addEventListener('dragover', (e) => e.preventDefault());
+  window.addEventListener('drop', (e) => {
+    if (e.target !== canvas || !e.dataTransfer || !e.dataTransfer.files.length) return;
+    e.preventDefault();
+    e.stopPropagation();  // before GLFW's handler on the canvas
+    reading(openFiles(e.dataTransfer.files));
+  }, true);
 
   // Practice mode from the student's own copy of an assignment: its folder
   // (Practise…, a folder chooser) or its files (Open… with assignment.json
@@ -284,7 +297,7 @@
     },
     started: () => {
       message.remove();
-      say('ready: drop a scene or .brdf file on the explorer, or use Open…');
+      say('ready: drop a scene, .brdf or model file on the explorer, or use Open…');
       if (startError) showError(startError);
       canvas.focus();
       started();

@@ -2,6 +2,7 @@
 // controls). Each is synchronous here; page.js wraps them in Promises. A
 // returned string lives until the next call of the same function.
 #include "app/web/page.h"
+#include "explore/add_model.h"
 #include "explore/apply.h"
 #include "explore/brdf_files.h"
 #include "explore/explorer.h"
@@ -58,8 +59,9 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_load_scene(const char* path) {
     return result.c_str();
 }
 
-// A picked or dropped file: a .brdf opens on the selected object, anything
-// else loads as a scene. "" or the error (also shown in the explorer).
+// A picked or dropped file: a .brdf opens on the selected object, a model
+// file (.obj, .gltf, .glb) is added standing on the floor, anything else
+// loads as a scene. "" or the error (also shown in the explorer).
 EMSCRIPTEN_KEEPALIVE const char* m3055_open_file(const char* path) {
     static std::string result;
     result.clear();
@@ -67,8 +69,7 @@ EMSCRIPTEN_KEEPALIVE const char* m3055_open_file(const char* path) {
     if (!s) return result.assign("m3055: the explorer did not start").c_str();
     explore::Explorer& explorer = s->explorer();
     const bool brdf = explore::is_brdf_path(path);
-    const bool ok = brdf ? explore::run_command(explorer, explore::command::OpenBrdf{path})
-                         : explore::run_command(explorer, explore::command::LoadScene{path, true});
+    const bool ok = explore::run_command(explorer, explore::dropped_file_command(path));
     const explore::Messages& messages = explorer.session.messages;
     if (!ok) result = brdf ? messages.brdf_error : messages.load_error;
     explorer.session.render_needed = true;

@@ -48,6 +48,7 @@ struct Model {
     std::vector<FileMaterial> materials; // one per group, in the file's order
     dvec3 lo{0.0}, hi{0.0};              // the bounding box of the positions
     std::vector<std::string> notes;      // what was ignored (textures), one line each
+    std::vector<std::string> side_files; // the files it named that were read (.mtl, .bin), as named, each once
     std::size_t triangles() const { return indices.size() / 3; }
 };
 

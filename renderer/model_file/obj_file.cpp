@@ -7,7 +7,9 @@
 #define TINYOBJLOADER_USE_DOUBLE
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -99,6 +101,39 @@ FileMaterial file_material(const tinyobj::material_t& m) {
 
 std::string count_text(std::size_t n) { return std::to_string(n); }
 
+// The 1-based line of the first face corner whose vertex (`normals`: normal)
+// index is past the file's `total` (or before the first, counting back from
+// a negative index), 0 when none: tinyobjloader keeps no line numbers, so a
+// bad index is found again this way, on the error's path only.
+std::size_t line_of_bad_index(const std::string& bytes, bool normals, std::size_t total) {
+    std::istringstream in(bytes);
+    std::string text;
+    std::int64_t seen = 0;  // vertices (or normals) defined so far: a negative index counts back from here
+    for (std::size_t line = 1; std::getline(in, text); ++line) {
+        std::istringstream words(text);
+        std::string key;
+        words >> key;
+        if (key == (normals ? "vn" : "v")) ++seen;
+        if (key != "f") continue;
+        for (std::string corner; words >> corner;) {
+            std::string field = corner;
+            if (normals) {  // v/vt/vn or v//vn: the third field
+                field = std::count(corner.begin(), corner.end(), '/') == 2 ? corner.substr(corner.rfind('/') + 1) : "";
+            } else {
+                field = corner.substr(0, corner.find('/'));
+            }
+            if (field.empty()) continue;
+            char* end = nullptr;
+            const long long index = std::strtoll(field.c_str(), &end, 10);
+            const long long resolved = index < 0 ? seen + index + 1 : index;
+            if (resolved < 1 || resolved > static_cast<long long>(total)) return line;
+        }
+    }
+    return 0;
+}
+
+std::string at_line(std::size_t line) { return line ? "line " + std::to_string(line) + ": " : ""; }
+
 }  // namespace
 
 Soup parse_obj(const std::string& bytes, const SideFileReader& side_files, std::size_t max_triangles) {
@@ -164,11 +199,13 @@ Soup parse_obj(const std::string& bytes, const SideFileReader& side_files, std::
             for (std::size_t k = 0; k < n; ++k) {
                 const tinyobj::index_t& index = mesh.indices[next + k];
                 if (index.vertex_index < 0 || std::size_t(index.vertex_index) >= n_positions)
-                    throw ModelError("a face names vertex " + std::to_string(std::int64_t(index.vertex_index) + 1) +
-                                     ", but the file has " + count_text(n_positions) + " vertices");
+                    throw ModelError(at_line(line_of_bad_index(bytes, false, n_positions)) + "a face names vertex " +
+                                     std::to_string(std::int64_t(index.vertex_index) + 1) + ", but the file has " +
+                                     count_text(n_positions) + " vertices");
                 if (index.normal_index >= 0 && std::size_t(index.normal_index) >= n_normals)
-                    throw ModelError("a face names normal " + std::to_string(std::int64_t(index.normal_index) + 1) +
-                                     ", but the file has " + count_text(n_normals) + " normals");
+                    throw ModelError(at_line(line_of_bad_index(bytes, true, n_normals)) + "a face names normal " +
+                                     std::to_string(std::int64_t(index.normal_index) + 1) + ", but the file has " +
+                                     count_text(n_normals) + " normals");
                 corners.push_back({std::uint32_t(index.vertex_index), index.normal_index});
             }
             next += n;

@@ -7,6 +7,7 @@
 #include "scene/load.h"
 #include "scene/shape_limits.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
 
@@ -34,18 +35,23 @@ std::shared_ptr<const model_file::Model> load_model(const Node& file_node, const
     try {
         const model_file::Format format = model_file::format_of(found.shown);
         const std::string bytes = io::read_input_file(found, model_file::kMaxModelBytes);
+        std::vector<std::string> side_files;
         const model_file::SideFileReader side = [&](const std::string& name) {
             std::string problem;
             const io::InputPath side_file = referenced_by_file(name, found, files, kSideFileWhat, problem);
             if (!problem.empty()) throw model_file::ModelError(text::quote_name(name) + ": " + problem);
+            std::string content;
             try {
-                return io::read_input_file(side_file, model_file::kMaxModelBytes);
+                content = io::read_input_file(side_file, model_file::kMaxModelBytes);
             } catch (const io::InputError& e) {
                 throw model_file::ModelError(e.what());
             }
+            if (std::find(side_files.begin(), side_files.end(), name) == side_files.end()) side_files.push_back(name);
+            return content;
         };
         auto model = std::make_shared<model_file::Model>(
             model_file::parse_model(bytes, format, side, kMaxSceneTriangles));
+        model->side_files = std::move(side_files);
         for (const std::string& note : model->notes) {
             const std::string line = file_node.source() + ": " + file_node.path() + ": " + shown + ": " + note;
             if (files.context.note) files.context.note(line);
@@ -159,7 +165,8 @@ void read_mesh_file(const Node& node, const SceneFiles& files, Object& object) {
 }
 
 void write_mesh_file(const Object& object, const PathWriting& writing, json& entry) {
-    entry["file"] = written_path(object.file, writing);
+    const std::string& models_folder = writing.model_files_relative_to;
+    entry["file"] = written_path(object.file, models_folder.empty() ? writing : PathWriting{models_folder, {}});
     if (object.groups.empty()) {
         entry["material"] = material_json(object.material, writing);
         return;

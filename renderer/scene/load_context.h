@@ -44,9 +44,13 @@ struct PathWriting {
     // relative to it (the page, app/web/: the user's own names, so a download
     // renders next to its files), one outside it absolutely.
     std::string relative_to;
+    // Model files (a mesh's "file") relative to this folder instead, "" as
+    // relative_to: the desktop explorer names them from the saved scene's
+    // folder, so a scene saved beside its model renders where it is moved.
+    std::string model_files_relative_to;
 
     static PathWriting absolute() { return {}; }
-    static PathWriting relative_to_folder(std::string folder) { return {std::move(folder)}; }
+    static PathWriting relative_to_folder(std::string folder) { return {std::move(folder), {}}; }
 };
 
 }  // namespace m3055

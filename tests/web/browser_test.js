@@ -440,6 +440,40 @@ async function realInput(browser, base) {
   execFileSync(m3055, ['render', '--scene', path.join(modelDir, 'vase.json'), '--out', path.join(work, 'vase-picked.png')]);
   check(vasePng.equals(fs.readFileSync(path.join(work, 'vase-picked.png'))),
     `${backend}: vase.json picked with vase.obj and vase.mtl shows what m3055 render draws of it`);
+
+  // The vase's OBJ and MTL dropped on the explorer: the DevTools protocol drops
+  // no file contents, so a DataTransfer of the two files is dispatched on the
+  // canvas, as a browser's drop gives it. A second vase stands on the floor
+  // (the plane at y = -1), and the share link carries both files: its scene,
+  // unpacked with them, renders as the page shows it.
+  const dropBefore = await page.evaluate(() => window.m3055.filesHandled());
+  const dropped = ['vase.obj', 'vase.mtl'].map((f) => [f, fs.readFileSync(path.join(modelDir, f)).toString('base64')]);
+  await page.evaluate((files) => {
+    const transfer = new DataTransfer();
+    for (const [name, base64] of files)
+      transfer.items.add(new File([Uint8Array.from(atob(base64), (c) => c.charCodeAt(0))], name));
+    document.getElementById('canvas').dispatchEvent(
+      new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+  }, dropped);
+  await page.waitForFunction((n) => window.m3055.filesHandled() > n, { timeout: 60000 }, dropBefore);
+  await settle(page);
+  await page.screenshot({ path: path.join(out, `${backend}-model-dropped.png`) });
+  const droppedPng = pngOf(await page.evaluate(() => window.m3055.displayPNG()));
+  const dropLink = await page.evaluate(() => window.m3055.shareLink());
+  const bundle = JSON.parse(zlib.inflateSync(Buffer.from(new URLSearchParams(dropLink.split('#')[1]).get('scene'), 'base64url')));
+  const dropFolder = path.join(work, 'shared-drop');
+  fs.mkdirSync(dropFolder, { recursive: true });
+  for (const [name, base64url] of Object.entries(bundle.model_files || {}))
+    fs.writeFileSync(path.join(dropFolder, name), Buffer.from(base64url, 'base64url'));
+  fs.writeFileSync(path.join(dropFolder, 'scene.json'), JSON.stringify(bundle.scene));
+  const objects = bundle.scene.objects || [];
+  const added = objects[objects.length - 1] || {};
+  execFileSync(m3055, ['render', '--scene', path.join(dropFolder, 'scene.json'), '--out', path.join(dropFolder, 'scene.png')]);
+  check(objects.length === 3 && added.shape === 'mesh' && added.file === 'vase.obj' &&
+        Object.keys(bundle.model_files || {}).sort().join() === 'vase.mtl,vase.obj' &&
+        droppedPng.equals(fs.readFileSync(path.join(dropFolder, 'scene.png'))) && !droppedPng.equals(vasePng),
+    `${backend}: vase.obj and vase.mtl dropped on the explorer add a second vase, and its share link carries them ` +
+    `(${objects.length} objects, file ${added.file}, model_files ${Object.keys(bundle.model_files || {}).join(' ')})`);
   await page.close();
 
   // Practice mode: the page's live grade of the start scene equals m3055 grade's.
