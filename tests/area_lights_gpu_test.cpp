@@ -105,6 +105,28 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
 
 std::string param_name(const ::testing::TestParamInfo<Case>& info) { return case_name(info.param); }
 
+// A directional, point or spot light's shadow with no area light in the scene:
+// one ray a pixel, a hard shadow (the programs take shadows without the area
+// lights' sampling code).
+TEST(HardShadowOnTheGpu, MatchesTheReferenceWithoutAreaLights) {
+    const nlohmann::json lights[] = {
+        {{"type", "directional"}, {"direction", {0.5, 0.7, 0.4}}, {"intensity", 1.0}},
+        {{"type", "point"}, {"position", {1.5, 2.5, 1.5}}, {"intensity", 6.0}},
+        {{"type", "spot"}, {"position", {-1.0, 3.0, 1.5}}, {"spot_direction", {0.3, -1.0, -0.4}}, {"spot_exponent", 4},
+         {"intensity", 6.0}},
+    };
+    for (const nlohmann::json& light : lights) {
+        const Scene scene = lit_scene({light["type"], light}, kMaterials[0], true);
+        const test::Comparison c = test::compare_gpu_with_reference(scene);
+        std::cout << light["type"].get<std::string>() << " shadow: " << c.describe() << "\n";
+        SCOPED_TRACE(light["type"].get<std::string>() + ": " + c.describe());
+        EXPECT_EQ(c.nonfinite_values, 0);
+        EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
+        EXPECT_LE(std::abs(c.mean_signed_diff), kBias);
+        EXPECT_GE(c.same_level_share, kSameLevelShare);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryLightEveryFamily, AreaLightOnTheGpu,
                          ::testing::Combine(::testing::Range(0, 3), ::testing::Range(0, 5), ::testing::Bool()),
                          param_name);

@@ -248,9 +248,14 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
     return s;
 }
 
-// V: towards the viewer; LOBE: the model's lobe_exponent (area lights draw samples from it too).
+// V: towards the viewer; LOBE: the model's lobe_exponent (area lights draw samples from it too;
+// without them it is left unexpanded: lobe_exponent exists only with area lights).
 // (One line: GLSL 3.30 and ES 3.00 have no line continuation.)
+#ifdef HAS_AREA_LIGHTS
 #define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, LOBE); light_walk_.k < light_walk_.n; ++light_walk_.k)
+#else
+#define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, 0.0); light_walk_.k < light_walk_.n; ++light_walk_.k)
+#endif
 #define light_sample_of(i, P, N) light_walk_sample(i, light_walk_, P, N)
 #else
 #define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE)
