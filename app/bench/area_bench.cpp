@@ -30,12 +30,12 @@ struct Setting {
 // exponent under a rect or the sky is integrated exactly.
 const Setting kSettings[] = {
     {"fast preview (explorer)", kFastSampling},
-    {"2 x 2 samples, 2 x 2 probe", {2, 2, true}},
-    {"4 x 4 samples, 3 x 3 probe", {4, 3, true}},
-    {"8 x 8 samples, 3 x 3 probe, no lobe closed form", {8, 3, false}},
+    {"2 x 2 samples, 2 x 2 probe", {2, 2}},
+    {"4 x 4 samples, 3 x 3 probe", {4, 3}},
     {"8 x 8 samples, 3 x 3 probe (render)", kRenderSampling},
-    {"12 x 12 samples, 3 x 3 probe", {12, 3, true}},
-    {"16 x 16 samples, 3 x 3 probe", {16, 3, true}},
+    {"8 x 8 samples, 3 x 3 probe, lobe closed form", {8, 3, true}},
+    {"12 x 12 samples, 3 x 3 probe", {12, 3}},
+    {"16 x 16 samples, 3 x 3 probe", {16, 3}},
 };
 
 struct Errors {

@@ -9,7 +9,8 @@
 // The recurrence, from the sphere's Laplacian of (D.u)^k over the polygon and
 // Green's theorem on its boundary (m_i each edge's plane normal, inwards):
 //     I_k = (k - 1) / (k + 1) I_{k-2} + 1 / (k + 1) sum_i (D . m_i) F_{i,k-1},
-//     I_0 = the solid angle, I_1 = Lambert's formula about D,
+//     I_0 = the solid angle, I_1 = Lambert's formula about D
+// (its factors telescope: clipped_lobe_integral sums each edge's F_j alone),
 // and along an edge of length T, f(t) = D . u(t) = a cos t + b sin t:
 //     F_j = ((j - 1) (a^2 + b^2) F_{j-2} - [f^{j-1} f']_0^T) / j, F_0 = T.
 // Precision: float keeps the sum to about 1e-6 of the lobe's whole integral
@@ -71,51 +72,39 @@ float clipped_lobe_integral(vec3 v[kLobePolygonMax], int count, vec3 inside, vec
     }
     if (n > 1 && length(cross(u[n - 1], u[0])) <= 1e-6) --n;
     if (n < 3) return 0.0;
-    // Each edge: its length, D . m (m its plane's normal, inwards), f and f' at both ends.
-    float len[kLobePolygonMax], Dm[kLobePolygonMax], f0[kLobePolygonMax], df0[kLobePolygonMax];
-    float f1[kLobePolygonMax], df1[kLobePolygonMax], F[kLobePolygonMax];
-    vec3 m[kLobePolygonMax];
+    // The recurrence's factors telescope: I_e = (I_0 [e even] + sum over edges of
+    // (D . m) sum_{j = e - 1, e - 3, ... >= 0} F_j) / (e + 1). So each edge is
+    // walked alone, its F_j in scalars (arrays indexed in loops are slow on llvmpipe).
+    bool odd = e % 2 == 1;
+    float sum = 0.0, turns = 0.0;
+    vec3 m_first = vec3(0.0), m_before = vec3(0.0);
     for (int i = 0; i < n; ++i) {
-        vec3 a = u[i], b = u[(i + 1) % n];
+        vec3 a = u[i], b = u[i + 1 < n ? i + 1 : 0];
         vec3 axb = cross(a, b);
         float s = length(axb);
-        len[i] = atan(s, dot(a, b));
-        m[i] = winding * axb / s;
-        Dm[i] = dot(D, m[i]);
-        f0[i] = dot(D, a);
-        df0[i] = winding * dot(D, cross(m[i], a));
-        f1[i] = dot(D, b);
-        df1[i] = winding * dot(D, cross(m[i], b));
-    }
-    bool odd = e % 2 == 1;
-    float I = 0.0;  // I_{-1} (its weight is 0) or I_0, the solid angle by Gauss-Bonnet
-    if (!odd) {
-        float turns = 0.0;
-        for (int i = 0; i < n; ++i) {
-            vec3 before = m[(i + n - 1) % n];
-            turns += atan(length(cross(before, m[i])), dot(before, m[i]));
+        float len = atan(s, dot(a, b));
+        vec3 m = winding * axb / s;  // the edge's plane normal, inwards
+        if (i == 0) m_first = m;
+        else turns += atan(length(cross(m_before, m)), dot(m_before, m));
+        m_before = m;
+        // f = D . u along the edge, and f' (the tangent at a towards b, and at b onwards).
+        float f0 = dot(D, a), df0 = winding * dot(D, cross(m, a));
+        float f1 = dot(D, b), df1 = winding * dot(D, cross(m, b));
+        float c2 = f0 * f0 + df0 * df0;
+        float F = odd ? len : f0 * sin(len) + df0 * (1.0 - cos(len));  // F_0 or F_1
+        float power0 = odd ? f0 : f0 * f0, power1 = odd ? f1 : f1 * f1;  // f^{j-1} at both ends for the next j
+        float edge_sum = F;
+        for (int j = odd ? 2 : 3; j < e; j += 2) {
+            F = (float(j - 1) * c2 * F - (power1 * df1 - power0 * df0)) / float(j);
+            power0 *= f0 * f0;
+            power1 *= f1 * f1;
+            edge_sum += F;
         }
-        I = 2.0 * PI - turns;
+        sum += dot(D, m) * edge_sum;
     }
-    float power0[kLobePolygonMax], power1[kLobePolygonMax];  // f^{j-1} at both ends for the next j
-    for (int i = 0; i < n; ++i) {
-        F[i] = odd ? len[i] : f0[i] * sin(len[i]) + df0[i] * (1.0 - cos(len[i]));  // F_0 or F_1
-        power0[i] = odd ? f0[i] : f0[i] * f0[i];
-        power1[i] = odd ? f1[i] : f1[i] * f1[i];
+    if (!odd) {  // I_0, the solid angle by Gauss-Bonnet: 2 pi less the turns at the corners
+        turns += atan(length(cross(m_before, m_first)), dot(m_before, m_first));
+        sum += 2.0 * PI - turns;
     }
-    for (int k = odd ? 1 : 2; k <= e; k += 2) {
-        int j = k - 1;  // F holds F_j
-        float boundary = 0.0;
-        for (int i = 0; i < n; ++i) {
-            if (j >= 2) {
-                float c2 = f0[i] * f0[i] + df0[i] * df0[i];
-                F[i] = (float(j - 1) * c2 * F[i] - (power1[i] * df1[i] - power0[i] * df0[i])) / float(j);
-                power0[i] *= f0[i] * f0[i];
-                power1[i] *= f1[i] * f1[i];
-            }
-            boundary += Dm[i] * F[i];
-        }
-        I = (float(k - 1) * I + boundary) / float(k + 1);
-    }
-    return I;
+    return sum / float(e + 1);
 }

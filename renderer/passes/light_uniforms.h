@@ -24,7 +24,8 @@ struct AreaSampling {
     int shadow = 3;
     // A highlight of whole exponent under a rect or the sky integrated exactly
     // (glsl/common/lobe_moment.glsl); off: the samples scaled by E / E_s alone.
-    bool lobe_closed_form = true;
+    // Off in the render: on llvmpipe it costs far more than the samples (docs/lights.md).
+    bool lobe_closed_form = false;
     bool operator==(const AreaSampling& o) const {
         return light == o.light && shadow == o.shadow && lobe_closed_form == o.lobe_closed_form;
     }
