@@ -8,8 +8,8 @@
 //   - unbiased: the mean of gpu - ref within 3e-4 (a missed occluder, a
 //     wrong pdf or a lost sample shows here);
 //   - the noise of the samples: mean |gpu - ref| <= 1e-3 and >= 97 % of pixels
-//     on the same level, except the sky's shadow (its visibility from 64
-//     rays a pixel): mean |diff| <= 6e-3.
+//     on the same level, except the sky's shadow (a ray for each of its
+//     samples, 80 a pixel): mean |diff| <= 6e-3.
 // docs/lights.md has the measured errors of each case, and how far they are
 // from docs/spec.md's target (99.5 % on the same level, none more than one off).
 #include "gpu_compare.h"
