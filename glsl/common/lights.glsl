@@ -92,7 +92,7 @@ vec2 light_lobe(int i, int j) {
 #ifdef HAS_SHADOWS
 #include "common/shadows.glsl"
 uniform int u_light_shadow[MAX_LIGHTS];  // 1: the light casts shadows
-uniform int u_shadow_samples;            // an area light's penumbra: this squared rays
+uniform int u_shadow_samples;            // a rect's or disk's probe: this squared rays (at most 3 x 3)
 #endif
 #ifdef HAS_AREA_LIGHTS
 #include "common/area_lights.glsl"
@@ -104,8 +104,11 @@ struct LightWalk {
     int k, n;            // the sample, and how many the light has (0: it cannot reach the point)
     int type;
     vec2 rotation;       // the strata's rotation (area lights)
-    float ratio;         // area lights: E / E_s (common/area_lights.glsl) x the part seen past the objects; else 1
+    float ratio;         // area lights: E / E_s (common/area_lights.glsl); else 1
+    vec3 exact_pair;     // area lights, with the lobe's closed form: (alpha, beta, lambda) of pair_factor; else 0
+    bool traced;         // area lights: each sample's own shadow ray decides whether it is seen (a penumbra)
     int from_emitter;    // area lights: samples 0 .. from_emitter - 1 drawn from the emitter, the rest from the lobe
+    int lobe_side;       // area lights: the lobe's samples are lobe_side x lobe_side strata
     vec3 lobe_axis;      // V's mirror direction
     float lobe_exponent; // the model's lobe about it (generated/models.glsl: lobe_exponent)
 };
@@ -127,7 +130,7 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
     if (walk.k < walk.from_emitter) {
         s = area_sample(i, walk.type, walk.k, n, walk.rotation, P, N);
     } else {
-        vec2 u = stratum_point(walk.k - walk.from_emitter, n, walk.rotation.yx);
+        vec2 u = stratum_point(walk.k - walk.from_emitter, walk.lobe_side, walk.rotation.yx);
         s = area_sample_towards(i, walk.type, P, N, phong_lobe_direction(u, walk.lobe_axis, walk.lobe_exponent));
     }
     float lobe_pdf = from_lobe > 0 ? phong_lobe_pdf(s.L, walk.lobe_axis, walk.lobe_exponent) : 0.0;
@@ -137,38 +140,60 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
 #endif
 
 #if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
-// Of n x n rays towards area light i, the projected solid angle they stand for
-// (y) and the part of it that reaches the light past the objects (x).
-vec2 seen_share(int i, int type, int n, vec2 rotation, vec3 P, vec3 N) {
-    vec2 share = vec2(0.0);
-    for (int k = 0; k < n * n; ++k) {
-        AreaSample s = area_sample(i, type, k, n, rotation, P, N);
-        float g = s.pdf > 0.0 ? max(dot(N, s.L), 0.0) / s.pdf : 0.0;
-        if (g <= 0.0) continue;
-        share.y += g;
-        if (!occluded(P, N, s.L, s.distance)) share.x += g;
+// Light i's emitter from P: 1 wholly seen, 0 wholly hidden, -1 in part (a
+// penumbra) or not probed. A rect or disk is probed with u_shadow_samples^2
+// rays (at most 3 x 3; 2 x 2 probes missed the edges of penumbrae: 1.6 % of a
+// floor's pixels a level off, docs/lights.md); the sky, large enough that what
+// stands beside a point hides part of it almost everywhere, is never probed.
+float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
+    int probe = min(3, u_shadow_samples);
+    if (type == LIGHT_SKY || u_area_samples <= 1) return -1.0;
+    bool some_seen = false, some_hidden = false;
+    for (int k = 0; k < probe * probe; ++k) {
+        AreaSample s = area_sample(i, type, k, probe, rotation, P, N);
+        if (!(s.pdf > 0.0 && dot(N, s.L) > 0.0)) continue;
+        if (occluded(P, N, s.L, s.distance)) some_hidden = true;
+        else some_seen = true;
+        if (some_seen && some_hidden) return -1.0;
     }
-    return share;
+    if (some_seen == some_hidden) return -1.0;  // no probe above the horizon
+    return some_seen ? 1.0 : 0.0;
+}
+#endif
+
+#ifdef HAS_AREA_LIGHTS
+// Whether light i casts shadows in this program.
+bool casts_shadows(int i) {
+#ifdef HAS_SHADOWS
+    return u_light_shadow[i] != 0;
+#else
+    return false;
+#endif
 }
 
-// The part of area light i that P sees past the objects, weighted as a Lambert
-// surface takes it (projected solid angle). Every sample of the light is
-// scaled by it: the ratio estimator's shadowed / unshadowed (Heitz et al.
-// 2018), exact where the light is wholly seen or wholly hidden. A rect or disk
-// is probed with 3 x 3 rays first, and only where they disagree (a penumbra)
-// are u_shadow_samples^2 traced (2 x 2 probes missed the edges of penumbrae:
-// 1.6 % of a floor's pixels a level off, docs/lights.md). The sky, large
-// enough that what stands beside a point hides part of it almost everywhere,
-// always takes them all.
-float area_visibility(int i, int type, vec2 rotation, vec3 P, vec3 N) {
-    int m = u_shadow_samples;
-    int probe = min(3, m);
-    if (type != LIGHT_SKY && probe < m) {
-        vec2 share = seen_share(i, type, probe, rotation, P, N);
-        if (share.y > 0.0 && (share.x == 0.0 || share.x == share.y)) return share.x / share.y;
-    }
-    vec2 share = seen_share(i, type, m, rotation, P, N);
-    return share.y > 0.0 ? share.x / share.y : 1.0;
+// The highlight's lobe ((D . L)+)^e above N's horizon: what area_exact_lobe integrates.
+float lobe_value(vec3 L, vec3 N, vec3 D, float e) {
+    float c = dot(D, L);
+    return dot(N, L) > 0.0 && c > 0.0 ? pow(c, e) : 0.0;
+}
+
+// A sample's share p of the cosine in cosine + lambda x lobe (lambda = E / A: the
+// two alike in size); 1 - p is the lobe's.
+float cosine_share(float c, float l, float lambda) {
+    float sum = c + lambda * l;
+    return sum > 0.0 ? c / sum : 1.0;
+}
+
+// Where both closed forms apply (a rect or the sky, a highlight of whole
+// exponent), each sample is scaled by alpha p + beta (1 - p) instead of E / E_s:
+// the two factors that make the samples' sums of N . L and of the lobe both
+// exact (E, Lambert's formula, and A, common/lobe_moment.glsl). The estimate is
+// then exact for any mix of the two (a highlight's diffuse and its (R_V . L)^m,
+// Phong's), and the factors tend to 1 as the samples grow, so every other
+// model converges as before: control variates with two closed forms.
+float pair_factor(vec3 exact_pair, vec3 L, vec3 N, vec3 D, float e) {
+    float p = cosine_share(max(dot(N, L), 0.0), lobe_value(L, N, D, e), exact_pair.z);
+    return exact_pair.x * p + exact_pair.y * (1.0 - p);
 }
 #endif
 
@@ -180,7 +205,10 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
     walk.type = int(u_light_vector[i].w);
     walk.rotation = vec2(0.0);
     walk.ratio = 1.0;
+    walk.exact_pair = vec3(0.0);
+    walk.traced = false;
     walk.from_emitter = 1;
+    walk.lobe_side = 1;
     walk.lobe_axis = 2.0 * dot(N, V) * N - V;
     walk.lobe_exponent = lobe;
 #ifdef HAS_AREA_LIGHTS
@@ -193,25 +221,49 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
     walk.from_emitter = n * n;
     // One sample: the emitter's centre (the explorer's fast path), not a random point.
     walk.rotation = n > 1 ? strata_rotation(i) : vec2(0.0);
-    walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? n * n : 0);
+    // A shadowed sky traces every sample (emitter_seen): there its lobe takes a quarter as
+    // many, half the rays (the lobe's closed form keeps the unshadowed part exact).
+    bool traced_sky = walk.type == LIGHT_SKY && casts_shadows(i);
+    walk.lobe_side = traced_sky ? max(n / 2, 1) : n;
+    walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? walk.lobe_side * walk.lobe_side : 0);
 #ifdef HAS_SHADOWS
     if (u_light_shadow[i] != 0) {
-        walk.ratio = area_visibility(i, walk.type, walk.rotation, P, N);
-        if (walk.ratio == 0.0) {
+        float seen = emitter_seen(i, walk.type, walk.rotation, P, N);
+        if (seen == 0.0) {
             walk.n = 0;
             return walk;
         }
+        walk.traced = seen < 0.0;
     }
 #endif
     float exact = area_exact_projected(i, walk.type, P, N);
     if (exact < 0.0) return walk;
+    float exact_lobe = walk.n > walk.from_emitter ? area_exact_lobe(i, walk.type, P, N, walk.lobe_axis, lobe) : -1.0;
+    // Too little of the lobe on the emitter for float to keep its integral (1e-6 of 2 pi / (e + 1)).
+    bool pair = exact > 0.0 && exact_lobe > 1e-3 * 2.0 * PI / (lobe + 1.0);
+    float lambda = pair ? exact / exact_lobe : 0.0;
     float sampled = 0.0;
+    vec4 sums = vec4(0.0);  // sum of weight x (p cos, (1 - p) cos, p lobe, (1 - p) lobe)
     for (LightWalk w = walk; w.k < w.n; ++w.k) {
         float weight;
         AreaSample s = walk_direction(i, w, P, N, weight);
-        sampled += weight * max(dot(N, s.L), 0.0);
+        float c = max(dot(N, s.L), 0.0);
+        sampled += weight * c;
+        if (pair) {
+            float l = lobe_value(s.L, N, walk.lobe_axis, lobe), p = cosine_share(c, l, lambda);
+            sums += weight * vec4(p * c, (1.0 - p) * c, p * l, (1.0 - p) * l);
+        }
     }
-    if (sampled > 0.0) walk.ratio *= exact / sampled;
+    if (sampled > 0.0) walk.ratio = exact / sampled;
+    if (pair) {
+        // alpha sums.x + beta sums.y = E and alpha sums.z + beta sums.w = A.
+        float det = sums.x * sums.w - sums.y * sums.z;
+        float alpha = (exact * sums.w - exact_lobe * sums.y) / det;
+        float beta = (exact_lobe * sums.x - exact * sums.z) / det;
+        // Only where the two are told apart well and both factors stay positive (else E / E_s alone).
+        if (abs(det) > 1e-3 * (sums.x * sums.w + sums.y * sums.z) && alpha > 0.0 && beta > 0.0)
+            walk.exact_pair = vec3(alpha, beta, lambda);
+    }
 #endif
     return walk;
 }
@@ -233,8 +285,17 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
         s.spot = 1.0;
         s.area = true;
         // Nothing from below the horizon, whatever the model does with N . L < 0.
-        bool lit = weight > 0.0 && dot(N, a.L) > 0.0;  // shadows: in walk.ratio
-        s.scale = lit ? u_light_scale[i] * (weight * walk.ratio) : vec3(0.0);
+        bool lit = weight > 0.0 && dot(N, a.L) > 0.0;
+#ifdef HAS_SHADOWS
+        // Each sample its own ray: the shadowed integral's estimate, consistent for every
+        // model (one visibility for the whole light, weighted by N.L, biased a highlight
+        // whose lobe sees the occluders more or less than the cosine does).
+        if (lit && walk.traced) lit = !occluded(P, N, a.L, a.distance);
+#endif
+        float factor = walk.exact_pair.x > 0.0
+                           ? pair_factor(walk.exact_pair, a.L, N, walk.lobe_axis, walk.lobe_exponent)
+                           : walk.ratio;
+        s.scale = lit ? u_light_scale[i] * (weight * factor) : vec3(0.0);
         return s;
     }
 #endif

@@ -273,7 +273,7 @@ void Renderer::set_deadline(std::optional<std::chrono::steady_clock::time_point>
 void Renderer::set_translucent_blend(TranslucentBlend blend) { impl_->blend = blend; }
 TranslucentBlend Renderer::translucent_blend() const { return impl_->blend; }
 void Renderer::set_area_sampling(AreaSampling sampling) {
-    impl_->sampling = {std::max(sampling.light, 1), std::max(sampling.shadow, 1)};
+    impl_->sampling = {std::max(sampling.light, 1), std::max(sampling.shadow, 2), sampling.lobe_closed_form};
 }
 AreaSampling Renderer::area_sampling() const { return impl_->sampling; }
 void Renderer::set_defer_compiles(bool on) { impl_->defer_compiles = on; }

@@ -3,6 +3,7 @@
 #include "geometry/mesh.h"
 #include "scene/area_light.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace m3055 {
@@ -54,8 +55,10 @@ LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_
         u.any_area = u.any_area || area;
         u.any_shadow = u.any_shadow || light.shadow;
         const std::size_t samples = area ? std::size_t(2 * sampling.light * sampling.light) : 1;
-        const std::size_t penumbra = std::size_t(sampling.shadow * sampling.shadow);
-        const std::size_t rays = !light.shadow ? 0 : !area ? 1 : sampling.shadow > 3 ? 9 + penumbra : penumbra;
+        // An area light's shadow: a rect's or disk's probe, then in a penumbra (the sky: always) a ray a sample.
+        const std::size_t side = std::size_t(std::min(sampling.shadow, 3));
+        const std::size_t probe = light.type == LightType::sky ? 0 : side * side;
+        const std::size_t rays = !light.shadow ? 0 : !area || sampling.light <= 1 ? 1 : probe + samples;
         u.work += samples + 10 * rays;
         float lobes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (std::size_t j = 0; j < light.lobes.size() && j < 4; ++j) {
@@ -90,6 +93,7 @@ void upload_lights(const GlApi& gl, unsigned program, const LightUniforms& light
     gl.Uniform1iv(location("u_light_shadow"), lights.count, lights.shadow.data());
     gl.Uniform1i(location("u_area_samples"), lights.sampling.light);
     gl.Uniform1i(location("u_shadow_samples"), lights.sampling.shadow);
+    gl.Uniform1i(location("u_lobe_closed_form"), lights.sampling.lobe_closed_form ? 1 : 0);
 }
 
 }  // namespace m3055

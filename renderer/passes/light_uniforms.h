@@ -13,18 +13,25 @@ namespace m3055 {
 
 // How an area or sky light is sampled (glsl/common/area_lights.glsl): n x n
 // samples of the emitter (and as many of the model's highlight) for the
-// shading (`light`), and, with a shadow, m x m rays (`shadow`; a rect or disk
-// probes 3 x 3 first and traces m x m only in a penumbra). The render's
+// shading (`light`), and, with a shadow, a rect or disk probed with m x m rays
+// (`shadow`, at most 3 x 3), then in a penumbra (the sky: always) one ray for
+// each of the samples. The render's
 // setting and its error against the reference: docs/lights.md. The explorer's
 // preview while a slider moves takes each emitter's centre (n = 1: exact for
 // Lambert terms) and one ray to it (a hard shadow from the centre).
 struct AreaSampling {
     int light = 8;
-    int shadow = 8;
-    bool operator==(const AreaSampling& o) const { return light == o.light && shadow == o.shadow; }
+    int shadow = 3;
+    // A highlight of whole exponent under a rect or the sky integrated exactly
+    // (glsl/common/lobe_moment.glsl); off: the samples scaled by E / E_s alone.
+    // Off in the render: on llvmpipe it costs far more than the samples (docs/lights.md).
+    bool lobe_closed_form = false;
+    bool operator==(const AreaSampling& o) const {
+        return light == o.light && shadow == o.shadow && lobe_closed_form == o.lobe_closed_form;
+    }
     bool operator!=(const AreaSampling& o) const { return !(*this == o); }
 };
-inline constexpr AreaSampling kRenderSampling{8, 8};
+inline constexpr AreaSampling kRenderSampling{8, 3};
 inline constexpr AreaSampling kFastSampling{1, 1};
 
 struct LightUniforms {

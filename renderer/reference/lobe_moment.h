@@ -1,0 +1,25 @@
+// The closed form of a Phong lobe over a spherical polygon: the integral of
+// ((axis . u)+)^n over the directions u of a convex polygon above a point's
+// horizon, n a whole number (Arvo 1995, "Applications of irradiance tensors to
+// the simulation of non-Lambertian phenomena", the axial moments). A highlight
+// (R_V . L)^m under a rect or the sky is such a lobe about V's mirror
+// direction. GLSL twin: glsl/common/lobe_moment.glsl (same names).
+#pragma once
+
+#include "reference/reference.h"
+
+#include <vector>
+
+namespace m3055::ref {
+
+// The integral of ((axis . u)+)^n dw over the directions u towards `corners`
+// (from the origin, in order around a convex spherical polygon within a
+// hemisphere, with `inside` a direction inside it) that lie above the horizons
+// of unit N and unit `axis`; n >= 1.
+double clipped_lobe_integral(const std::vector<dvec3>& corners, const dvec3& inside, const dvec3& N,
+                             const dvec3& axis, int n);
+
+// The sky's hemisphere about unit `up` as a polygon (inside it: up): four quarters of its horizon.
+std::vector<dvec3> hemisphere_corners(const dvec3& up);
+
+}  // namespace m3055::ref

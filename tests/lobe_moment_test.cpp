@@ -1,0 +1,130 @@
+// The closed form of a Phong lobe over a spherical polygon (reference/lobe_moment.h)
+// against what it must equal: Lambert's formula for the cosine about N, the
+// hemisphere's moments, and Gauss-Legendre quadrature over a rect and over the
+// sky for sharp and wide lobes, odd and even exponents, the lobe's horizon
+// across the emitter.
+#include "reference/lobe_moment.h"
+
+#include "reference/emitters.h"
+
+#include "numeric/angles.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace m3055::ref {
+namespace {
+
+using numeric::kPi;
+
+// Composite Gauss-Legendre (5 points on each of `panels` panels) of g over [a, b].
+double gauss(const std::function<double(double)>& g, double a, double b, int panels) {
+    static const double x[5] = {0.0, 0.5384693101056831, -0.5384693101056831, 0.9061798459386640,
+                                -0.9061798459386640};
+    static const double w[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
+                                0.2369268850561891};
+    const double h = (b - a) / panels;
+    double sum = 0.0;
+    for (int p = 0; p < panels; ++p)
+        for (int i = 0; i < 5; ++i) sum += 0.5 * h * w[i] * g(a + h * (p + 0.5 + 0.5 * x[i]));
+    return sum;
+}
+
+double lobe(const dvec3& u, const dvec3& N, const dvec3& axis, int n) {
+    return glm::dot(N, u) > 0.0 && glm::dot(axis, u) > 0.0 ? std::pow(glm::dot(axis, u), n) : 0.0;
+}
+
+// The lobe over the rect c + s e0 + t e1 (s, t in [-1, 1]) seen from the origin, by its area.
+double rect_by_quadrature(const dvec3& c, const dvec3& e0, const dvec3& e1, const dvec3& N, const dvec3& axis,
+                          int n) {
+    const dvec3 normal = glm::normalize(glm::cross(e0, e1));
+    const double jacobian = glm::length(glm::cross(e0, e1));
+    return gauss([&](double s) {
+        return gauss([&](double t) {
+            const dvec3 X = c + s * e0 + t * e1;
+            const double d2 = glm::dot(X, X);
+            const dvec3 u = X / std::sqrt(d2);
+            return lobe(u, N, axis, n) * std::fabs(glm::dot(u, normal)) * jacobian / d2;
+        }, -1.0, 1.0, 64);
+    }, -1.0, 1.0, 64);
+}
+
+// The lobe over the hemisphere about +z, in latitude and longitude.
+double hemisphere_by_quadrature(const dvec3& axis, int n) {
+    const dvec3 up(0, 0, 1);
+    return gauss([&](double theta) {
+        return gauss([&](double phi) {
+            const dvec3 u(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            return lobe(u, up, axis, n) * std::sin(theta);
+        }, 0.0, 2.0 * kPi, 128);
+    }, 0.0, 0.5 * kPi, 64);
+}
+
+std::vector<dvec3> rect(const dvec3& c, const dvec3& e0, const dvec3& e1) {
+    return {c - e0 - e1, c + e0 - e1, c + e0 + e1, c - e0 + e1};
+}
+
+TEST(LobeMoment, TheCosineAboutNIsLambertsFormulaForARectAcrossTheHorizon) {
+    const dvec3 c(0.4, 0.3, 1.2), e0(0.9, 0.0, 0.3), e1(0.0, 0.8, -0.5);
+    const dvec3 N = glm::normalize(dvec3(0.9, 0.2, 0.2));
+    const std::vector<dvec3> corners = rect(c, e0, e1);
+    // The horizon of N crosses the rect: clipping is part of what is checked.
+    int above = 0;
+    for (const dvec3& q : corners) above += glm::dot(q, N) > 0.0;
+    ASSERT_GT(above, 0);
+    ASSERT_LT(above, 4);
+    std::vector<dvec3> above_horizon;  // Sutherland-Hodgman, as Lambert's formula wants it
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const dvec3 &a = corners[i], &b = corners[(i + 1) % corners.size()];
+        const double ha = glm::dot(a, N), hb = glm::dot(b, N);
+        if (ha >= 0.0) above_horizon.push_back(a);
+        if ((ha >= 0.0) != (hb >= 0.0)) above_horizon.push_back(a + (ha / (ha - hb)) * (b - a));
+    }
+    EXPECT_NEAR(clipped_lobe_integral(corners, c, N, N, 1),
+                polygon_projected_solid_angle(above_horizon, dvec3(0.0), N), 1e-12);
+    // Either order of the corners.
+    const std::vector<dvec3> reversed(corners.rbegin(), corners.rend());
+    EXPECT_NEAR(clipped_lobe_integral(reversed, c, N, N, 1), clipped_lobe_integral(corners, c, N, N, 1), 1e-12);
+}
+
+TEST(LobeMoment, TheHemisphereHasItsKnownMoments) {
+    const dvec3 up = glm::normalize(dvec3(0.2, 0.9, -0.3));
+    for (int n : {1, 2, 3, 6, 15}) {
+        // The integral of cos^n over the hemisphere about its pole: 2 pi / (n + 1).
+        EXPECT_NEAR(clipped_lobe_integral(hemisphere_corners(up), up, up, up, n), 2.0 * kPi / (n + 1), 1e-12) << n;
+    }
+    // The sky's lune about N (what a Lambert surface sees of it): pi (1 + N.up) / 2.
+    const dvec3 N = glm::normalize(dvec3(0.9, 0.1, 0.4));
+    EXPECT_NEAR(clipped_lobe_integral(hemisphere_corners(up), up, N, N, 1), 0.5 * kPi * (1.0 + glm::dot(N, up)), 1e-12);
+}
+
+TEST(LobeMoment, MatchesQuadratureOverARectWithTheLobesHorizonAcrossIt) {
+    const dvec3 c(0.2, -0.1, 1.0), e0(0.7, 0.1, 0.2), e1(-0.1, 0.5, 0.1);
+    const dvec3 N(0.0, 0.0, 1.0);
+    for (const dvec3& towards : {dvec3(0.3, 0.0, 1.0), dvec3(1.0, 0.2, 0.3), dvec3(-0.4, 0.6, 0.2)}) {
+        const dvec3 axis = glm::normalize(towards);
+        for (int n : {3, 4, 5, 10, 20}) {
+            const double expected = rect_by_quadrature(c, e0, e1, N, axis, n);
+            EXPECT_NEAR(clipped_lobe_integral(rect(c, e0, e1), c, N, axis, n), expected, 1e-7 * std::max(1.0, expected))
+                << "n " << n << ", axis " << axis.x << " " << axis.y << " " << axis.z;
+        }
+    }
+}
+
+TEST(LobeMoment, MatchesQuadratureOverTheSky) {
+    const dvec3 up(0, 0, 1);
+    for (const dvec3& towards : {dvec3(0.3, 0.1, 1.0), dvec3(1.0, 0.2, 0.05), dvec3(-0.4, 0.6, -0.3)}) {
+        const dvec3 axis = glm::normalize(towards);
+        for (int n : {3, 4, 5, 10, 20}) {
+            const double expected = hemisphere_by_quadrature(axis, n);
+            EXPECT_NEAR(clipped_lobe_integral(hemisphere_corners(up), up, up, axis, n), expected, 1e-7)
+                << "n " << n << ", axis " << axis.x << " " << axis.y << " " << axis.z;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace m3055::ref
