@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -379,6 +380,7 @@ void save(Call& c) {
 void screenshot_dir(Call& c) { c.explorer.session.files.screenshot_dir = c.rest(); }
 void capture(Call& c) { c.script.capture_path = c.word(); }
 void idle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames); }
+void settle(Call& c) { c.script.start_idle(c.number(), c.now, c.frames, true); }
 void quit(Call& c) { c.run(command::Quit{}); }
 
 // Command name -> handler (the list in script.h).
@@ -398,6 +400,7 @@ const std::map<std::string, Handler>& commands() {
         {"key", key},               {"screenshot", screenshot},
         {"save", save},             {"capture", capture},
         {"idle", idle},             {"quit", quit},
+        {"settle", settle},
         {"undo", undo_command},     {"redo", redo_command},
         {"copy_b", copy_b},         {"plot_light", plot_light},
         {"plot_scale", plot_scale}, {"probe", probe},
@@ -428,9 +431,12 @@ Script Script::from_file(const std::string& path) {
 
 void Script::step(Explorer& explorer, double now, long frames, int free_width, int free_height) {
     if (idling()) {
-        if (now < idle_until_) return;
-        idle_records_.push_back({idle_seconds_, frames - idle_start_frames_});
-        std::printf("idle %.1f s: %ld frames drawn\n", idle_seconds_, frames - idle_start_frames_);
+        if (now < idle_until_ && !settled(explorer, frames)) return;
+        // A settle that ended early counts the time it took.
+        const double seconds = std::min(idle_seconds_, now - (idle_until_ - idle_seconds_));
+        idle_records_.push_back({seconds, frames - idle_start_frames_});
+        std::printf("%s %.1f s: %ld frames drawn\n", until_settled_ ? "settle" : "idle", seconds,
+                    frames - idle_start_frames_);
         std::fflush(stdout);
         idle_until_ = 0.0;
         return;
@@ -448,10 +454,15 @@ void Script::step(Explorer& explorer, double now, long frames, int free_width, i
     }
 }
 
-void Script::start_idle(double seconds, double now, long frames) {
+void Script::start_idle(double seconds, double now, long frames, bool until_settled) {
     idle_seconds_ = seconds;
     idle_until_ = now + seconds;
     idle_start_frames_ = frames;
+    until_settled_ = until_settled;
+}
+
+bool Script::settled(const Explorer& explorer, long frames) const {
+    return settling() && frames > idle_start_frames_ && explorer.session.busy.empty();
 }
 
 void Script::run(Explorer& explorer, const std::string& line, double now, long frames, int free_width,

@@ -56,6 +56,8 @@
 //   save PATH               scene JSON
 //   capture PATH            a PNG of the whole window after the next frame
 //   idle SECONDS            no input for that long; counts the frames drawn meanwhile
+//   settle SECONDS          no input until the busy line is empty (the displays refined, programs
+//                           compiled, .brdf files reloaded) after a frame, or SECONDS at most
 //   quit                    quit at once (Esc asks first when there are unsaved edits)
 #pragma once
 
@@ -78,6 +80,7 @@ public:
 
     bool finished() const { return next_ >= lines_.size() && !idling(); }
     bool idling() const { return idle_until_ > 0.0; }
+    bool settling() const { return idling() && until_settled_; }
     double idle_until() const { return idle_until_; }
 
     // Runs the next command (or ends an idle period whose time has come).
@@ -88,8 +91,11 @@ public:
     std::string capture_path;
 
     int errors() const { return errors_; }
-    // `idle SECONDS`: no input from now for `seconds`, counting the frames drawn.
-    void start_idle(double seconds, double now, long frames);
+    // `idle SECONDS`: no input from now for `seconds`, counting the frames drawn;
+    // `until_settled`: the idle ends sooner, once a frame has shown an empty busy line.
+    void start_idle(double seconds, double now, long frames, bool until_settled = false);
+    // Whether a `settle` may end now: a frame drawn since it began and nothing busy.
+    bool settled(const Explorer& explorer, long frames) const;
     const std::vector<IdleRecord>& idle_records() const { return idle_records_; }
 
 private:
@@ -103,6 +109,7 @@ private:
     double idle_until_ = 0.0;
     double idle_seconds_ = 0.0;
     long idle_start_frames_ = 0;
+    bool until_settled_ = false;
     std::vector<IdleRecord> idle_records_;
 };
 

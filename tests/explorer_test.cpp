@@ -350,7 +350,7 @@ TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
     scene = std::regex_replace(scene, std::regex("\"height\": 320"), "\"height\": 100");
     test::write_text(dir.file("softbox.json"), scene);
     test::write_text(dir.file("script.txt"), "load softbox.json\nset lights[0].size[0] 2.2\nsave_display preview.png\n"
-                                             "idle 3\nsave_display refined.png\nsave scene.json\n");
+                                             "settle 300\nsave_display refined.png\nsave scene.json\n");
     const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto render = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("r.png")});

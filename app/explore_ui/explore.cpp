@@ -145,7 +145,7 @@ public:
         else if (practice && practice->settle_left(e_.session.practice, window_.time()) >= 0.0) grade_when_settled();
         else if (!e_.session.brdf_watch.reload_pending.empty()) reload_when_idle();  // a script's idle time too
         else if (panes_ && panes_->refining()) refine_when_idle();  // a script's idle time too
-        else if (script_ && script_->idling())
+        else if (script_ && script_->idling() && !script_->settled(e_, info_.frames))
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
         else window_.wait(most < 1e30 ? most : -1.0);
@@ -282,6 +282,7 @@ private:
         // A command asks for a frame; so does the end of a script's last idle
         // (else nothing would draw the frame that takes --capture-window and exits).
         if (!script_->idling() && (!was_idle || script_->finished())) owe_frames(1);
+        if (script_->settling() && !was_idle) owe_frames(1);  // the frame that shows whether anything is busy
         if (!script_->capture_path.empty()) {
             pending_capture_ = script_->capture_path;
             script_->capture_path.clear();
