@@ -115,6 +115,8 @@ Object placed_on_floor(const Scene& scene, Object model) {
     const CameraBasis b = basis_of(scene.camera);
     dvec3 across{b.right.x, 0.0, b.right.z};
     across = glm::length(across) > 1e-12 ? glm::normalize(across) : dvec3(1.0, 0.0, 0.0);
+    dvec3 toward{-b.forward.x, 0.0, -b.forward.z};  // towards the camera, along the floor
+    toward = glm::length(toward) > 1e-12 ? glm::normalize(toward) : dvec3(0.0);
     const double full_size = kViewFraction * view_height_at_target(scene.camera);
     // Smaller where the view is full; where nothing is free, the place in
     // view that overlaps the others least (a model inside another is not in view).
@@ -125,13 +127,16 @@ Object placed_on_floor(const Scene& scene, Object model) {
         model.center = dvec3(0.0);
         const Box own = box_of(model);
         const dvec3 base{scene.camera.target.x, floor - own.lo.y, scene.camera.target.z};
-        for (int k = 0; k <= 16; ++k) {
-            const double offset = (k % 2 == 1 ? 1.0 : -1.0) * double((k + 1) / 2) * 0.25 * full_size;  // 0, +, -, ...
-            model.center = base + across * offset;
-            if (!well_inside_view(scene, b, model.center)) continue;
-            const double overlap = overlap_with_others(scene, {own.lo + model.center, own.hi + model.center});
-            if (overlap <= 0.0) return model;
-            if (overlap < least_overlap) least_overlap = overlap, least = model;
+        // Along the floor's line across the view first, then on lines nearer the camera (in front of the others).
+        for (int row = 0; row <= 3; ++row) {
+            for (int k = 0; k <= 16; ++k) {
+                const double offset = (k % 2 == 1 ? 1.0 : -1.0) * double((k + 1) / 2) * 0.25 * full_size;  // 0, +, -, ...
+                model.center = base + across * offset + toward * (0.5 * full_size * row);
+                if (!well_inside_view(scene, b, model.center)) continue;
+                const double overlap = overlap_with_others(scene, {own.lo + model.center, own.hi + model.center});
+                if (overlap <= 0.0) return model;
+                if (overlap < least_overlap) least_overlap = overlap, least = model;
+            }
         }
     }
     if (least_overlap < std::numeric_limits<double>::infinity()) return least;

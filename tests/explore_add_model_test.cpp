@@ -106,6 +106,32 @@ TEST(ExploreAddModel, BesideAModelThatFillsTheView) {
     EXPECT_NEAR(lowest_y(added), -1.0, 1e-4) << "on the floor plane";
 }
 
+// The three-point floor scene (a turned cube, a cylinder, a torus, spheres): the
+// vase stands clear of every one of them, not inside the turned cube.
+TEST(ExploreAddModel, ClearOfEveryObjectOfTheThreePointFloor) {
+    const fs::path dir = fresh_folder("explore_add_model_three_point");
+    const fs::path vase = copied_vase(dir);
+    Explorer explorer = started();
+    ASSERT_TRUE(run(explorer, command::LoadScene{m3055::test::source_path("scenes/three_point_floor.json")}))
+        << explorer.session.messages.load_error;
+    ASSERT_TRUE(run(explorer, command::AddModel{vase.string()})) << explorer.session.messages.error;
+    const std::vector<Object>& objects = explorer.doc.scene.objects;
+    const auto box = [](const Object& o) {
+        if (o.shape == Shape::sphere) return std::make_pair(o.center - dvec3(o.radius), o.center + dvec3(o.radius));
+        dvec3 lo(1e300), hi(-1e300);
+        for (const dvec3& p : geometry::make_mesh(o).positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        return std::make_pair(lo, hi);
+    };
+    const auto [lo, hi] = box(objects.back());
+    for (std::size_t i = 0; i + 1 < objects.size(); ++i) {
+        if (objects[i].shape == Shape::plane) continue;
+        const auto [other_lo, other_hi] = box(objects[i]);
+        const bool apart = lo.x >= other_hi.x || hi.x <= other_lo.x || lo.y >= other_hi.y || hi.y <= other_lo.y ||
+                           lo.z >= other_hi.z || hi.z <= other_lo.z;
+        EXPECT_TRUE(apart) << "the vase's box meets object " << i << "'s";
+    }
+}
+
 TEST(ExploreAddModel, TheFilesMaterialsAreEditedByName) {
     const fs::path dir = fresh_folder("explore_add_model_materials");
     Explorer explorer = started();
