@@ -38,7 +38,14 @@ void add_model_dialog(Explorer& explorer) {
     }
     ImGui::SameLine();
     const bool escape = !ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-    if (ImGui::Button("Cancel") || escape) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Cancel") || escape) {
+        // The dialog showed why the model was not added; the File section's
+        // "Could not load" is about scenes, and the model is not a problem now.
+        Messages& messages = explorer.session.messages;
+        if (messages.error == messages.load_error) messages.error.clear();
+        messages.load_error.clear();
+        ImGui::CloseCurrentPopup();
+    }
     ImGui::EndPopup();
 }
 
