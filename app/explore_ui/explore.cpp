@@ -48,7 +48,8 @@ namespace m3055 {
 
 using namespace explore;
 
-namespace {
+// Named, not anonymous: ExplorerSession::Parts (declared in the header) holds a FrameLoop.
+namespace frame_loop {
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -514,7 +515,8 @@ private:
     bool window_captured_ = false;   // --capture-window is taken once
 };
 
-}  // namespace
+}  // namespace frame_loop
+using namespace frame_loop;
 
 // ---- One explorer: the starting scene, a window with its GL table, ImGui on it ----
 struct ExplorerSession::Parts {
