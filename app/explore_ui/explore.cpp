@@ -147,6 +147,7 @@ public:
         else if (!e_.session.brdf_watch.reload_pending.empty()) reload_when_idle();  // a script's idle time too
         else if (panes_ && panes_->refining()) refine_when_idle();  // a script's idle time too
         else if (script_ && script_->settled(e_, info_.frames)) window_.poll();  // its step ends the settle
+        else if (script_ && script_->settling() && panes_ && panes_->deferred_programs() > 0) compile_when_idle();
         else if (script_ && script_->idling())
             window_.wait(std::min(most, std::max(0.0, script_->idle_until() - window_.time())));
         else if (panes_ && panes_->deferred_programs() > 0) compile_when_idle();
