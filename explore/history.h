@@ -39,6 +39,7 @@ public:
     bool can_redo() const { return !redo_.empty(); }
     const std::string& undo_label() const { return undo_.back().label; }
     const std::string& redo_label() const { return redo_.back().label; }
+    const Step& undo_step() const { return undo_.back(); }  // the step an undo would revert
     std::size_t undo_steps() const { return undo_.size(); }
     // Moves one step from the undo to the redo list (undo) or back (redo) and returns it.
     const Step& undo();

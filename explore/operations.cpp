@@ -279,6 +279,9 @@ bool apply(Explorer& e, const command::Redo&) {
     const std::string label = e.doc.history.redo_label();
     redo(e.doc);
     e.session.messages.status = "redid " + label;
+    // An object added again is selected again, as when it was added.
+    for (const Edit& edit : e.doc.history.undo_step().edits)
+        if (const auto* insert = std::get_if<ObjectInsert>(&edit.value)) e.view.selected_object = insert->index;
     after_history_move(e);
     return true;
 }

@@ -75,6 +75,10 @@ TEST(ExploreAddModel, StandsOnTheFloorSelectedAsOneUndoStep) {
     EXPECT_EQ(explorer.doc.history.undo_label(), "add model vase.obj");
     ASSERT_TRUE(run(explorer, command::Undo{}));
     EXPECT_EQ(explorer.doc.scene.objects.size(), before) << "one undo step removes it";
+    explorer.view.selected_object = 0;
+    ASSERT_TRUE(run(explorer, command::Redo{}));
+    EXPECT_EQ(explorer.doc.scene.objects.size(), before + 1);
+    EXPECT_EQ(explorer.view.selected_object, int(before)) << "redone, it is selected again";
 }
 
 TEST(ExploreAddModel, WithoutAPlaneTheFloorIsYZeroAndItOverlapsNothing) {
