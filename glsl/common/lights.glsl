@@ -162,15 +162,6 @@ float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
 #endif
 
 #ifdef HAS_AREA_LIGHTS
-// Whether light i casts shadows in this program.
-bool casts_shadows(int i) {
-#ifdef HAS_SHADOWS
-    return u_light_shadow[i] != 0;
-#else
-    return false;
-#endif
-}
-
 // The highlight's lobe ((D . L)+)^e above N's horizon: what area_exact_lobe integrates.
 float lobe_value(vec3 L, vec3 N, vec3 D, float e) {
     float c = dot(D, L);
@@ -221,10 +212,10 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
     walk.from_emitter = n * n;
     // One sample: the emitter's centre (the explorer's fast path), not a random point.
     walk.rotation = n > 1 ? strata_rotation(i) : vec2(0.0);
-    // A shadowed sky traces every sample (emitter_seen): there its lobe takes a quarter as
-    // many, half the rays (the lobe's closed form keeps the unshadowed part exact).
-    bool traced_sky = walk.type == LIGHT_SKY && casts_shadows(i);
-    walk.lobe_side = traced_sky ? max(n / 2, 1) : n;
+    // A shadowed sky traces every sample (emitter_seen); its lobe keeps n x n of them all the
+    // same: a quarter as many left the shadowed sky 3 levels off in places (the lobe's closed
+    // form, which would keep the unshadowed part exact, is off in the render).
+    walk.lobe_side = n;
     walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? walk.lobe_side * walk.lobe_side : 0);
 #ifdef HAS_SHADOWS
     if (u_light_shadow[i] != 0) {
