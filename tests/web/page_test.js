@@ -124,7 +124,7 @@ module.exports = async function pageTests(browser, base, t) {
       `(${afterCtrlAlt.equals(fig06) ? 'byte for byte' : 'not'})`);
     let chooser = null;
     try {
-      [chooser] = await Promise.all([page.waitForFileChooser({ timeout: 5000 }), chord(page, ['Control', 'o'])]);
+      [chooser] = await Promise.all([page.waitForFileChooser({ timeout: 30000 }), chord(page, ['Control', 'o'])]);
       await chooser.cancel();
     } catch (e) { /* no chooser */ }
     check(chooser !== null, `${backend}: Ctrl+O opens the file chooser of Open…`);
