@@ -4,6 +4,7 @@
 // stricter drivers. A missing glslangValidator is a failure, not a skip.
 #include "gl/shader_source.h"
 #include "models/model_table.h"
+#include "passes/light_uniforms.h"
 #include "passes/shader_plan.h"
 #include "passes/translucent_blend.h"
 #include "scene/load.h"
@@ -73,6 +74,17 @@ Light light_of(LightType type, std::vector<Lobe> lobes = {}) {
     return light;
 }
 
+Light shadowed(Light light) {
+    light.shadow = true;
+    return light;
+}
+
+// With the area lights' closed form for a highlight's lobe (AreaSampling::lobe_closed_form).
+std::vector<std::string> lobe_closed_form(std::vector<std::string> defines) {
+    defines.push_back(kLobeClosedFormDefine);
+    return defines;
+}
+
 // Every opaque model of the table (all but the translucent pass's).
 std::vector<std::string> every_opaque_model() {
     std::vector<std::string> names;
@@ -92,6 +104,7 @@ std::vector<ProgramCase> renderer_programs() {
     const Light directional = light_of(LightType::directional);
     const Light beckmann_lobes = light_of(LightType::directional, {{0.01, 0.4}});
     const Light point = light_of(LightType::point), spot = light_of(LightType::spot);
+    const Light rect = light_of(LightType::rect), disk = light_of(LightType::disk), sky = light_of(LightType::sky);
     return {
         {"quantize", "passes/fullscreen.vert", "passes/quantize.frag", {}},
         {"general_opaque", vert, frag, general()},
@@ -111,6 +124,16 @@ std::vector<ProgramCase> renderer_programs() {
         {"mesh_general_translucent", "passes/mesh.vert", "passes/mesh.frag", general(true)},
         {"mesh_general_translucent_two_pass", "passes/mesh.vert", "passes/mesh.frag", two_pass(general(true))},
         {"mesh_highlight_one_light", "passes/mesh.vert", "passes/mesh.frag", specialized({"highlight"}, {directional})},
+        // Rect, disk and sky lights with shadows, and a hard shadow alone.
+        {"area_lights_shadows", vert, frag,
+         specialized(every_opaque_model(), {shadowed(rect), disk, shadowed(sky), shadowed(point)})},
+        {"area_lights_lobe_closed_form", vert, frag,
+         lobe_closed_form(specialized(every_opaque_model(), {shadowed(rect), sky}))},
+        {"area_lights_translucent", vert, frag, specialized({"translucent"}, {shadowed(disk), sky}, true)},
+        {"hard_shadow_alone", "passes/mesh.vert", "passes/mesh.frag",
+         specialized({"highlight"}, {shadowed(directional)})},
+        {"mesh_general_area_lights", "passes/mesh.vert", "passes/mesh.frag",
+         defines_for(ShaderMode::general, {}, {shadowed(rect), sky}, false)},
     };
 }
 

@@ -28,7 +28,9 @@
 // which keeps small angles that acos(a . b) loses.
 
 #include "common/constants.glsl"
+#ifdef HAS_LOBE_CLOSED_FORM  // AreaSampling::lobe_closed_form: off in the render, its code is large
 #include "common/lobe_moment.glsl"
+#endif
 
 #define LIGHT_RECT 3
 #define LIGHT_DISK 4
@@ -36,7 +38,6 @@
 
 uniform vec4 u_light_extent[MAX_LIGHTS * 2];  // rect: half-side vectors; disk: radius x two unit axes
 uniform int u_area_samples;                   // strata along each side of the square (n)
-uniform int u_lobe_closed_form;               // 1: a highlight's lobe integrated exactly where it can be (area_exact_lobe)
 
 // Below this angular size (extent / distance) the samples alone are used.
 const float kExactMinSize = 0.01;
@@ -265,7 +266,10 @@ float area_exact_projected(int i, int type, vec3 P, vec3 N) {
 // here: a disk, a rect below kExactMinSize, e not a whole number in
 // [1, kLobeMomentMaxExponent] (common/lobe_moment.glsl).
 float area_exact_lobe(int i, int type, vec3 P, vec3 N, vec3 D, float e) {
-    if (u_lobe_closed_form == 0 || type == LIGHT_DISK || e < 1.0 || e > float(kLobeMomentMaxExponent) || e != floor(e)) return -1.0;
+#ifndef HAS_LOBE_CLOSED_FORM
+    return -1.0;
+#else
+    if (type == LIGHT_DISK || e < 1.0 || e > float(kLobeMomentMaxExponent) || e != floor(e)) return -1.0;
     vec3 v[kLobePolygonMax];
     vec3 centre = u_light_vector[i].xyz;
     if (type == LIGHT_SKY) {  // the hemisphere about up, four quarters of its horizon, counter-clockwise
@@ -279,6 +283,7 @@ float area_exact_lobe(int i, int type, vec3 P, vec3 N, vec3 D, float e) {
     if (max(length(e0), length(e1)) < kExactMinSize * length(c)) return -1.0;
     v[0] = c - e0 - e1, v[1] = c + e0 - e1, v[2] = c + e0 + e1, v[3] = c - e0 + e1;
     return clipped_lobe_integral(v, 4, c, N, D, int(e));
+#endif
 }
 
 // Whether P is in front of light i's emitter (a sky is in front of every point).

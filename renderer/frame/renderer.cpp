@@ -102,6 +102,17 @@ struct Renderer::Impl {
         });
     }
 
+    // The defines of a pass over `objects` (passes/shader_plan.h), and the lobe's
+    // closed form where the sampling asks for it: compiled only then, as its
+    // code multiplies llvmpipe's compile time and memory by four (docs/lights.md).
+    std::vector<std::string> defines_of(const std::vector<const Object*>& objects, const std::vector<Light>& lights) const {
+        std::vector<std::string> defines = specialization_defines(shader_mode, objects, lights);
+        if (sampling.lobe_closed_form &&
+            std::find(defines.begin(), defines.end(), "HAS_AREA_LIGHTS") != defines.end())
+            defines.push_back(kLobeClosedFormDefine);
+        return defines;
+    }
+
     // The program for `key`; with deferral, a specialized one not built yet is
     // noted and the general program of the same pass stands in (same pixels).
     unsigned program(const ProgramKey& key, bool translucent_pass) {
@@ -109,7 +120,7 @@ struct Renderer::Impl {
             return programs.get(key);
         deferred.insert(key);
         std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
-        for (const char* feature : {"HAS_AREA_LIGHTS", "HAS_SHADOWS"})  // the scene's, as the key has them
+        for (const char* feature : {"HAS_AREA_LIGHTS", "HAS_SHADOWS", kLobeClosedFormDefine})  // as the key has them
             if (std::find(key.defines.begin(), key.defines.end(), feature) != key.defines.end())
                 general.push_back(feature);
         if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
@@ -129,12 +140,12 @@ struct Renderer::Impl {
     // Pass 1: opaque spheres and meshes, with depth.
     void draw_opaque(const Scene& scene, const SphereSets& sets, const FrameSequence& sequence) {
         if (!sets.opaque.empty()) {
-            const auto defines = specialization_defines(shader_mode, sets.opaque_objects, scene.lights);
+            const auto defines = defines_of(sets.opaque_objects, scene.lights);
             draw_spheres(program({"passes/sphere.vert", "passes/sphere.frag", defines}, false), sets.opaque,
                          sequence);
         }
         if (!meshes.opaque_objects().empty()) {
-            const auto defines = specialization_defines(shader_mode, meshes.opaque_objects(), scene.lights);
+            const auto defines = defines_of(meshes.opaque_objects(), scene.lights);
             sequence.use_program(program({"passes/mesh.vert", "passes/mesh.frag", defines}, false));
             draw_meshes(sequence.camera(), sequence.lights().work, nullptr);
         }
@@ -150,9 +161,9 @@ struct Renderer::Impl {
         gl.DepthMask(GL_FALSE);
         blender.begin(blend);
         const bool two_pass = blend == TranslucentBlend::two_pass;
-        auto defines = specialization_defines(shader_mode, sets.translucent_objects, scene.lights);
+        auto defines = defines_of(sets.translucent_objects, scene.lights);
         defines.push_back("TRANSLUCENT_PASS");
-        auto mesh_defines = specialization_defines(shader_mode, meshes.translucent_objects(), scene.lights);
+        auto mesh_defines = defines_of(meshes.translucent_objects(), scene.lights);
         mesh_defines.push_back("TRANSLUCENT_PASS");
         if (two_pass) {
             defines.push_back(kTwoPassBlendDefine);

@@ -93,7 +93,6 @@ void upload_lights(const GlApi& gl, unsigned program, const LightUniforms& light
     gl.Uniform1iv(location("u_light_shadow"), lights.count, lights.shadow.data());
     gl.Uniform1i(location("u_area_samples"), lights.sampling.light);
     gl.Uniform1i(location("u_shadow_samples"), lights.sampling.shadow);
-    gl.Uniform1i(location("u_lobe_closed_form"), lights.sampling.lobe_closed_form ? 1 : 0);
 }
 
 }  // namespace m3055

@@ -23,8 +23,9 @@ struct AreaSampling {
     int light = 8;
     int shadow = 3;
     // A highlight of whole exponent under a rect or the sky integrated exactly
-    // (glsl/common/lobe_moment.glsl); off: the samples scaled by E / E_s alone.
-    // Off in the render: on llvmpipe it costs far more than the samples (docs/lights.md).
+    // (glsl/common/lobe_moment.glsl, compiled in only then: kLobeClosedFormDefine);
+    // off: the samples scaled by E / E_s alone. Off in the render: on llvmpipe
+    // its code quadruples a program's compile time and memory (docs/lights.md).
     bool lobe_closed_form = false;
     bool operator==(const AreaSampling& o) const {
         return light == o.light && shadow == o.shadow && lobe_closed_form == o.lobe_closed_form;
@@ -32,6 +33,8 @@ struct AreaSampling {
     bool operator!=(const AreaSampling& o) const { return !(*this == o); }
 };
 inline constexpr AreaSampling kRenderSampling{8, 3};
+// The define of the programs that integrate the lobe in closed form (AreaSampling::lobe_closed_form).
+inline constexpr const char* kLobeClosedFormDefine = "HAS_LOBE_CLOSED_FORM";
 inline constexpr AreaSampling kFastSampling{1, 1};
 
 struct LightUniforms {
