@@ -3,6 +3,7 @@
 // rasterizers, Mesa's queues) is joined before the process ends, and the
 // output is whole, as with a normal exit.
 #include "image/image.h"
+#include "io/sanitized_build.h"
 #include "test_paths.h"
 #include "test_support.h"
 
@@ -15,18 +16,6 @@
 
 namespace m3055::test {
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
 
 // The process's exit calls as strace -f writes them, one per line: "exit(0)"
 // for a thread that ends, "exit_group(0)" for the process.
@@ -45,7 +34,7 @@ std::vector<std::string> exit_calls(const std::string& trace) {
 }
 
 TEST(ExitNow, RenderEndsWithoutJoiningItsThreads) {
-    if (kSanitized) GTEST_SKIP() << "a sanitized build exits normally, for LeakSanitizer's check";
+    if (kSanitizedBuild) GTEST_SKIP() << "a sanitized build exits normally, for LeakSanitizer's check";
     if (std::system("strace -qq -o /dev/null true >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "strace cannot run here";
     TempDir dir;

@@ -3,6 +3,7 @@
 // pixel), and a scene of 10 000 spheres renders with every sphere on screen
 // (time reported). Timings are printed, never asserted.
 #include "image/image.h"
+#include "io/sanitized_build.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -16,18 +17,6 @@
 
 namespace m3055::test {
 namespace {
-
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAsan = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAsan = true;
-#else
-constexpr bool kAsan = false;
-#endif
-#else
-constexpr bool kAsan = false;
-#endif
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -54,7 +43,7 @@ TEST(Limits, Display8192SquaredRendersWithBoundedMemory) {
     // GL side (24 bytes a pixel), the 8-bit display and the raw floats read
     // back (15), the PNG (small here): about 40 bytes a pixel in Release
     // (docs/limits.md). A copy of the float frame too many would add 12 to 16 more. ASan's shadow memory and quarantine add their own share.
-    EXPECT_LT(peak / pixels, kAsan ? 96.0 : 48.0);
+    EXPECT_LT(peak / pixels, kSanitizedBuild ? 96.0 : 48.0);
 
     // Whole, valid files: PFM header + 12 bytes a pixel; the PNG decodes to
     // 8192 x 8192 with the sphere in the middle and background in the corners.
@@ -86,7 +75,7 @@ TEST(Limits, RenderWithoutRawReadsNoFloatsBack) {
     const double peak = run.peak_rss_mib * 1048576.0;
     std::printf("4096 x 4096 without --raw: peak RSS %.0f MiB (%.1f bytes per pixel)\n", peak / 1048576.0,
                 peak / pixels);
-    if (kAsan) GTEST_SKIP() << "ASan's shadow memory and quarantine hide a 12-byte share";
+    if (kSanitizedBuild) GTEST_SKIP() << "ASan's shadow memory and quarantine hide a 12-byte share";
     EXPECT_LT(peak / pixels, 38.0);
 }
 
