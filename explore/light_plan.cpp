@@ -56,4 +56,13 @@ void turn_to_azimuth(Light& light, const dvec3& subject, double azimuth_deg) {
     light.up = turned_about_vertical(light.up, turn_deg);
 }
 
+const LightPlanReadouts& update_light_plan(LightPlanReadouts& readouts, const Scene& scene, std::uint64_t revision) {
+    if (readouts.revision != revision) {
+        readouts.subject = subject_centre(scene);
+        readouts.ratio = key_to_fill_ratio(scene, readouts.subject);
+        readouts.revision = revision;
+    }
+    return readouts;
+}
+
 }  // namespace m3055::explore

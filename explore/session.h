@@ -4,6 +4,7 @@
 // page) offers. Nothing here is saved or undone.
 #pragma once
 
+#include "explore/light_plan.h"
 #include "explore/practice_status.h"
 #include "models/material.h"
 
@@ -80,6 +81,7 @@ struct Session {
     Messages messages;
     FilePlaces files;
     BrdfWatch brdf_watch;
+    LightPlanReadouts light_plan;  // the Lights panel's plot: subject and key-to-fill (explore/light_plan.h)
     Platform platform;
     PracticeStatus practice;  // --assignment: the live grade (explore/practice.h)
     std::string busy;         // this frame's busy_line (explore/busy.h), beside the menu

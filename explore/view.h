@@ -22,6 +22,7 @@ struct View {
     int selected_group = 0;   // which of a model file's materials, when it is a mesh with several
     int selected_light = 0;   // the light last edited in the Lights panel
     int plotted_light = 0;    // the polar plot's light: picked in the plot's own header only
+    int dragged_light = -1;   // the light whose arrow is being dragged on the light plot (-1: none)
 
     // The polar plot's radial scale: chosen by the user and kept.
     RadialScale plot_scale = RadialScale::lobe;

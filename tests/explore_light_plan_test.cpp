@@ -68,5 +68,31 @@ TEST(TurnToAzimuth, APointLightMovesAndAnotherSubjectIsTheCentre) {
     EXPECT_NEAR(light.position.z, -2.0, 1e-12);
 }
 
+// The plot's read-outs follow the document's revision, and only it.
+TEST(LightPlanReadouts, FoundAgainOnlyWhenTheRevisionChanges) {
+    Scene scene;
+    Object sphere;
+    sphere.center = {1.0, 0.5, -1.0};
+    scene.objects.push_back(sphere);
+    Light key = rect_facing_origin(), fill;
+    key.name = "key";
+    fill.name = "fill";
+    fill.direction = {-1.0, 0.3, 1.0};
+    fill.intensity = 0.25;
+    scene.lights = {key, fill};
+
+    LightPlanReadouts readouts;
+    update_light_plan(readouts, scene, 7);
+    EXPECT_EQ(readouts.subject, sphere.center);
+    EXPECT_EQ(readouts.ratio.text(), key_to_fill_ratio(scene, sphere.center).text());
+
+    scene.objects[0].center = {0.0, 0.0, 0.0};  // the same revision: kept
+    update_light_plan(readouts, scene, 7);
+    EXPECT_EQ(readouts.subject, sphere.center);
+    update_light_plan(readouts, scene, 8);
+    EXPECT_EQ(readouts.subject, dvec3(0.0));
+    EXPECT_EQ(readouts.revision, 8u);
+}
+
 }  // namespace
 }  // namespace m3055::explore

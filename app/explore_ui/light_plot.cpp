@@ -9,14 +9,11 @@
 // lighting_ratio.h (the function grading uses), updated live.
 #include "explore_ui/panels.h"
 
-#include "analysis/lighting_ratio.h"
 #include "explore/light_plan.h"
 #include "explore_ui/widgets.h"
 #include "numeric/angles.h"
 
 #include <imgui.h>
-
-#include <cstdint>
 
 #include <cmath>
 #include <string>
@@ -46,18 +43,11 @@ float plan_scale(const Light& light, const dvec3& subject, float reach) {
 }  // namespace
 
 void light_plot(Explorer& explorer) {
-    static int dragged = -1;
+    int& dragged = explorer.view.dragged_light;
     const auto& lights = explorer.doc.scene.lights;
-    // The subject's centre averages every object: found again only when the document changes.
-    // So is the ratio (a disk light's irradiance is a quadrature of about 25 ms).
-    static std::uint64_t subject_revision = ~std::uint64_t(0);
-    static dvec3 subject;
-    static KeyFillRatio ratio;
-    if (subject_revision != explorer.doc.revision) {
-        subject = subject_centre(explorer.doc.scene);
-        ratio = key_to_fill_ratio(explorer.doc.scene, subject);
-        subject_revision = explorer.doc.revision;
-    }
+    const LightPlanReadouts& plan =
+        update_light_plan(explorer.session.light_plan, explorer.doc.scene, explorer.doc.revision);
+    const dvec3& subject = plan.subject;
     const float size = 150.0f, reach = size * 0.5f - 14.0f;
     const ImVec2 corner = ImGui::GetCursorScreenPos();
     const ImVec2 centre(corner.x + size * 0.5f, corner.y + size * 0.5f);
@@ -116,7 +106,7 @@ void light_plot(Explorer& explorer) {
         draw->AddText(ImVec2(tail.x - 8, tail.y - 7), colour, label.c_str());
     }
     draw->PopClipRect();
-    ImGui::TextWrapped("key-to-fill at the subject: %s", ratio.text().c_str());
+    ImGui::TextWrapped("key-to-fill at the subject: %s", plan.ratio.text().c_str());
     tooltip("The irradiance of the light named \"key\" against the one named \"fill\" at the subject's centre, "
             "on a surface facing the camera (renderer/analysis/lighting_ratio.h), as n:1 and in stops (log2).");
 }
