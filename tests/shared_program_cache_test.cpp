@@ -49,5 +49,38 @@ TEST(SharedProgramCache, TheGridUsesTheProgramItsCompileCheckBuilt) {
     EXPECT_EQ(programs.size(), compiled);
 }
 
+// With deferral (the explorer's), a new specialization draws with the warmed-up
+// general program and is built when idle; one whose stand-in was never built
+// (area lights are not warmed up) is built at once: one compile, not two.
+TEST(DeferredCompiles, TheGeneralProgramStandsInOnlyWhereItIsBuilt) {
+    const auto context = HeadlessContext::create(Backend::automatic);
+    Renderer renderer(context->gl());
+    renderer.set_defer_compiles(true);
+    renderer.warm_up_general_programs();
+    const std::size_t warmed = renderer.compiled_programs();
+
+    Scene scene = default_scene();
+    scene.display.width = 64;
+    scene.display.height = 40;
+    scene.objects[0].material = Material::of("metal");
+    renderer.render(scene);
+    EXPECT_EQ(renderer.deferred_programs(), 1u);
+    EXPECT_EQ(renderer.compiled_programs(), warmed);
+    const std::vector<std::uint8_t> general = renderer.read_display().pixels;
+    renderer.render_specialized(scene);
+    EXPECT_EQ(renderer.deferred_programs(), 0u);
+    EXPECT_EQ(renderer.compiled_programs(), warmed + 1);
+    EXPECT_EQ(renderer.read_display().pixels, general);
+
+    Scene area = scene;
+    area.lights[0].type = LightType::disk;
+    area.lights[0].position = {0.0, 3.0, 3.0};
+    area.lights[0].normal = {0.0, -0.7071, -0.7071};
+    area.lights[0].radius = 0.5;
+    renderer.render(area);
+    EXPECT_EQ(renderer.deferred_programs(), 0u);
+    EXPECT_EQ(renderer.compiled_programs(), warmed + 2);  // the specialized one alone
+}
+
 }  // namespace
 }  // namespace m3055

@@ -205,6 +205,10 @@ public:
             info_.compare_count = panes_->compare_count(e_);
             info_.refining = panes_->refining();
         }
+        // What the next frame will show beside the menu: a preview drawn above is refining from now
+        // on (a script's `settle` reads it after this frame).
+        e_.session.busy =
+            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0, panes_ && panes_->refining());
 
         // 6. The plots and statistics under the display, then the display panes.
         if (e_.view.show_panels) draw_plots(layout, views_shown, plots_were_folded);

@@ -115,17 +115,24 @@ struct Renderer::Impl {
 
     // The program for `key`; with deferral, a specialized one not built yet is
     // noted and the general program of the same pass stands in (same pixels).
+    // Where the stand-in is not built either (the general programs warmed up
+    // at start have no area lights or shadows), the specialized program is
+    // built at once: it costs no more than the stand-in would, and the
+    // refine needs it anyway (a scene opened with area lights: one compile,
+    // not two; docs/lights.md).
     unsigned program(const ProgramKey& key, bool translucent_pass) {
         if (!defer_compiles || shader_mode != ShaderMode::specialized || programs.contains(key))
             return programs.get(key);
-        deferred.insert(key);
         std::vector<std::string> general = specialization_defines(ShaderMode::general, {}, {});
         for (const char* feature : {"HAS_AREA_LIGHTS", "HAS_SHADOWS", kLobeClosedFormDefine})  // as the key has them
             if (std::find(key.defines.begin(), key.defines.end(), feature) != key.defines.end())
                 general.push_back(feature);
         if (translucent_pass) general.push_back("TRANSLUCENT_PASS");
         if (translucent_pass && blend == TranslucentBlend::two_pass) general.push_back(kTwoPassBlendDefine);
-        return programs.get({key.vertex, key.fragment, general});
+        const ProgramKey stand_in{key.vertex, key.fragment, general};
+        if (!programs.contains(stand_in)) return programs.get(key);
+        deferred.insert(key);
+        return programs.get(stand_in);
     }
 
     // A run of spheres with `program`; `two_pass`: a translucent run drawn with the two-pass blend.

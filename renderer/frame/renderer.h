@@ -83,7 +83,9 @@ public:
     // it; when the explorer is idle, render_specialized() draws the same scene
     // again with its specialized programs (built then, and run once, as
     // llvmpipe compiles a program's code at its first draw), so later renders
-    // use them. Off by default: the command line's renders are unchanged.
+    // use them. A specialized program whose general stand-in is not built
+    // either (area lights or shadows: not warmed up) is built at once instead.
+    // Off by default: the command line's renders are unchanged.
     void set_defer_compiles(bool on);
     bool defers_compiles() const;
     std::size_t deferred_programs() const;  // noted since the last render_specialized
