@@ -3,35 +3,21 @@
 // is one) with its own property (tests/fuzz/brdf_fuzz_check.h).
 #include "fuzz/brdf_fuzz_check.h"
 
-#include "test_support.h"
+#include "fuzz_corpus.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <cstdint>
+#include <string>
 
 namespace {
 
-namespace fs = std::filesystem;
-
-std::string check_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+std::string check_bytes(const std::string& bytes) {
     return m3055::fuzz::check_brdf_input(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
 TEST(BrdfFuzzRegressions, SeedsAndRegressionsPass) {
-    int checked = 0;
-    for (const char* folder : {"tests/data/brdf", "tests/fuzz/brdf_regressions"}) {
-        const std::string path = m3055::test::source_path(folder);
-        if (!fs::is_directory(path)) continue;
-        for (const auto& entry : fs::directory_iterator(path)) {
-            EXPECT_EQ(check_file(entry.path()), "") << entry.path();
-            ++checked;
-        }
-    }
-    EXPECT_GE(checked, 3);
+    EXPECT_GE(m3055::test::expect_property_holds({"tests/data/brdf", "tests/fuzz/brdf_regressions"}, check_bytes), 3);
 }
 
 }  // namespace

@@ -6,14 +6,12 @@
 // the test process itself.
 #include "fuzz/manifest_fuzz_check.h"
 
+#include "fuzz_corpus.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 namespace {
@@ -21,33 +19,22 @@ namespace {
 namespace fs = std::filesystem;
 using m3055::test::source_path;
 
-std::vector<fs::path> files_under(const std::string& folder, const std::string& extension = "") {
-    std::vector<fs::path> files;
-    if (!fs::is_directory(folder)) return files;
-    for (const auto& entry : fs::recursive_directory_iterator(folder))
-        if (entry.is_regular_file() && (extension.empty() || entry.path().extension() == extension))
-            files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 std::string check_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string bytes = m3055::test::file_bytes(path);
     return m3055::fuzz::check_fuzz_input(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
 TEST(FuzzRegressions, EveryInputThatOnceFailedNowPasses) {
-    const auto files = files_under(source_path("tests/fuzz/regressions"));
+    const auto files = m3055::test::corpus_files(source_path("tests/fuzz/regressions"));
     ASSERT_FALSE(files.empty()) << "tests/fuzz/regressions/ is empty";
     for (const fs::path& path : files) EXPECT_EQ(check_file(path), "") << path;
 }
 
 TEST(FuzzRegressions, SeedCorpusPasses) {
-    std::vector<fs::path> files = files_under(source_path("scenes"), ".json");
+    std::vector<fs::path> files = m3055::test::corpus_files(source_path("scenes"), ".json");
     // tests/data/ holds the reference images' scenes (tests/data/reference-images/) too.
-    for (const auto& more : {files_under(source_path("tests/data"), ".json"),
-                             files_under(source_path("tests/fuzz/seeds"))})
+    for (const auto& more : {m3055::test::corpus_files(source_path("tests/data"), ".json"),
+                             m3055::test::corpus_files(source_path("tests/fuzz/seeds"))})
         files.insert(files.end(), more.begin(), more.end());
     ASSERT_GE(files.size(), 10u);
     for (const fs::path& path : files) EXPECT_EQ(check_file(path), "") << path;

@@ -4,52 +4,36 @@
 // property (tests/fuzz/model_fuzz_check.h); and that the property can fail.
 #include "fuzz/model_fuzz_check.h"
 
+#include "fuzz_corpus.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <cstdint>
+#include <string>
 
 namespace {
-
-namespace fs = std::filesystem;
 
 std::string check_bytes(const std::string& bytes) {
     return m3055::fuzz::check_model_input(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
-std::string check_file(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return check_bytes(std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>()));
-}
-
 TEST(ModelFuzzRegressions, SeedsAndRegressionsPass) {
-    int checked = 0;
-    for (const char* folder : {"tests/fuzz/model_seeds", "tests/fuzz/model_regressions"}) {
-        const std::string path = m3055::test::source_path(folder);
-        if (!fs::is_directory(path)) continue;
-        for (const auto& entry : fs::directory_iterator(path)) {
-            EXPECT_EQ(check_file(entry.path()), "") << entry.path();
-            ++checked;
-        }
-    }
-    EXPECT_GE(checked, 3);
+    EXPECT_GE(m3055::test::expect_property_holds({"tests/fuzz/model_seeds", "tests/fuzz/model_regressions"}, check_bytes),
+              3);
 }
 
 // Each seed loads (the fuzzer starts from real models, not refusals).
 TEST(ModelFuzzRegressions, EachSeedIsAModel) {
-    for (const auto& entry : fs::directory_iterator(m3055::test::source_path("tests/fuzz/model_seeds"))) {
-        std::ifstream file(entry.path(), std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    for (const auto& path : m3055::test::corpus_files(m3055::test::source_path("tests/fuzz/model_seeds"))) {
+        const std::string bytes = m3055::test::file_bytes(path);
         std::string side;
         std::string body = bytes.substr(1);
         const std::size_t marker = body.find("\n#side\n");
         if (marker != std::string::npos) side = body.substr(marker + 7), body.resize(marker + 1);
         const auto format = static_cast<m3055::model_file::Format>(bytes[0] % 3);
         EXPECT_NO_THROW(m3055::model_file::parse_model(body, format, [&](const std::string&) { return side; }, 100))
-            << entry.path();
+            << path;
     }
 }
 
