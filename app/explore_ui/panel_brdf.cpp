@@ -1,5 +1,5 @@
-// The .brdf parts of the UI: File > Open BRDF's dialog (a path field, as Save
-// As's) and the Material section's note on the selected object's file: which
+// The .brdf parts of the UI: File > Open BRDF's dialog (a path field:
+// explore_ui/path_dialog.h) and the Material section's note on the selected object's file: which
 // file, that it is watched, and the last parse or GLSL error in red (the
 // file's own line), while the last good version keeps rendering.
 #include "explore_ui/panels.h"
@@ -7,10 +7,12 @@
 #include "brdf_file/brdf_model.h"
 #include "explore/apply.h"
 #include "explore/brdf_files.h"
+#include "explore_ui/path_dialog.h"
 #include "explore_ui/widgets.h"
 
 #include <imgui.h>
-#include <imgui_stdlib.h>
+
+#include <string>
 
 namespace m3055::explore {
 
@@ -19,35 +21,11 @@ const ImVec4 kRed(1, 0.43f, 0.43f, 1);
 }
 
 void open_brdf_dialog(Explorer& explorer) {
-    if (explorer.view.dialog == Dialog::open_brdf) {
-        explorer.view.dialog = Dialog::none;
-        if (explorer.session.platform.pick_file) {  // the browser's file chooser
-            explorer.session.platform.pick_file();
-            return;
-        }
-        explorer.session.messages.brdf_error.clear();
-        ImGui::OpenPopup("Open BRDF");
-    }
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing,
-                            ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("Open BRDF", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::Text("A BRDF Explorer .brdf file for object %d (its sliders come from the file).", explorer.view.selected_object);
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::SetNextItemWidth(420.0f);
-    const bool enter = ImGui::InputText("file", &explorer.view.brdf_path, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (!explorer.session.messages.brdf_error.empty()) {
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
-        ImGui::TextColored(kRed, "%s", explorer.session.messages.brdf_error.c_str());
-        ImGui::PopTextWrapPos();
-    }
-    if (ImGui::Button("Open") || enter) {
-        if (run_command(explorer, command::OpenBrdf{explorer.view.brdf_path})) ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    const bool escape = !ImGui::IsWindowAppearing() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-    if (ImGui::Button("Cancel") || escape) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
+    path_dialog(explorer, {"Open BRDF", Dialog::open_brdf,
+                           "A BRDF Explorer .brdf file for object " + std::to_string(explorer.view.selected_object) +
+                               " (its sliders come from the file).",
+                           "Open", &explorer.view.brdf_path, &explorer.session.messages.brdf_error,
+                           [&] { return run_command(explorer, command::OpenBrdf{explorer.view.brdf_path}); }});
 }
 
 void brdf_material_note(const Explorer& explorer, const Material& material) {
