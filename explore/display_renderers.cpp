@@ -45,12 +45,12 @@ std::size_t deferred_programs(const Renderer& a, const Renderer& b) {
     return a.deferred_programs() + b.deferred_programs();
 }
 
-void refine_rows(const Explorer& e, Renderer& a, Renderer& b, int row0, int row1) {
+void refine_region(const Explorer& e, Renderer& a, Renderer& b, const DisplayRegion& region) {
     a.set_area_sampling(kRenderSampling);
-    a.render_rows(e.doc.scene, row0, row1);
+    a.render_region(e.doc.scene, region);
     if (!e.view.compare) return;
     b.set_area_sampling(kRenderSampling);
-    b.render_rows(compare_scene(e), row0, row1);
+    b.render_region(compare_scene(e), region);
 }
 
 bool render_specialized_when_idle(const Explorer& e, Renderer& a, Renderer& b) {

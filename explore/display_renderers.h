@@ -57,12 +57,15 @@ bool preview_differs(const Scene& scene);
 // with the render's sampling (kRenderSampling), its specialized program built
 // if it waits: the display's pixels are then the render's, byte for byte.
 void refine_displays(const Explorer& explorer, Renderer& a, Renderer& b);
-// The same for rows [row0, row1) only (from the bottom, as GL counts): the
-// explorer refines in bands between frames, so input waits for one band at
-// most; bands over every row give refine_displays's pixels.
-void refine_rows(const Explorer& explorer, Renderer& a, Renderer& b, int row0, int row1);
-// A band of refinement should take about this long.
+// The same for `region` only: the explorer refines in tiles between frames
+// (explore/refine_tiles.h), so input waits for one tile at most; tiles over
+// the whole display give refine_displays's pixels.
+void refine_region(const Explorer& explorer, Renderer& a, Renderer& b, const DisplayRegion& region);
+// A tile of refinement should take about this long (input waits for one tile at most).
 inline constexpr double kRefineBandMs = 60.0;
+// While refining, a frame shows the tiles drawn so far this often (a frame a
+// tile cost 12 of 57 s of the sky fill's refine).
+inline constexpr double kRefineFrameSeconds = 0.25;
 
 // Specialized programs waiting to be compiled, on A and B together.
 std::size_t deferred_programs(const Renderer& a, const Renderer& b);

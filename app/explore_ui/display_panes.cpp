@@ -95,7 +95,7 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     const double ms = milliseconds_since(start);
     if (preview) preview_scale_.note(ms, divisor);
     refine_pending_ = preview;
-    refined_rows_ = 0;
+    refine_tiles_.start(explorer.doc.scene.display.width, explorer.doc.scene.display.height);
     return ms;
 }
 
@@ -107,15 +107,10 @@ void DisplayPanes::displays_drawn() {
 }
 
 void DisplayPanes::refine(Explorer& explorer) {
-    const int height = explorer.doc.scene.display.height;
-    // The first band is small: it also builds the specialized program.
-    const int rows = refine_ms_per_row_ > 0.0 && refined_rows_ > 0
-                         ? std::max(1, int(kRefineBandMs / refine_ms_per_row_))
-                         : 8;
-    const int top = height - refined_rows_, bottom = std::max(0, top - rows);
+    const DisplayRegion tile = refine_tiles_.next(kRefineBandMs);
     const auto start = std::chrono::steady_clock::now();
     try {
-        refine_rows(explorer, *renderer_a_, *renderer_b_, bottom, top);
+        refine_region(explorer, *renderer_a_, *renderer_b_, tile);
         displays_drawn();
         gl_.Finish();
     } catch (const std::exception& e) {
@@ -123,9 +118,8 @@ void DisplayPanes::refine(Explorer& explorer) {
         refine_pending_ = false;
         return;
     }
-    if (refined_rows_ > 0) refine_ms_per_row_ = milliseconds_since(start) / double(top - bottom);
-    refined_rows_ += top - bottom;
-    if (refined_rows_ < height) return;
+    refine_tiles_.drawn(tile, milliseconds_since(start));
+    if (!refine_tiles_.done()) return;
     refine_pending_ = false;
     refined_revision_ = explorer.doc.revision;
 }

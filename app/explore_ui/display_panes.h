@@ -14,6 +14,7 @@
 #include "explore/layout.h"
 #include "explore/practice.h"
 #include "explore/readouts.h"
+#include "explore/refine_tiles.h"
 #include "explore_ui/compare_view.h"
 #include "explore_ui/display_view.h"
 #include "frame/renderer.h"
@@ -67,9 +68,9 @@ public:
     // A preview of area lights is showing (explore/display_renderers.h): the
     // display is "refining" until refine() has drawn the render's pixels.
     bool refining() const { return refine_pending_; }
-    bool refine_started() const { return refine_pending_ && refined_rows_ > 0; }
-    // The next band of rows, top down, drawn with the render's samples (about
-    // kRefineBandMs); the last one leaves the displays showing the render's pixels.
+    bool refine_started() const { return refine_pending_ && refine_tiles_.started(); }
+    // The next tile, top down (explore/refine_tiles.h), drawn with the render's samples
+    // (about kRefineBandMs); the last one leaves the displays showing the render's pixels.
     void refine(Explorer& explorer);
     // The display as `m3055 render` writes it: A rendered now with its
     // specialized program; the window shows it on the next frame.
@@ -121,8 +122,7 @@ private:
     std::unique_ptr<PaneTexture> practice_diff_;         // |A - reference|
     PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
     bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
-    int refined_rows_ = 0;         // rows refined so far, from the top
-    double refine_ms_per_row_ = 0.0;  // the last band's time a row
+    RefineTiles refine_tiles_;     // where the refine draws next
     // The document revision A shows refined (no split): a render asked for
     // again (a read-out, a screenshot) keeps those pixels rather than draw a preview.
     std::optional<std::uint64_t> refined_revision_;

@@ -238,6 +238,7 @@ public:
     }
 
 private:
+    double last_refine_frame_ = 0.0;  // when a refine's tile was last shown (window time)
     void owe_frames(int frames) { window_.events().frames_owed = std::max(window_.events().frames_owed, frames); }
 
     // A specialized program waiting: after kIdleBeforeCompile s with no
@@ -251,14 +252,18 @@ private:
     }
 
     // A preview of area lights on the display: after kIdleBeforeRefine s with
-    // no input, between frames, drawn again with the render's samples, a band
-    // of rows at a time, each shown by a frame; "refining..." goes with the last.
+    // no input, between frames, drawn again with the render's samples, a tile
+    // at a time (input polled between tiles), shown by a frame every
+    // kRefineFrameSeconds and at the end; "refining..." goes with the last.
     void refine_when_idle() {
         if (!panes_->refine_started()) window_.wait(kIdleBeforeRefine);
         else window_.poll();
         if (frame_needed()) return;  // input came: that frame first
         panes_->refine(e_);
-        owe_frames(1);
+        if (!panes_->refining() || window_.time() - last_refine_frame_ >= kRefineFrameSeconds) {
+            owe_frames(1);
+            last_refine_frame_ = window_.time();
+        }
     }
 
     // A changed .brdf file, after kIdleBeforeCompile s with no input, between

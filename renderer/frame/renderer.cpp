@@ -61,7 +61,7 @@ struct Renderer::Impl {
     FrameTargets targets;  // scene and display targets, materials, clear, quantize, read-backs
     std::unique_ptr<FrameTargets> reduced;  // render_reduced's smaller frame, made at its first use
     FrameTargets* drawing = &targets;       // the frame this render draws into
-    std::optional<std::pair<int, int>> rows;  // render_rows: the only rows drawn
+    std::optional<DisplayRegion> region;  // render_region: the only pixels drawn
     MeshPass meshes;       // planes, cubes, cylinders, tori (passes/mesh_pass.h)
     SpherePass spheres;    // passes/sphere_pass.h
     ShaderMode shader_mode = ShaderMode::specialized;
@@ -222,10 +222,10 @@ struct Renderer::Impl {
 
     void draw_scene(const Scene& scene) {
         chunks.emplace(gl, deadline, scene.display.width, scene.display.height);
-        if (rows) {
-            chunks->clip_rows(rows->first, rows->second);
-            gl.Enable(GL_SCISSOR_TEST);  // the clear, the draws and the quantize pass: only these rows
-            gl.Scissor(0, rows->first, scene.display.width, rows->second - rows->first);
+        if (region) {
+            chunks->clip_to(*region);
+            gl.Enable(GL_SCISSOR_TEST);  // the clear, the draws and the quantize pass: only these pixels
+            gl.Scissor(region->x0, region->y0, region->x1 - region->x0, region->y1 - region->y0);
         }
         chunks->check_deadline();  // loading the scene may have taken it all
         FrameSequence sequence(gl, *drawing, scene, sampling);
@@ -246,23 +246,26 @@ Renderer::Renderer(const GlApi& gl, ProgramCache& programs)
 Renderer::Renderer(const GlApi& gl) : impl_(std::make_unique<Impl>(gl, std::make_unique<ProgramCache>(gl), nullptr)) {}
 Renderer::~Renderer() = default;
 void Renderer::render(const Scene& scene) { impl_->render(scene); }
-void Renderer::render_rows(const Scene& scene, int row0, int row1) {
+void Renderer::render_region(const Scene& scene, const DisplayRegion& box) {
     if (impl_->targets.width() != scene.display.width || impl_->targets.height() != scene.display.height)
-        throw std::logic_error("render_rows: the display was not drawn at this size");
-    row0 = std::clamp(row0, 0, scene.display.height);
-    row1 = std::clamp(row1, row0, scene.display.height);
-    if (row1 == row0) return;
+        throw std::logic_error("render_region: the display was not drawn at this size");
+    DisplayRegion region;
+    region.x0 = std::clamp(box.x0, 0, scene.display.width);
+    region.x1 = std::clamp(box.x1, region.x0, scene.display.width);
+    region.y0 = std::clamp(box.y0, 0, scene.display.height);
+    region.y1 = std::clamp(box.y1, region.y0, scene.display.height);
+    if (region.x1 == region.x0 || region.y1 == region.y0) return;
     const bool defer = impl_->defer_compiles;
     impl_->defer_compiles = false;
-    impl_->rows = std::make_pair(row0, row1);
+    impl_->region = region;
     try {
         impl_->render(scene);
     } catch (...) {
-        impl_->rows.reset();
+        impl_->region.reset();
         impl_->defer_compiles = defer;
         throw;
     }
-    impl_->rows.reset();
+    impl_->region.reset();
     impl_->defer_compiles = defer;
     for (auto key = impl_->deferred.begin(); key != impl_->deferred.end();)
         key = impl_->programs.contains(*key) ? impl_->deferred.erase(key) : std::next(key);

@@ -10,6 +10,7 @@
 #include "gl/program.h"
 #include "frame/render_error.h"
 #include "image/image.h"
+#include "passes/display_region.h"
 #include "passes/light_uniforms.h"
 #include "passes/shader_plan.h"
 #include "passes/translucent_blend.h"
@@ -43,13 +44,13 @@ public:
     // display's own pixels (nearest), so the display, its texture and its
     // read-backs keep the scene's size. divisor <= 1: render(scene).
     void render_reduced(const Scene& scene, int divisor);
-    // Rows [row0, row1) of the display (counted from the bottom, as GL does)
-    // drawn again, with the specialized programs; the other rows keep what
-    // they show. Each pixel is what render(scene) gives it, so bands covering
-    // every row give render's image: the explorer refines a preview this way
-    // without holding input for a whole frame. The display must already be
-    // at the scene's size (std::logic_error otherwise).
-    void render_rows(const Scene& scene, int row0, int row1);
+    // The box `region` of the display drawn again, with the specialized
+    // programs; the other pixels keep what they show. Each pixel is what
+    // render(scene) gives it, so regions covering the display give render's
+    // image: the explorer refines a preview this way without holding input
+    // for a whole frame. The display must already be at the scene's size
+    // (std::logic_error otherwise).
+    void render_region(const Scene& scene, const DisplayRegion& region);
 
     // How area and sky lights are sampled (passes/light_uniforms.h):
     // kRenderSampling by default, what the command line renders with; the

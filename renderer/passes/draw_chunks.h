@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gl/gl_api.h"
+#include "passes/display_region.h"
 #include "passes/render_timeout.h"
 
 #include <chrono>
@@ -68,9 +69,9 @@ public:
     DrawSpan span_of(std::size_t first, std::size_t count, std::size_t primitives, const float* rect,
                      std::size_t lights) const;
 
-    // Only rows [row0, row1) of the frame are drawn (Renderer::render_rows):
+    // Only the box `region` of the frame is drawn (Renderer::render_region):
     // the caller has the scissor test on with that box; bands stay inside it.
-    void clip_rows(int row0, int row1) { clip_ = {row0, row1}; }
+    void clip_to(const DisplayRegion& region) { clip_ = region; }
 
     // draw(first, count) for each chunk (or band of one).
     template <class Draw>
@@ -82,11 +83,12 @@ public:
             if (rows.size() > 2) gl_.Enable(GL_SCISSOR_TEST);
             for (std::size_t band = 0; band + 1 < rows.size(); ++band) {
                 int row0 = rows[band], row1 = rows[band + 1];
-                if (clip_) row0 = std::max(row0, clip_->first), row1 = std::min(row1, clip_->second);
+                if (clip_) row0 = std::max(row0, clip_->y0), row1 = std::min(row1, clip_->y1);
                 if (rows.size() > 2 && row1 <= row0) continue;  // a band outside the clip
                 if (!first_draw) between_draws();
                 first_draw = false;
-                if (rows.size() > 2) gl_.Scissor(0, row0, width_, row1 - row0);
+                if (rows.size() > 2)
+                    gl_.Scissor(clip_ ? clip_->x0 : 0, row0, clip_ ? clip_->x1 - clip_->x0 : width_, row1 - row0);
                 draw(chunk.first, chunk.count);
             }
             if (rows.size() > 2) restore_scissor();
@@ -102,9 +104,9 @@ private:
     void restore_scissor() const {
         if (!clip_) return gl_.Disable(GL_SCISSOR_TEST);
         gl_.Enable(GL_SCISSOR_TEST);
-        gl_.Scissor(0, clip_->first, width_, clip_->second - clip_->first);
+        gl_.Scissor(clip_->x0, clip_->y0, clip_->x1 - clip_->x0, clip_->y1 - clip_->y0);
     }
-    std::optional<std::pair<int, int>> clip_;
+    std::optional<DisplayRegion> clip_;
     void between_draws() const;
     const GlApi& gl_;
     const Deadline& deadline_;

@@ -1,0 +1,46 @@
+// Where the explorer's refine of an area-light preview draws next
+// (app/explore_ui/display_panes.h): the display in tiles, top down, each a
+// part of a band of rows, each sized to take about kRefineBandMs from what the
+// last one cost, so input waits for one tile at most. No GL: the panes draw
+// each tile with Renderer::render_region.
+//
+// Why tiles and not whole rows: a row of the sky fill at 512 px costs 0.3 to 1 s
+// on llvmpipe (docs/lights.md), and a band thinner than 4 rows costs as much as
+// 4 rows (llvmpipe shades blocks of 4 x 4 pixels, the scissored ones too), so
+// bands are 4 rows (or a multiple) on a 4-row grid, and split in columns on a
+// 4-column grid.
+#pragma once
+
+#include "frame/renderer.h"
+
+namespace m3055::explore {
+
+class RefineTiles {
+public:
+    static constexpr int kAlign = 4;             // llvmpipe's block side
+    static constexpr int kFirstTilePixels = 256;  // the first may build a program too: kept small
+    // However cheap the last tile was: costs vary across a display (the sky's
+    // background rows cost nothing, the subject's up to 1 ms a pixel on llvmpipe),
+    // and a cheap tile says nothing of the next.
+    static constexpr int kMaxTilePixels = 2048;
+
+    // A new refine of a width x height display, from its top row.
+    void start(int width, int height);
+    bool done() const { return band_top_ <= 0; }
+    bool started() const { return tiles_drawn_ > 0; }
+
+    // The next tile to draw, for a tile to take about `budget_ms`.
+    DisplayRegion next(double budget_ms) const;
+    // `tile` (what next gave) drawn in `ms`.
+    void drawn(const DisplayRegion& tile, double ms);
+
+private:
+    int width_ = 0, height_ = 0;
+    int band_top_ = 0, band_bottom_ = 0;  // the band being refined: rows [band_bottom_, band_top_)
+    int band_x_ = 0;                      // its columns refined so far: [0, band_x_)
+    int tiles_drawn_ = 0;
+    int last_pixels_ = 0;        // the last tile's size
+    double ms_per_pixel_ = 0.0;  // the last tile's cost (not the first's: it may include a compile)
+};
+
+}  // namespace m3055::explore

@@ -1,0 +1,86 @@
+// Where the refine of an area-light preview draws next (explore/refine_tiles.h):
+// tiles cover the display once, top down, on llvmpipe's 4 x 4 grid, the
+// first small, then sized to the budget from the last tile's cost and never
+// more than twice the last.
+#include "explore/refine_tiles.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+namespace m3055::explore {
+namespace {
+
+// Draws every tile of a width x height display, `cost(tile)` ms each; the tiles in order.
+std::vector<DisplayRegion> refine_all(int width, int height, const std::function<double(const DisplayRegion&)>& cost) {
+    RefineTiles tiles;
+    tiles.start(width, height);
+    std::vector<DisplayRegion> drawn;
+    while (!tiles.done() && drawn.size() < 100000) {
+        const DisplayRegion tile = tiles.next(60.0);
+        drawn.push_back(tile);
+        tiles.drawn(tile, cost(tile));
+    }
+    return drawn;
+}
+
+double area(const DisplayRegion& t) { return double(t.x1 - t.x0) * (t.y1 - t.y0); }
+
+TEST(RefineTiles, CoverTheDisplayOnceTopDownOnTheGrid) {
+    for (const auto& [w, h] : {std::pair{512, 320}, std::pair{130, 83}, std::pair{3, 2}, std::pair{1, 1}}) {
+        SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));
+        const auto drawn = refine_all(w, h, [](const DisplayRegion& t) { return 0.05 * area(t); });
+        std::vector<int> covered(std::size_t(w) * h, 0);
+        int last_top = h + 1;
+        for (const DisplayRegion& t : drawn) {
+            ASSERT_LT(t.x0, t.x1);
+            ASSERT_LT(t.y0, t.y1);
+            EXPECT_LE(t.y1, last_top);  // bands top down
+            last_top = t.y1;
+            if (t.y0 > 0) {
+                EXPECT_EQ(t.y0 % RefineTiles::kAlign, 0);  // on the grid (the top band takes the rest)
+            }
+            if (t.x0 > 0) {
+                EXPECT_EQ(t.x0 % RefineTiles::kAlign, 0);
+            }
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) ++covered[std::size_t(y) * w + x];
+        }
+        for (int c : covered) ASSERT_EQ(c, 1);
+    }
+}
+
+TEST(RefineTiles, TilesFitTheBudgetAtTheLastTilesCost) {
+    // 0.5 ms a pixel: a 60 ms tile is 120 pixels; the first is kFirstTilePixels.
+    const auto drawn = refine_all(512, 320, [](const DisplayRegion& t) { return 0.5 * area(t); });
+    EXPECT_LE(area(drawn[0]), RefineTiles::kFirstTilePixels);
+    for (std::size_t i = 2; i + 1 < drawn.size(); ++i) {
+        if (drawn[i].x1 == 512) continue;  // a band's last tile takes what is left
+        EXPECT_LE(area(drawn[i]) * 0.5, 60.0 + 0.5 * 4 * 4) << i;
+    }
+}
+
+TEST(RefineTiles, ACheapRegionDoesNotMakeTheNextTileLong) {
+    // The top of the display (background) costs next to nothing, the rest 1 ms a pixel.
+    const auto drawn = refine_all(512, 320, [](const DisplayRegion& t) { return t.y0 >= 200 ? 1e-4 * area(t) : area(t); });
+    for (std::size_t i = 1; i < drawn.size(); ++i) {
+        EXPECT_LE(area(drawn[i]), RefineTiles::kMaxTilePixels + 512.0 * RefineTiles::kAlign) << i;  // + a band's rest
+        if (drawn[i].x1 != 512) {
+            EXPECT_LE(area(drawn[i]), 2.0 * area(drawn[i - 1])) << i;
+        }
+    }
+}
+
+TEST(RefineTiles, AStartBeginsAgainFromTheTop) {
+    RefineTiles tiles;
+    tiles.start(64, 40);
+    tiles.drawn(tiles.next(60.0), 1.0);
+    EXPECT_TRUE(tiles.started());
+    tiles.start(64, 40);
+    EXPECT_FALSE(tiles.started());
+    EXPECT_EQ(tiles.next(60.0).y1, 40);
+}
+
+}  // namespace
+}  // namespace m3055::explore
