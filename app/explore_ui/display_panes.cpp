@@ -76,11 +76,16 @@ void DisplayPanes::practise(grading::Assignment assignment, bool allow_brdf, Exp
     explorer.session.render_needed = true;
 }
 
+DisplayPanes::Refined DisplayPanes::refined_of(const Explorer& explorer) {
+    if (!explorer.view.compare) return {explorer.doc.revision, false, 0, -1};
+    return {explorer.doc.revision, true, explorer.view.selected_object, selected_group(explorer)};
+}
+
 double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (!explorer.session.render_needed) return -1.0;
     explorer.session.render_needed = false;
-    if (!explorer.view.compare && refined_revision_ == explorer.doc.revision) return -1.0;
-    refined_revision_.reset();
+    if (refined_ == refined_of(explorer)) return -1.0;
+    refined_.reset();
     const auto start = std::chrono::steady_clock::now();
     const bool preview = preview_differs(explorer.doc.scene) || (explorer.view.compare && preview_differs(compare_scene(explorer)));
     const int divisor = preview ? preview_scale_.divisor() : 1;
@@ -121,11 +126,11 @@ void DisplayPanes::refine(Explorer& explorer) {
     refine_tiles_.drawn(tile, milliseconds_since(start));
     if (!refine_tiles_.done()) return;
     refine_pending_ = false;
-    refined_revision_ = explorer.doc.revision;
+    refined_ = refined_of(explorer);
 }
 
 void DisplayPanes::compile_for_new_table(Explorer& explorer, double now) {
-    refined_revision_.reset();  // the same scene, other programs
+    refined_.reset();  // the same scene, other programs
     try {
         for (Renderer* r : {renderer_a_.get(), renderer_b_.get()})
             if (r->defers_compiles()) r->warm_up_general_programs();

@@ -123,9 +123,20 @@ private:
     PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
     bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
     RefineTiles refine_tiles_;     // where the refine draws next
-    // The document revision A shows refined (no split): a render asked for
-    // again (a read-out, a screenshot) keeps those pixels rather than draw a preview.
-    std::optional<std::uint64_t> refined_revision_;
+    // What the displays show refined: the document's revision, and in the split
+    // which object wears material B. A render asked for again (a read-out, a
+    // screenshot) of the same keeps those pixels rather than draw a preview.
+    struct Refined {
+        std::uint64_t revision = 0;
+        bool compare = false;
+        int selected_object = 0, selected_group = -1;
+        bool operator==(const Refined& o) const {
+            return revision == o.revision && compare == o.compare && selected_object == o.selected_object &&
+                   selected_group == o.selected_group;
+        }
+    };
+    static Refined refined_of(const Explorer& explorer);
+    std::optional<Refined> refined_;
     bool practice_diff_stale_ = true;
     int practice_diff_scale_ = 1;
     unsigned long long practice_diff_count_ = 0;
