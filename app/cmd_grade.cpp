@@ -44,6 +44,8 @@ void print_grade(const grading::Grade& grade) {
     std::fprintf(stderr, "m3055: %s: %s / %s %s%s%s\n", grade.student.c_str(),
                  text::format_number(grade.score).c_str(), text::format_number(grade.max).c_str(), result,
                  reasons.empty() ? "" : ": ", reasons.empty() ? "" : text::one_line(reasons.front(), 200).c_str());
+    for (std::size_t i = 1; i < reasons.size(); ++i)  // every reason a teacher reads in grades.csv
+        std::fprintf(stderr, "  also: %s\n", text::one_line(reasons[i], 200).c_str());
     for (const std::string& note : grade.notes)
         std::fprintf(stderr, "  note: %s\n", text::one_line(note).c_str());
 }

@@ -84,7 +84,7 @@ std::string scene_file_text(const Explorer& e, const std::string& path) {
 std::string full_path(const std::string& path) {
     std::error_code ec;
     const auto full = std::filesystem::absolute(path, ec);
-    return ec ? path : full.string();
+    return ec ? path : full.lexically_normal().string();  // "/dir/./a.png" reads as /dir/a.png
 }
 
 }  // namespace

@@ -170,6 +170,10 @@ TEST(Grade, WorkedAssignmentScores) {
     EXPECT_EQ(s.at("alice")["comparison"]["same_pixels"], s.at("alice")["comparison"]["pixels"]);
     EXPECT_EQ(s.at("carol")["screenshot"], "carol/screenshot.png: is the render of the scene");
     EXPECT_NE(s.at("dave")["reasons"][1].get<std::string>().find("is metal_blinn, not metal"), std::string::npos);
+    // The terminal gives every reason too, the first on the student's line, the others under it.
+    EXPECT_NE(run.err.find("m3055: dave: 50 / 100 fail: image: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("\n  also: rules[0] (model): objects[0] is metal_blinn, not metal\n"), std::string::npos)
+        << run.err;
     EXPECT_NE(s.at("frank")["broken"].get<std::string>().find("lobes[0].m: must be in [0.001, 2], got 5"),
               std::string::npos);
     // alice.png is byte for byte what `m3055 render` writes for her scene.
