@@ -32,7 +32,11 @@ const NonFiniteView& Readouts::nonfinite(const Scene& scene, Renderer& renderer)
 
 const RowProfile* Readouts::profile(const Display& shown, int row, Renderer& renderer) {
     if (row < 0 || row >= shown.height) return nullptr;  // none yet, or the display shrank
-    if (!profile_ || profile_->row != row) profile_ = row_profile(display(renderer), shown.bits, row);
+    if (!profile_ || profile_->row != row) {
+        const Rgb8Image& image = display(renderer);
+        if (row >= image.height) return nullptr;  // the scene's display not drawn at its size yet
+        profile_ = row_profile(image, shown.bits, row);
+    }
     return &*profile_;
 }
 

@@ -6,9 +6,12 @@
 #include "explore/overloaded.h"
 #include "grading/ab_compare.h"
 #include "passes/brdf_grid.h"
+#include "passes/shader_plan.h"
 
 #include <algorithm>
 #include <chrono>
+#include <set>
+#include <string>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -81,10 +84,46 @@ DisplayPanes::Refined DisplayPanes::refined_of(const Explorer& explorer) {
     return {explorer.doc.revision, true, explorer.view.selected_object, selected_group(explorer)};
 }
 
+namespace {
+// What decides a scene's programs beside its object shapes: its area lights'
+// and shadows' defines and its models (A's, and B's in the split); "" for a
+// scene without area lights or shadows (its general programs are built at start).
+std::string program_shape(const Explorer& explorer) {
+    const std::vector<std::string> features = area_and_shadow_defines(explorer.doc.scene.lights);
+    if (features.empty()) return "";
+    std::set<std::string> parts(features.begin(), features.end());
+    for (const Object& object : explorer.doc.scene.objects)
+        for (const Material* material : materials_of(object)) parts.insert(material->model().name);
+    if (explorer.view.compare) parts.insert(explorer.doc.material_b.model().name);
+    std::string shape;
+    for (const std::string& part : parts) shape += part + " ";
+    return shape;
+}
+}  // namespace
+
 double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (!explorer.session.render_needed) return -1.0;
     explorer.session.render_needed = false;
     if (refined_ == refined_of(explorer)) return -1.0;
+    // A scene with area lights or shadows has no general program standing in
+    // while its own compiles (frame/renderer.h): one not drawn before in this
+    // session first shows a frame that says "compiling..." (this frame, and the
+    // next, which shows it), then holds the displays while llvmpipe builds it.
+    // Not before the display was drawn at the scene's size (the first render):
+    // there is nothing to keep showing.
+    const std::string shape = program_shape(explorer);
+    const Display& display = explorer.doc.scene.display;
+    const bool shows_this_size = renderer_a_->width() == display.width && renderer_a_->height() == display.height;
+    if (!shape.empty() && shows_this_size && announce_frames_ == 0 && !drawn_program_shapes_.count(shape) &&
+        announced_shape_ != shape) {
+        announced_shape_ = shape;
+        announce_frames_ = 2;
+    }
+    if (announce_frames_ > 0) {
+        --announce_frames_;
+        explorer.session.render_needed = true;
+        return -1.0;
+    }
     refined_.reset();
     const auto start = std::chrono::steady_clock::now();
     const bool preview = preview_differs(explorer.doc.scene) || (explorer.view.compare && preview_differs(compare_scene(explorer)));
@@ -98,6 +137,7 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
         explorer.session.messages.error = e.what();
     }
     const double ms = milliseconds_since(start);
+    if (!shape.empty()) drawn_program_shapes_.insert(shape);
     if (preview) preview_scale_.note(ms, divisor);
     refine_pending_ = preview;
     refine_tiles_.start(explorer.doc.scene.display.width, explorer.doc.scene.display.height);

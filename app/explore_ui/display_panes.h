@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,9 @@ public:
     // A preview of area lights is showing (explore/display_renderers.h): the
     // display is "refining" until refine() has drawn the render's pixels.
     bool refining() const { return refine_pending_; }
+    // The displays wait one frame that says "compiling..." before a render
+    // that may hold them for seconds (see render_if_needed).
+    bool compile_announced() const { return announce_frames_ > 0; }
     bool refine_started() const { return refine_pending_ && refine_tiles_.started(); }
     // The next tile, top down (explore/refine_tiles.h), drawn with the render's samples
     // (about kRefineBandMs); the last one leaves the displays showing the render's pixels.
@@ -123,6 +127,11 @@ private:
     PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
     bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
     RefineTiles refine_tiles_;     // where the refine draws next
+    // Area lights or shadows, and the models, of the scenes drawn so far (their
+    // programs are built), the one announced last, and how many frames more wait for it.
+    std::set<std::string> drawn_program_shapes_;
+    std::string announced_shape_;
+    int announce_frames_ = 0;
     // What the displays show refined: the document's revision, and in the split
     // which object wears material B. A render asked for again (a read-out, a
     // screenshot) of the same keeps those pixels rather than draw a preview.

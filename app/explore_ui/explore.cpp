@@ -164,7 +164,8 @@ public:
         imgui_.new_frame();
         apply_keys();
         e_.session.busy =
-            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0, panes_ && panes_->refining());
+            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() + panes_->compile_announced() : 0,
+                      panes_ && panes_->refining());
 
         // 2. Where everything goes this frame (explore/layout.h).
         const ImGuiIO& io = ImGui::GetIO();
@@ -208,7 +209,8 @@ public:
         // What the next frame will show beside the menu: a preview drawn above is refining from now
         // on (a script's `settle` reads it after this frame).
         e_.session.busy =
-            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() : 0, panes_ && panes_->refining());
+            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() + panes_->compile_announced() : 0,
+                      panes_ && panes_->refining());
 
         // 6. The plots and statistics under the display, then the display panes.
         if (e_.view.show_panels) draw_plots(layout, views_shown, plots_were_folded);
