@@ -10,10 +10,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <set>
-#include <string>
 #include <cstdio>
+#include <set>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace m3055::explore {
