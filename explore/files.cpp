@@ -5,6 +5,7 @@
 #include "explore/operations.h"
 #include "image/image.h"
 #include "scene/load.h"
+#include "scene/scene_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -78,7 +79,7 @@ std::string scene_file_text(const Explorer& e, const std::string& path) {
     const std::string& folder = e.session.platform.brdf_paths_relative_to;
     PathWriting writing{folder, folder};
     if (folder.empty()) writing.model_files_relative_to = std::filesystem::absolute(path).parent_path().string();
-    return scene_to_json(e.doc.scene, writing).dump(2) + "\n";
+    return scene_text(scene_to_json(e.doc.scene, writing));
 }
 
 std::string full_path(const std::string& path) {
