@@ -4,14 +4,15 @@
 // model family under every new light, with and without shadows, on a floor
 // (a mesh plane), a sphere and a cube, at the render's sampling
 // (passes/light_uniforms.h: kRenderSampling). On interior pixels:
-//   - no NaN or Inf, no pixel more than two display levels off;
+//   - no NaN or Inf;
 //   - unbiased: the mean of gpu - ref within 3e-4 (a missed occluder, a
 //     wrong pdf or a lost sample shows here);
-//   - the noise of the samples: mean |gpu - ref| <= 1e-3 and >= 97 % of pixels
-//     on the same level, except the sky's shadow (a ray for each of its
-//     samples, 80 a pixel): mean |diff| <= 6e-3.
-// docs/lights.md has the measured errors of each case, and how far they are
-// from docs/spec.md's target (99.5 % on the same level, none more than one off).
+//   - rects and disks, shadowed or not: docs/spec.md's target, >= 99.5 % of
+//     pixels on the same display level and none more than one off;
+//   - the sky: none more than one level off, >= 99 % on the same level
+//     unshadowed; its shadow (a ray for each of its samples, 128 a pixel)
+//     mean |diff| <= 3e-3 (its visibility's noise: not yet at the target).
+// docs/lights.md has the measured errors of each case.
 #include "gpu_compare.h"
 
 #include "frame/renderer.h"
@@ -29,11 +30,12 @@
 namespace m3055 {
 namespace {
 
-constexpr int kMaxLevelDiff = 2;
+constexpr int kMaxLevelDiff = 1;
 constexpr double kBias = 3e-4;
 constexpr double kMeanDiff = 1e-3;
-constexpr double kSameLevelShare = 0.97;
-constexpr double kSkyShadowMeanDiff = 6e-3;
+constexpr double kSameLevelShare = 0.995;     // docs/spec.md's target
+constexpr double kSkySameLevelShare = 0.99;   // unshadowed sky: metal 99.03 %, the rest >= 99.5 %
+constexpr double kSkyShadowMeanDiff = 3e-3;
 
 struct LightCase {
     std::string name;
@@ -97,11 +99,12 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     EXPECT_EQ(c.nonfinite_values, 0);
     EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
     EXPECT_LE(std::abs(c.mean_signed_diff), kBias);
-    if (kLights[l].name == "sky" && shadow) {
+    const bool sky = kLights[l].name == "sky";
+    if (sky && shadow) {
         EXPECT_LE(c.mean_abs_diff, kSkyShadowMeanDiff);
     } else {
         EXPECT_LE(c.mean_abs_diff, kMeanDiff);
-        EXPECT_GE(c.same_level_share, kSameLevelShare);
+        EXPECT_GE(c.same_level_share, sky ? kSkySameLevelShare : kSameLevelShare);
     }
 }
 

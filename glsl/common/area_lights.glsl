@@ -4,10 +4,10 @@
 // the point sees it, r being what a unit directional light from w adds; the
 // samples estimate it, and the models are the integrand untouched.
 //
-// The estimate (docs/lights.md). n x n strata of the unit square, the lattice
-// shifted by a per-pixel, per-light Cranley-Patterson rotation (so the error
-// is fine noise, not bands, and the same pixel gets the same samples in every
-// render, desktop and browser), mapped onto the emitter (uniform in area for a
+// The estimate (docs/lights.md). n x n points of the unit square, one a
+// stratum (stratum_point: a (0, 2)-net), randomized per pixel and light (so
+// the error is fine noise, not bands, and the same pixel gets the same samples
+// in every render, desktop and browser), mapped onto the emitter (uniform in area for a
 // rect or disk, cosine-weighted about N for the sky) and, for a model with a
 // highlight, onto a Phong lobe about V's mirror direction too; the two are
 // combined by the balance heuristic (common/lights.glsl: walk_direction).
@@ -57,8 +57,35 @@ vec2 strata_rotation(int i) {
     return vec2(float(h >> 8u), float(pcg_hash(h) >> 8u)) * (1.0 / 16777216.0);
 }
 
-// Sample k of n x n: its stratum's centre, shifted by `rotation` (mod 1).
+// k's 32 bits in reverse order (GLSL ES 3.00 has no bitfieldReverse): the
+// top 24 of them are k's radical inverse in base 2 (van der Corput).
+uint reverse_bits(uint v) {
+    v = ((v >> 1u) & 0x55555555u) | ((v & 0x55555555u) << 1u);
+    v = ((v >> 2u) & 0x33333333u) | ((v & 0x33333333u) << 2u);
+    v = ((v >> 4u) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4u);
+    v = ((v >> 8u) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8u);
+    return (v >> 16u) | (v << 16u);
+}
+
+// Sample k of n x n. Where n = 2^m (2, 4, 8, 16), a point of Hammersley's
+// (0, 2m, 2)-net in base 2 (x = k / n², y = k's 2m bits reversed): one point in
+// each of the n x n strata, and also in each of n² columns and n² rows and
+// every other dyadic box of area 1 / n², so a shadow edge along a side of a
+// rect moves the visible share in n² steps where a grid's whole rows of
+// samples go dark at once (n steps). Randomized by a digital shift (the 24
+// bits of `rotation` XORed in), which keeps every one of those boxes (Kollig
+// and Keller 2002, "Efficient multidimensional sampling"); Cranley and
+// Patterson's shift mod 1 would not. Other n: the stratum's centre, shifted
+// by `rotation` (mod 1); n = 1, unrotated, is the emitter's centre.
 vec2 stratum_point(int k, int n, vec2 rotation) {
+    if (n >= 2 && (n & (n - 1)) == 0) {
+        // 2^24 / n² in float (exact: a power of two): llvmpipe has no vector integer
+        // division, and a udiv here made the softbox's render twice as slow.
+        uint column = uint(16777216.0 / float(n * n));
+        uvec2 net = uvec2(uint(k) * column, reverse_bits(uint(k)) >> 8u);
+        uvec2 shift = uvec2(rotation * 16777216.0);  // exact: rotation is a 24-bit fraction (strata_rotation)
+        return vec2(net ^ shift) * (1.0 / 16777216.0);
+    }
     vec2 cell = vec2(float(k % n), float(k / n));
     return fract((cell + 0.5) / float(n) + rotation);
 }
@@ -130,15 +157,19 @@ float emitter_area(int i, int type) {
     return type == LIGHT_RECT ? 4.0 * r0 * r1 : PI * r0 * r1;
 }
 
-// Sample k of n x n of area light i (of type `type`) from the point P of normal N.
-AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
-    vec2 u = stratum_point(k, n, rotation);
+// The point u of the unit square mapped onto area light i (of type `type`) seen from P (normal N).
+AreaSample area_sample_at(int i, int type, vec2 u, vec3 P, vec3 N) {
     vec3 centre = u_light_vector[i].xyz;
     vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
     if (type == LIGHT_SKY) return sky_sample(N, centre, u);
     vec3 normal = u_light_spot[i].xyz;
     vec2 at = type == LIGHT_RECT ? 2.0 * u - 1.0 : concentric_disk(u);
     return emitter_sample(P, centre + at.x * e0 + at.y * e1, normal, emitter_area(i, type));
+}
+
+// Sample k of n x n of area light i (of type `type`) from the point P of normal N.
+AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
+    return area_sample_at(i, type, stratum_point(k, n, rotation), P, N);
 }
 
 // The density with which area_sample draws the direction w (0 where w misses

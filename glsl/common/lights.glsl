@@ -150,7 +150,12 @@ float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
     if (type == LIGHT_SKY || u_area_samples <= 1) return -1.0;
     bool some_seen = false, some_hidden = false;
     for (int k = 0; k < probe * probe; ++k) {
-        AreaSample s = area_sample(i, type, k, probe, rotation, P, N);
+        // The probes on a lattice that takes in the emitter's edge (u = 0 and 1:
+        // its corners and edges' midpoints, and its centre at 3 x 3), the same
+        // for every pixel: an occluder's edge enters a penumbra across the
+        // emitter's boundary, where rotated strata's centres, 1/6 in, missed it.
+        vec2 u = probe > 1 ? vec2(float(k % probe), float(k / probe)) / float(probe - 1) : vec2(0.5);
+        AreaSample s = area_sample_at(i, type, u, P, N);
         if (!(s.pdf > 0.0 && dot(N, s.L) > 0.0)) continue;
         if (occluded(P, N, s.L, s.distance)) some_hidden = true;
         else some_seen = true;
