@@ -95,6 +95,46 @@ TEST_P(ModelFileGpu, FileMaterialsMatchTheReference) {
 INSTANTIATE_TEST_SUITE_P(Projection, ModelFileGpu, ::testing::Bool(),
                          [](const auto& info) { return std::string(info.param ? "ortho" : "persp"); });
 
+// A glTF sheet (one quad facing +z) seen from behind: culled as a one-sided
+// surface, as the spec shades only front faces; with its material doubleSided
+// (glTF 2.0 §3.9.6) its back is drawn, lit with the normal reversed, on the
+// GPU as in the reference. Front and back of a lit double-sided sheet are the
+// same quad lit from either side.
+TEST(ModelFileAccuracy, ADoubleSidedGltfMaterialShowsItsBack) {
+    TempDir dir;
+    geometry::Mesh sheet;
+    sheet.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    sheet.normals.assign(4, dvec3(0, 0, 1));
+    sheet.indices = {0, 1, 2, 0, 2, 3};
+    sheet.parts = {0, 0};
+    auto lit_pixels = [](const Rgb8Image& image) {
+        long lit = 0;
+        for (std::uint8_t v : image.pixels) lit += v != 0;
+        return lit;
+    };
+    Renderer& renderer = test::shared_renderer();
+    for (const bool double_sided : {false, true}) {
+        SCOPED_TRACE(double_sided ? "doubleSided" : "one-sided");
+        test::write_gltf(sheet, dir.file("sheet.gltf"));
+        json doc = json::parse(test::read_text(dir.file("sheet.gltf")));
+        doc["materials"] = json::array({{{"name", "paper"}, {"doubleSided", double_sided},
+                                         {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.7, 0.5, 1}},
+                                                                   {"metallicFactor", 0.0}, {"roughnessFactor", 0.6}}}}});
+        doc["meshes"][0]["primitives"][0]["material"] = 0;
+        test::write_text(dir.file("sheet.gltf"), doc.dump());
+        // Turned 160 degrees about y: the camera (at +z) sees its back; the key light is behind the camera.
+        const Scene scene = scene_of(dir, json::array({mesh_object("sheet.gltf", {0, 0, 0}, 2.5, {0, 160, 0})}));
+        renderer.render(scene);
+        const long lit = lit_pixels(renderer.read_display());
+        if (!double_sided) {
+            EXPECT_EQ(lit, 0);
+            continue;
+        }
+        EXPECT_GT(lit, 10000);
+        expect_matches(scene);
+    }
+}
+
 // Pixels whose 3 x 3 neighbourhood is covered in both coverages.
 bool interior(const ref::ReferenceImage& a, const ref::ReferenceImage& b, int x, int y, int w, int h) {
     for (int dy = -1; dy <= 1; ++dy)

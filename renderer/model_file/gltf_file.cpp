@@ -397,6 +397,7 @@ private:
                 m.kind = FileMaterial::Kind::gltf;  // glTF's default material: white, metallic 1, roughness 1
             }
             soup_.materials.push_back(m);
+            double_sided_.push_back(material >= 0 && model_.materials[std::size_t(material)].doubleSided);
         }
         return found->second;
     }
@@ -437,7 +438,9 @@ private:
                 else triangles.insert(triangles.end(), {order[i - 1], order[i - 2], order[i]});
             }
         }
-        if (soup_.groups.size() + triangles.size() / 3 > max_triangles_)
+        const std::uint32_t g = group(primitive.material);
+        const std::size_t sides = double_sided_[g] ? 2 : 1;
+        if (soup_.groups.size() + sides * (triangles.size() / 3) > max_triangles_)
             throw ModelError("has more than the " + std::to_string(max_triangles_) + " triangles a scene may have");
         // World positions; normals by the inverse transpose; a mirroring transform reverses the winding.
         const glm::dmat3 linear(transform);
@@ -447,11 +450,38 @@ private:
         const std::int64_t normal_base = std::int64_t(soup_.normals.size());
         for (const dvec3& p : points) soup_.positions.push_back(dvec3(transform * glm::dvec4(p, 1.0)));
         for (const dvec3& n : normals) soup_.normals.push_back(normal_matrix * n);
-        const std::uint32_t g = group(primitive.material);
         for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t v = triangles[t + std::size_t(mirrored && k > 0 ? 3 - k : k)];
                 soup_.corners.push_back({base + v, normals.empty() ? -1 : normal_base + v});
+            }
+            soup_.groups.push_back(g);
+        }
+        if (sides == 2) add_back_faces(triangles, points.size(), base, normals.size(), normal_base, mirrored, g);
+    }
+
+    // A doubleSided material (glTF 2.0 §3.9.6: no back-face culling, the back
+    // lit with its normal reversed) as the same triangles again, wound the
+    // other way, with reversed normals, on copies of their positions (so that
+    // normals made for a file without them smooth each side on its own): the
+    // mesh pass, the reference and shadows then see two one-sided surfaces,
+    // and every one of them keeps the spec's rule that only front faces shade.
+    void add_back_faces(const std::vector<std::uint32_t>& triangles, std::size_t points, std::uint32_t base,
+                        std::size_t normals, std::int64_t normal_base, bool mirrored, std::uint32_t g) {
+        const std::uint32_t back = std::uint32_t(soup_.positions.size());
+        const std::int64_t back_normals = std::int64_t(soup_.normals.size());
+        for (std::size_t i = 0; i < points; ++i) {
+            const dvec3 p = soup_.positions[base + i];
+            soup_.positions.push_back(p);
+        }
+        for (std::size_t i = 0; i < normals; ++i) {
+            const dvec3 n = soup_.normals[std::size_t(normal_base) + i];
+            soup_.normals.push_back(-n);
+        }
+        for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = triangles[t + std::size_t(!mirrored && k > 0 ? 3 - k : k)];
+                soup_.corners.push_back({back + v, normals == 0 ? -1 : back_normals + v});
             }
             soup_.groups.push_back(g);
         }
@@ -461,6 +491,7 @@ private:
     Soup& soup_;
     std::size_t max_triangles_;
     std::map<int, std::uint32_t> groups_;
+    std::vector<bool> double_sided_;  // per group: its material's doubleSided
 };
 
 }  // namespace
