@@ -86,7 +86,7 @@ bool object_fields(Explorer& explorer, int i) {
 
 void objects_section(Explorer& explorer) {
     const char* chord = figure_chord_name(explorer.session.platform.figure_chord);
-    ImGui::TextWrapped("figure presets (%s+1-9, %s+0 = spec example):", chord, chord);
+    ImGui::TextWrapped("figure presets (%s+1-9 = Fig. 5-13, %s+0 = spec example) and scenes:", chord, chord);
     int n = 0;
     for (const FigureScene& figure : figure_scenes()) {
         std::string label = figure.name;
