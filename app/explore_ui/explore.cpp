@@ -163,9 +163,7 @@ public:
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
-        e_.session.busy =
-            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() + panes_->compile_announced() : 0,
-                      panes_ && panes_->refining());
+        e_.session.busy = busy_now();
 
         // 2. Where everything goes this frame (explore/layout.h).
         const ImGuiIO& io = ImGui::GetIO();
@@ -208,9 +206,7 @@ public:
         }
         // What the next frame will show beside the menu: a preview drawn above is refining from now
         // on (a script's `settle` reads it after this frame).
-        e_.session.busy =
-            busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() + panes_->compile_announced() : 0,
-                      panes_ && panes_->refining());
+        e_.session.busy = busy_now();
 
         // 6. The plots and statistics under the display, then the display panes.
         if (e_.view.show_panels) draw_plots(layout, views_shown, plots_were_folded);
@@ -241,6 +237,12 @@ public:
 
 private:
     double last_refine_frame_ = 0.0;  // when a refine's tile was last shown (window time)
+
+    // What stands beside the menu: compiles waiting or announced, a refine, a .brdf being watched.
+    std::string busy_now() const {
+        return busy_line(e_.session.brdf_watch, panes_ ? panes_->deferred_programs() + panes_->compile_announced() : 0,
+                         panes_ && panes_->refining());
+    }
     void owe_frames(int frames) { window_.events().frames_owed = std::max(window_.events().frames_owed, frames); }
 
     // A specialized program waiting: after kIdleBeforeCompile s with no

@@ -99,7 +99,7 @@ std::string scalar_text(const json& value) { return value.dump(); }
 bool is_container(const json& value) { return value.is_object() || value.is_array(); }
 
 // The value on one line: {"a": 1, "b": [1, 2]} as { "a": 1, "b": [1, 2] }.
-std::string one_line(const json& value, Kind kind) {
+std::string inline_text(const json& value, Kind kind) {
     if (value.is_object()) {
         if (value.empty()) return "{}";
         std::string out = "{ ";
@@ -107,13 +107,13 @@ std::string one_line(const json& value, Kind kind) {
         for (const std::string& key : ordered_keys(value, kind)) {
             if (!first) out += ", ";
             first = false;
-            out += json(key).dump() + ": " + one_line(value.at(key), member_kind(kind, key));
+            out += json(key).dump() + ": " + inline_text(value.at(key), member_kind(kind, key));
         }
         return out + " }";
     }
     if (value.is_array()) {
         std::string out = "[";
-        for (std::size_t i = 0; i < value.size(); ++i) out += (i ? ", " : "") + one_line(value[i], kind);
+        for (std::size_t i = 0; i < value.size(); ++i) out += (i ? ", " : "") + inline_text(value[i], kind);
         return out + "]";
     }
     return scalar_text(value);
@@ -152,7 +152,7 @@ void write_value(const json& value, Kind kind, std::size_t indent, std::size_t c
     // The scene's lights and objects: one a line, however few.
     const bool list_of_things = value.is_array() && (kind == Kind::light || kind == Kind::object);
     if (!top && !list_of_things) {
-        const std::string line = one_line(value, kind);
+        const std::string line = inline_text(value, kind);
         if (column + line.size() + 1 <= kWidth) {  // + 1: the comma after it
             out += line;
             return;
