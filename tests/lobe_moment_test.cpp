@@ -101,6 +101,21 @@ TEST(LobeMoment, TheHemisphereHasItsKnownMoments) {
     EXPECT_NEAR(clipped_lobe_integral(hemisphere_corners(up), up, N, N, 1), 0.5 * kPi * (1.0 + glm::dot(N, up)), 1e-12);
 }
 
+TEST(LobeMoment, AnOctantHasItsKnownMoments) {
+    // Three hemispheres whose planes meet at right angles: an eighth of the sphere, pi / 2.
+    const std::vector<dvec3> octant = {dvec3(1, 0, 0), dvec3(0, 1, 0), dvec3(0, 0, 1)};
+    // x over it is the area of its shadow on the yz plane, a quarter of the unit disk;
+    // x^2, y^2 and z^2 share the octant's solid angle alike.
+    EXPECT_NEAR(lobe_integral_in_hemispheres(octant, octant[2], dvec3(1, 0, 0), 1), kPi / 4.0, 1e-12);
+    EXPECT_NEAR(lobe_integral_in_hemispheres(octant, octant[2], dvec3(0, 1, 0), 2), kPi / 6.0, 1e-12);
+    // The same plane twice is one boundary, not two; opposite planes leave no area.
+    std::vector<dvec3> twice = octant;
+    twice.push_back(octant[0]);
+    EXPECT_NEAR(lobe_integral_in_hemispheres(twice, octant[2], dvec3(1, 0, 0), 1), kPi / 4.0, 1e-12);
+    twice.back() = -octant[0];
+    EXPECT_EQ(lobe_integral_in_hemispheres(twice, octant[2], dvec3(1, 0, 0), 1), 0.0);
+}
+
 TEST(LobeMoment, MatchesQuadratureOverARectWithTheLobesHorizonAcrossIt) {
     const dvec3 c(0.2, -0.1, 1.0), e0(0.7, 0.1, 0.2), e1(-0.1, 0.5, 0.1);
     const dvec3 N(0.0, 0.0, 1.0);

@@ -32,8 +32,8 @@ const Setting kSettings[] = {
     {"fast preview (explorer)", kFastSampling},
     {"2 x 2 samples, 2 x 2 probe", {2, 2}},
     {"4 x 4 samples, 3 x 3 probe", {4, 3}},
-    {"8 x 8 samples, 3 x 3 probe (render)", kRenderSampling},
-    {"8 x 8 samples, 3 x 3 probe, lobe closed form", {8, 3, true}},
+    {"8 x 8 samples, 3 x 3 probe", {8, 3}},
+    {"8 x 8 samples, 3 x 3 probe, lobe closed form (render)", kRenderSampling},
     {"12 x 12 samples, 3 x 3 probe", {12, 3}},
     {"16 x 16 samples, 3 x 3 probe", {16, 3}},
 };

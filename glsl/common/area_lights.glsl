@@ -28,9 +28,6 @@
 // which keeps small angles that acos(a . b) loses.
 
 #include "common/constants.glsl"
-#ifdef HAS_LOBE_CLOSED_FORM  // AreaSampling::lobe_closed_form: off in the render, its code is large
-#include "common/lobe_moment.glsl"
-#endif
 
 #define LIGHT_RECT 3
 #define LIGHT_DISK 4
@@ -292,6 +289,10 @@ float area_exact_projected(int i, int type, vec3 P, vec3 N) {
     return disk_projected_solid_angle(c, e0, e1, N);
 }
 
+#ifdef HAS_LOBE_CLOSED_FORM  // AreaSampling::lobe_closed_form
+#include "common/lobe_moment.glsl"
+#endif
+
 // The integral over area light i (a rect or the sky) seen from P above N's
 // horizon of the Phong lobe ((D . w)+)^e, or -1 where it has no closed form
 // here: a disk, a rect below kExactMinSize, e not a whole number in
@@ -301,19 +302,22 @@ float area_exact_lobe(int i, int type, vec3 P, vec3 N, vec3 D, float e) {
     return -1.0;
 #else
     if (type == LIGHT_DISK || e < 1.0 || e > float(kLobeMomentMaxExponent) || e != floor(e)) return -1.0;
-    vec3 v[kLobePolygonMax];
+    vec3 m[kLobeHemispheres];
     vec3 centre = u_light_vector[i].xyz;
-    if (type == LIGHT_SKY) {  // the hemisphere about up, four quarters of its horizon, counter-clockwise
-        vec3 T, B;
-        complete_frame(centre, T, B);
-        v[0] = T, v[1] = B, v[2] = -T, v[3] = -B;
-        return clipped_lobe_integral(v, 4, centre, N, D, int(e));
+    if (type == LIGHT_SKY) {  // the hemisphere about up; the same plane again counts once
+        m[0] = centre, m[1] = centre, m[2] = centre, m[3] = centre;
+    } else {
+        vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+        vec3 c = centre - P;
+        if (max(length(e0), length(e1)) < kExactMinSize * length(c)) return -1.0;
+        // The rect's corners seen from P, and each edge's plane, its normal turned inwards.
+        vec3 q0 = c - e0 - e1, q1 = c + e0 - e1, q2 = c + e0 + e1, q3 = c - e0 + e1;
+        float winding = dot(cross(q0, q1), c) >= 0.0 ? 1.0 : -1.0;
+        m[0] = winding * normalize(cross(q0, q1)), m[1] = winding * normalize(cross(q1, q2));
+        m[2] = winding * normalize(cross(q2, q3)), m[3] = winding * normalize(cross(q3, q0));
     }
-    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
-    vec3 c = centre - P;
-    if (max(length(e0), length(e1)) < kExactMinSize * length(c)) return -1.0;
-    v[0] = c - e0 - e1, v[1] = c + e0 - e1, v[2] = c + e0 + e1, v[3] = c - e0 + e1;
-    return clipped_lobe_integral(v, 4, c, N, D, int(e));
+    m[4] = N, m[5] = D;
+    return lobe_integral_in_hemispheres(m, D, int(e));
 #endif
 }
 

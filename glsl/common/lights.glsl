@@ -219,7 +219,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
     walk.rotation = n > 1 ? strata_rotation(i) : vec2(0.0);
     // A shadowed sky traces every sample (emitter_seen); its lobe keeps n x n of them all the
     // same: a quarter as many left the shadowed sky 3 levels off in places (the lobe's closed
-    // form, which would keep the unshadowed part exact, is off in the render).
+    // form keeps only the unshadowed part exact).
     walk.lobe_side = n;
     walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? walk.lobe_side * walk.lobe_side : 0);
 #ifdef HAS_SHADOWS

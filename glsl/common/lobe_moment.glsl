@@ -1,95 +1,82 @@
 // The closed form of a Phong lobe over a spherical polygon: the integral of
 // ((D . u)+)^n over the directions u of a rect or of the sky above a point's
-// horizon, n a whole number (Arvo 1995, "Applications of irradiance tensors to
+// horizon (and D's), n a whole number (Arvo 1995, "Applications of irradiance tensors to
 // the simulation of non-Lambertian phenomena", the axial moments). With it the
 // samples of an area light integrate a highlight (R_V . L)^m as exactly as
 // Lambert's formula makes them integrate N . L (common/lights.glsl:
-// light_walk). C++ twin: reference/lobe_moment.h (same names).
+// light_walk). C++ twin: reference/lobe_moment.h (same names). Needs
+// complete_frame (common/area_lights.glsl).
 //
-// The recurrence, from the sphere's Laplacian of (D.u)^k over the polygon and
-// Green's theorem on its boundary (m_i each edge's plane normal, inwards):
+// The region is an intersection of hemispheres {u : m . u >= 0}: the rect's four
+// edges' (the sky's one horizon), N's and D's. Its boundary is an arc of each
+// plane's great circle, the part inside all the other hemispheres; each arc is
+// found on its own (no polygon is clipped and stored: llvmpipe compiled the
+// clipping's indexed arrays for 45 s, docs/lights.md). The recurrence, from the
+// sphere's Laplacian of (D.u)^k over the region and Green's theorem on its
+// boundary (m_i each arc's plane normal, inwards):
 //     I_k = (k - 1) / (k + 1) I_{k-2} + 1 / (k + 1) sum_i (D . m_i) F_{i,k-1},
 //     I_0 = the solid angle, I_1 = Lambert's formula about D
-// (its factors telescope: clipped_lobe_integral sums each edge's F_j alone),
-// and along an edge of length T, f(t) = D . u(t) = a cos t + b sin t:
+// (its factors telescope: lobe_integral_in_hemispheres sums each arc's F_j alone),
+// and along an arc of length T, f(t) = D . u(t) = a cos t + b sin t:
 //     F_j = ((j - 1) (a^2 + b^2) F_{j-2} - [f^{j-1} f']_0^T) / j, F_0 = T.
 // Precision: float keeps the sum to about 1e-6 of the lobe's whole integral
 // 2 pi / (n + 1); kLobeMomentMaxExponent bounds the terms the recurrence adds.
 
 const int kLobeMomentMaxExponent = 64;
-const int kLobePolygonMax = 8;  // a rect's 4 corners, one per cut by two planes, and a quarter-circle corner each
+const int kLobeHemispheres = 6;      // a rect's four edges (the sky: its horizon, repeated), N's and D's horizons
+const float kLobeSameCircle = 1e-6;  // two planes' normals this close to parallel: one great circle
 
-// Which side of the plane through the origin with normal `plane` q lies on (0: on it, to rounding).
-int side_of_plane(vec3 q, vec3 plane) {
-    float d = dot(q, plane), tolerance = 1e-6 * length(q);
-    return d > tolerance ? 1 : (d < -tolerance ? -1 : 0);
+// The part [lo, hi] (none: hi <= lo) of plane k's great circle inside every other
+// hemisphere, as angles t of u(t) = cos t e1 + sin t e2, e2 = m[k] x e1 (moving
+// along it keeps the region on the left). Each other hemisphere is a half
+// circle, [c - pi/2, c + pi/2] about the angle c of its normal in the circle's
+// frame; half circles meet in one arc.
+vec2 arc_on_circle(vec3 m[kLobeHemispheres], int k, vec3 e1, vec3 e2) {
+    vec2 arc = vec2(0.0, 2.0 * PI);
+    bool whole = true;
+    for (int j = 0; j < kLobeHemispheres; ++j) {
+        if (j == k) continue;
+        vec2 ab = vec2(dot(m[j], e1), dot(m[j], e2));
+        if (length(ab) < kLobeSameCircle) continue;  // the same circle (an opposite one: no region, tested before)
+        float c = atan(ab.y, ab.x);
+        if (!whole) c -= 2.0 * PI * floor((c - 0.5 * (arc.x + arc.y)) / (2.0 * PI) + 0.5);
+        arc = whole ? vec2(c - 0.5 * PI, c + 0.5 * PI) : vec2(max(arc.x, c - 0.5 * PI), min(arc.y, c + 0.5 * PI));
+        whole = false;
+    }
+    return arc;
 }
 
-// Sutherland-Hodgman: the part of the convex polygon v[0 .. count) (wound by
-// `winding` about its inside: +1 counter-clockwise) where plane . u >= 0. A
-// cut spanning more than a quarter of the plane's great circle (the sky's
-// hemisphere cut by any plane: half of it) gets the corner a quarter along.
-int clip_polygon_to_plane(inout vec3 v[kLobePolygonMax], int count, vec3 plane, float winding) {
-    vec3 kept[kLobePolygonMax];
-    bool on_plane[kLobePolygonMax];
-    int n = 0;
-    for (int i = 0; i < count; ++i) {
-        vec3 a = v[i], b = v[(i + 1) % count];
-        int sa = side_of_plane(a, plane), sb = side_of_plane(b, plane);
-        if (sa >= 0 && n < kLobePolygonMax) {
-            kept[n] = a;
-            on_plane[n++] = sa == 0;
-        }
-        if (sa * sb < 0 && n < kLobePolygonMax) {
-            float da = dot(a, plane), db = dot(b, plane);
-            kept[n] = a + (da / (da - db)) * (b - a);
-            on_plane[n++] = true;
-        }
-    }
-    int count_out = 0;
-    for (int i = 0; i < n; ++i) {
-        if (count_out < kLobePolygonMax) v[count_out++] = kept[i];
-        int j = (i + 1) % n;
-        if (on_plane[i] && on_plane[j] && dot(kept[i], kept[j]) < 0.0 && count_out < kLobePolygonMax)
-            v[count_out++] = winding * cross(plane, normalize(kept[i]));
-    }
-    return count_out;
+// The signed solid angle of the spherical triangle (pole, a, b) (Van Oosterom and Strackee 1983).
+float triangle_solid_angle(vec3 pole, vec3 a, vec3 b) {
+    return 2.0 * atan(dot(pole, cross(a, b)), 1.0 + dot(pole, a) + dot(pole, b) + dot(a, b));
 }
 
-// The integral of ((D . u)+)^e dw over the directions u of the convex polygon
-// v[0 .. count) (within a hemisphere, `inside` a direction inside it) above the
-// horizons of N and D; e a whole number in [1, kLobeMomentMaxExponent].
-float clipped_lobe_integral(vec3 v[kLobePolygonMax], int count, vec3 inside, vec3 N, vec3 D, int e) {
-    float winding = dot(cross(v[0], v[1]), inside) >= 0.0 ? 1.0 : -1.0;
-    count = clip_polygon_to_plane(v, count, N, winding);
-    count = clip_polygon_to_plane(v, count, D, winding);
-    // Unit corners, none repeating its predecessor (an edge of no length has no plane).
-    vec3 u[kLobePolygonMax];
-    int n = 0;
-    for (int i = 0; i < count; ++i) {
-        vec3 q = normalize(v[i]);
-        if (n == 0 || length(cross(u[n - 1], q)) > 1e-6) u[n++] = q;
-    }
-    if (n > 1 && length(cross(u[n - 1], u[0])) <= 1e-6) --n;
-    if (n < 3) return 0.0;
-    // The recurrence's factors telescope: I_e = (I_0 [e even] + sum over edges of
-    // (D . m) sum_{j = e - 1, e - 3, ... >= 0} F_j) / (e + 1). So each edge is
-    // walked alone, its F_j in scalars (arrays indexed in loops are slow on llvmpipe).
+// The integral of ((D . u)+)^e dw over the intersection of the hemispheres of
+// unit m[0 .. kLobeHemispheres), m[kLobeHemispheres - 2] = N and the last = D;
+// e a whole number in [1, kLobeMomentMaxExponent].
+float lobe_integral_in_hemispheres(vec3 m[kLobeHemispheres], vec3 D, int e) {
+    for (int k = 1; k < kLobeHemispheres; ++k)
+        for (int j = 0; j < k; ++j)
+            if (length(cross(m[j], m[k])) < kLobeSameCircle && dot(m[j], m[k]) < 0.0) return 0.0;
+    vec3 N = m[kLobeHemispheres - 2];  // the fan's pole: the region lies in its hemisphere
+    // The recurrence's factors telescope: I_e = (I_0 [e even] + sum over arcs of
+    // (D . m) sum_{j = e - 1, e - 3, ... >= 0} F_j) / (e + 1). So each arc is
+    // walked alone, its F_j in scalars.
     bool odd = e % 2 == 1;
-    float sum = 0.0, turns = 0.0;
-    vec3 m_first = vec3(0.0), m_before = vec3(0.0);
-    for (int i = 0; i < n; ++i) {
-        vec3 a = u[i], b = u[i + 1 < n ? i + 1 : 0];
-        vec3 axb = cross(a, b);
-        float s = length(axb);
-        float len = atan(s, dot(a, b));
-        vec3 m = winding * axb / s;  // the edge's plane normal, inwards
-        if (i == 0) m_first = m;
-        else turns += atan(length(cross(m_before, m)), dot(m_before, m));
-        m_before = m;
-        // f = D . u along the edge, and f' (the tangent at a towards b, and at b onwards).
-        float f0 = dot(D, a), df0 = winding * dot(D, cross(m, a));
-        float f1 = dot(D, b), df1 = winding * dot(D, cross(m, b));
+    float sum = 0.0;
+    for (int k = 0; k < kLobeHemispheres; ++k) {
+        bool repeated = false;
+        for (int j = 0; j < k; ++j) repeated = repeated || length(cross(m[j], m[k])) < kLobeSameCircle;
+        if (repeated) continue;
+        vec3 e1, e2;
+        complete_frame(m[k], e1, e2);  // e2 = m[k] x e1
+        vec2 arc = arc_on_circle(m, k, e1, e2);
+        if (arc.y <= arc.x) continue;
+        float len = arc.y - arc.x;
+        vec3 a = cos(arc.x) * e1 + sin(arc.x) * e2, b = cos(arc.y) * e1 + sin(arc.y) * e2;
+        // f = D . u along the arc, and f' (the tangent m x u) at both ends.
+        float f0 = dot(D, a), df0 = dot(D, cross(m[k], a));
+        float f1 = dot(D, b), df1 = dot(D, cross(m[k], b));
         float c2 = f0 * f0 + df0 * df0;
         float F = odd ? len : f0 * sin(len) + df0 * (1.0 - cos(len));  // F_0 or F_1
         float power0 = odd ? f0 : f0 * f0, power1 = odd ? f1 : f1 * f1;  // f^{j-1} at both ends for the next j
@@ -100,11 +87,16 @@ float clipped_lobe_integral(vec3 v[kLobePolygonMax], int count, vec3 inside, vec
             power1 *= f1 * f1;
             edge_sum += F;
         }
-        sum += dot(D, m) * edge_sum;
-    }
-    if (!odd) {  // I_0, the solid angle by Gauss-Bonnet: 2 pi less the turns at the corners
-        turns += atan(length(cross(m_before, m_first)), dot(m_before, m_first));
-        sum += 2.0 * PI - turns;
+        sum += dot(D, m[k]) * edge_sum;
+        if (!odd) {  // I_0, the region's solid angle: a fan from N, a quarter of each arc a triangle
+            vec3 from = a;
+            for (int piece = 1; piece <= 4; ++piece) {
+                float t = arc.x + len * (float(piece) / 4.0);
+                vec3 to = cos(t) * e1 + sin(t) * e2;
+                sum += triangle_solid_angle(N, from, to);
+                from = to;
+            }
+        }
     }
     return sum / float(e + 1);
 }

@@ -24,15 +24,15 @@ struct AreaSampling {
     int shadow = 3;
     // A highlight of whole exponent under a rect or the sky integrated exactly
     // (glsl/common/lobe_moment.glsl, compiled in only then: kLobeClosedFormDefine);
-    // off: the samples scaled by E / E_s alone. Off in the render: on llvmpipe
-    // its code quadruples a program's compile time and memory (docs/lights.md).
+    // off: the samples scaled by E / E_s alone. On in the render (its compile
+    // costs about 5 s more on llvmpipe, once per scene shape; docs/lights.md).
     bool lobe_closed_form = false;
     bool operator==(const AreaSampling& o) const {
         return light == o.light && shadow == o.shadow && lobe_closed_form == o.lobe_closed_form;
     }
     bool operator!=(const AreaSampling& o) const { return !(*this == o); }
 };
-inline constexpr AreaSampling kRenderSampling{8, 3};
+inline constexpr AreaSampling kRenderSampling{8, 3, true};
 // The define of the programs that integrate the lobe in closed form (AreaSampling::lobe_closed_form).
 inline constexpr const char* kLobeClosedFormDefine = "HAS_LOBE_CLOSED_FORM";
 inline constexpr AreaSampling kFastSampling{1, 1};

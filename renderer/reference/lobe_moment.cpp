@@ -12,117 +12,106 @@ namespace {
 
 using numeric::kPi;
 
-// Which side of a plane through the origin the direction q lies on (0: on it, to rounding).
-int side(double distance, const dvec3& q) {
-    const double tolerance = 1e-12 * glm::length(q);
-    return distance > tolerance ? 1 : distance < -tolerance ? -1 : 0;
-}
+// Two planes through the origin are one great circle when their normals are this close to parallel.
+constexpr double kSameCircle = 1e-12;
 
-// Sutherland-Hodgman: the part of convex `polygon` (directions, wound by `winding` about
-// its inside: +1 counter-clockwise) where plane . u >= 0. The cut runs along the plane's
-// great circle; where it spans more than a quarter circle (the sky's hemisphere cut by
-// any plane: half a circle, its ends opposite), the corner a quarter along it is added,
-// so that no edge is ambiguous.
-std::vector<dvec3> clip_to_plane(const std::vector<dvec3>& polygon, const dvec3& plane, double winding) {
-    std::vector<dvec3> kept;
-    std::vector<bool> on_plane;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const dvec3& a = polygon[i];
-        const dvec3& b = polygon[(i + 1) % polygon.size()];
-        const double da = glm::dot(a, plane), db = glm::dot(b, plane);
-        const int sa = side(da, a), sb = side(db, b);
-        if (sa >= 0) kept.push_back(a), on_plane.push_back(sa == 0);
-        if (sa * sb < 0) kept.push_back(a + (da / (da - db)) * (b - a)), on_plane.push_back(true);
-    }
-    std::vector<dvec3> out;
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-        out.push_back(kept[i]);
-        const std::size_t j = (i + 1) % kept.size();
-        if (on_plane[i] && on_plane[j] && glm::dot(kept[i], kept[j]) < 0.0)
-            out.push_back(winding * glm::cross(plane, glm::normalize(kept[i])));
-    }
-    return out;
-}
-
-// Unit corners, without those that repeat their predecessor (an edge of no length has no plane).
-std::vector<dvec3> unit_corners(const std::vector<dvec3>& polygon) {
-    std::vector<dvec3> unit;
-    for (const dvec3& corner : polygon) {
-        const dvec3 u = glm::normalize(corner);
-        if (unit.empty() || glm::length(glm::cross(unit.back(), u)) > 1e-12) unit.push_back(u);
-    }
-    while (unit.size() > 1 && glm::length(glm::cross(unit.back(), unit.front())) <= 1e-12) unit.pop_back();
-    return unit;
-}
-
-// One edge, the great arc from unit a to unit b: its length, its plane's unit
-// normal m = a x b / |a x b|, and w . u along it, f(t) = w.a cos t + w.t0 sin t.
-struct Arc {
-    double length;
-    dvec3 m;
-    double f0, df0, f1, df1;  // f and f' at both ends
+// One arc of the region's boundary: angles [lo, hi] along the great circle of
+// inward normal m, u(t) = cos t e1 + sin t e2 with e2 = m x e1 (moving along it
+// keeps the region on the left); empty where hi <= lo.
+struct CircleArc {
+    dvec3 e1, e2;
+    double lo, hi;
+    dvec3 at(double t) const { return std::cos(t) * e1 + std::sin(t) * e2; }
 };
 
-Arc arc(const dvec3& a, const dvec3& b, const dvec3& w) {
-    const dvec3 axb = glm::cross(a, b);
-    const double sine = glm::length(axb), cosine = glm::dot(a, b);
-    Arc e;
-    e.length = std::atan2(sine, cosine);
-    e.m = axb / sine;
-    const dvec3 t0 = glm::cross(e.m, a);  // the unit tangent at a, towards b
-    const dvec3 t1 = glm::cross(e.m, b);  // and at b
-    e.f0 = glm::dot(w, a), e.df0 = glm::dot(w, t0);
-    e.f1 = glm::dot(w, b), e.df1 = glm::dot(w, t1);
-    return e;
+// The part of the great circle of `planes[k]` inside every other plane's
+// hemisphere: each is a half circle, [c - pi/2, c + pi/2] about the angle c of
+// the plane's normal in the circle's frame; half circles meet in one arc.
+CircleArc arc_on_circle(const std::vector<dvec3>& planes, std::size_t k) {
+    const dvec3& m = planes[k];
+    CircleArc arc;
+    arc.e1 = glm::normalize(std::fabs(m.x) > 0.5 ? glm::cross(m, dvec3(0, 1, 0)) : glm::cross(m, dvec3(1, 0, 0)));
+    arc.e2 = glm::cross(m, arc.e1);
+    bool whole = true;
+    for (std::size_t j = 0; j < planes.size(); ++j) {
+        if (j == k) continue;
+        const double a = glm::dot(planes[j], arc.e1), b = glm::dot(planes[j], arc.e2);
+        if (std::hypot(a, b) < kSameCircle) continue;  // the same circle (an opposite one: no region at all, below)
+        double c = std::atan2(b, a);
+        if (whole) {
+            arc.lo = c - 0.5 * kPi, arc.hi = c + 0.5 * kPi, whole = false;
+            continue;
+        }
+        c -= 2.0 * kPi * std::floor((c - 0.5 * (arc.lo + arc.hi)) / (2.0 * kPi) + 0.5);
+        arc.lo = std::max(arc.lo, c - 0.5 * kPi);
+        arc.hi = std::min(arc.hi, c + 0.5 * kPi);
+    }
+    if (whole) arc.lo = 0.0, arc.hi = 2.0 * kPi;
+    return arc;
 }
 
-// The polygon's solid angle by Gauss-Bonnet: 2 pi less the turns of its edges' planes at the corners.
-double solid_angle(const std::vector<Arc>& arcs) {
-    double turns = 0.0;
-    for (std::size_t i = 0; i < arcs.size(); ++i) {
-        const dvec3& before = arcs[(i + arcs.size() - 1) % arcs.size()].m;
-        turns += std::atan2(glm::length(glm::cross(before, arcs[i].m)), glm::dot(before, arcs[i].m));
-    }
-    return 2.0 * kPi - turns;
+// The signed solid angle of the spherical triangle (pole, a, b) (Van Oosterom and Strackee 1983).
+double triangle_solid_angle(const dvec3& pole, const dvec3& a, const dvec3& b) {
+    return 2.0 * std::atan2(glm::dot(pole, glm::cross(a, b)), 1.0 + glm::dot(pole, a) + glm::dot(pole, b) + glm::dot(a, b));
 }
 
 }  // namespace
 
+double lobe_integral_in_hemispheres(const std::vector<dvec3>& planes, const dvec3& pole, const dvec3& axis, int n) {
+    if (n < 1) return 0.0;
+    for (std::size_t k = 0; k < planes.size(); ++k)
+        for (std::size_t j = 0; j < k; ++j)
+            if (glm::length(glm::cross(planes[j], planes[k])) < kSameCircle && glm::dot(planes[j], planes[k]) < 0.0)
+                return 0.0;  // two opposite hemispheres: no area
+    // I_n = (I_0 [n even] + sum over the boundary's arcs of (axis . m) sum_{j = n-1, n-3, ... >= 0} F_j) / (n + 1),
+    // from the sphere's Laplacian of (axis . u)^k integrated over the region and Green's theorem on
+    // its boundary, I_k = (k - 1) / (k + 1) I_{k-2} + 1 / (k + 1) sum (axis . m) F_{k-1}, whose
+    // factors telescope; along an arc f(t) = axis . u(t), F_j = integral of f^j
+    // = ((j - 1) |axis in the arc's plane|^2 F_{j-2} - [f^{j-1} f']) / j, F_0 = its length.
+    const bool odd = n % 2 == 1;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+        bool repeated = false;
+        for (std::size_t j = 0; j < k; ++j)
+            repeated = repeated || glm::length(glm::cross(planes[j], planes[k])) < kSameCircle;
+        if (repeated) continue;
+        const CircleArc arc = arc_on_circle(planes, k);
+        if (arc.hi <= arc.lo) continue;
+        const dvec3& m = planes[k];
+        const double length = arc.hi - arc.lo;
+        const dvec3 a = arc.at(arc.lo), b = arc.at(arc.hi);
+        const double f0 = glm::dot(axis, a), df0 = glm::dot(axis, glm::cross(m, a));
+        const double f1 = glm::dot(axis, b), df1 = glm::dot(axis, glm::cross(m, b));
+        const double c2 = f0 * f0 + df0 * df0;
+        double F = odd ? length : f0 * std::sin(length) + df0 * (1.0 - std::cos(length));  // F_0 or F_1
+        double edge_sum = F;
+        for (int j = odd ? 2 : 3; j < n; j += 2) {
+            F = ((j - 1.0) * c2 * F - (std::pow(f1, j - 1) * df1 - std::pow(f0, j - 1) * df0)) / j;
+            edge_sum += F;
+        }
+        sum += glm::dot(axis, m) * edge_sum;
+        if (!odd)  // I_0, the region's solid angle: a fan of triangles from the pole, a quarter of the arc each at most
+            for (int piece = 0; piece < 4; ++piece)
+                sum += triangle_solid_angle(pole, arc.at(arc.lo + length * piece / 4.0),
+                                            arc.at(arc.lo + length * (piece + 1) / 4.0));
+    }
+    return sum / (n + 1);
+}
+
 double clipped_lobe_integral(const std::vector<dvec3>& corners, const dvec3& inside, const dvec3& N,
                              const dvec3& axis, int n) {
-    if (corners.size() < 3 || n < 1) return 0.0;
+    if (corners.size() < 3) return 0.0;
+    // A convex polygon within a hemisphere is where every edge's plane has it on its inner side.
     const double winding = glm::dot(glm::cross(corners[0], corners[1]), inside) >= 0.0 ? 1.0 : -1.0;
-    const std::vector<dvec3> unit = unit_corners(clip_to_plane(clip_to_plane(corners, N, winding), axis, winding));
-    if (unit.size() < 3) return 0.0;
-    std::vector<Arc> arcs;
-    for (std::size_t i = 0; i < unit.size(); ++i) arcs.push_back(arc(unit[i], unit[(i + 1) % unit.size()], axis));
-    // Each edge's plane normal turned towards the inside.
-    if (winding < 0.0)
-        for (Arc& e : arcs) e.m = -e.m;
-    // I_k = (k-1)/(k+1) I_{k-2} + 1/(k+1) sum_edges (w.m) F_{k-1}, from the sphere's Laplacian
-    // of (w.u)^k integrated over the polygon and Green's theorem on its boundary; along an edge
-    // F_j = integral of f^j = ((j-1) |w_plane|^2 F_{j-2} - [f^{j-1} f']) / j, F_0 = length
-    // (f'' = -f, so (f^{j-1} f')' = (j-1) c^2 f^{j-2} - j f^j).
-    std::vector<double> F(arcs.size());
-    const bool odd = n % 2 == 1;
-    double I = odd ? 0.0 : solid_angle(arcs);  // I_{-1} (unused: its weight is 0) or I_0
-    for (std::size_t i = 0; i < arcs.size(); ++i) {
-        const Arc& e = arcs[i];
-        F[i] = odd ? e.length : e.f0 * std::sin(e.length) + e.df0 * (1.0 - std::cos(e.length));  // F_0 or F_1
+    std::vector<dvec3> planes;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const dvec3 normal = glm::cross(corners[i], corners[(i + 1) % corners.size()]);
+        if (glm::length(normal) > kSameCircle * glm::length(corners[i]) * glm::length(corners[(i + 1) % corners.size()]))
+            planes.push_back(winding * glm::normalize(normal));
     }
-    for (int k = odd ? 1 : 2; k <= n; k += 2) {
-        const int j = k - 1;  // F holds F_j
-        if (j >= 2)
-            for (std::size_t i = 0; i < arcs.size(); ++i) {
-                const Arc& e = arcs[i];
-                const double c2 = e.f0 * e.f0 + e.df0 * e.df0;
-                F[i] = ((j - 1.0) * c2 * F[i] - (std::pow(e.f1, j - 1) * e.df1 - std::pow(e.f0, j - 1) * e.df0)) / j;
-            }
-        double boundary = 0.0;
-        for (std::size_t i = 0; i < arcs.size(); ++i) boundary += glm::dot(axis, arcs[i].m) * F[i];
-        I = (k - 1.0) / (k + 1.0) * I + boundary / (k + 1.0);
-    }
-    return I;
+    planes.push_back(N);
+    planes.push_back(axis);
+    return lobe_integral_in_hemispheres(planes, N, axis, n);
 }
 
 std::vector<dvec3> hemisphere_corners(const dvec3& up) {

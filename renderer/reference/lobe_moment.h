@@ -12,10 +12,17 @@
 
 namespace m3055::ref {
 
+// The integral of (axis . u)^n dw over the directions u in every hemisphere
+// {u : plane . u >= 0} of unit `planes` (their intersection: a convex region,
+// empty or within the hemisphere of unit `pole`, which must be one of them);
+// n >= 1. Its boundary is an arc of each plane's great circle, the part inside
+// all the other hemispheres; the same circle twice counts once.
+double lobe_integral_in_hemispheres(const std::vector<dvec3>& planes, const dvec3& pole, const dvec3& axis, int n);
+
 // The integral of ((axis . u)+)^n dw over the directions u towards `corners`
 // (from the origin, in order around a convex spherical polygon within a
 // hemisphere, with `inside` a direction inside it) that lie above the horizons
-// of unit N and unit `axis`; n >= 1.
+// of unit N and unit `axis`; n >= 1: the hemispheres of the polygon's edges, N and axis.
 double clipped_lobe_integral(const std::vector<dvec3>& corners, const dvec3& inside, const dvec3& N,
                              const dvec3& axis, int n);
 
