@@ -105,7 +105,7 @@ struct LightWalk {
     int type;
     vec2 rotation;       // the strata's rotation (area lights)
     float ratio;         // area lights: E / E_s (common/area_lights.glsl); else 1
-    vec3 exact_pair;     // area lights, with the lobe's closed form: (alpha, beta, lambda) of pair_factor; else 0
+    vec4 exact_pair;     // area lights, with the lobe's closed form: (alpha, beta, lambda, e) of pair_factor; else 0
     bool traced;         // area lights: each sample's own shadow ray decides whether it is seen (a penumbra)
     int from_emitter;    // area lights: samples 0 .. from_emitter - 1 drawn from the emitter, the rest from the lobe
     int lobe_side;       // area lights: the lobe's samples are lobe_side x lobe_side strata
@@ -180,15 +180,18 @@ float cosine_share(float c, float l, float lambda) {
     return sum > 0.0 ? c / sum : 1.0;
 }
 
-// Where both closed forms apply (a rect or the sky, a highlight of whole
-// exponent), each sample is scaled by alpha p + beta (1 - p) instead of E / E_s:
-// the two factors that make the samples' sums of N . L and of the lobe both
-// exact (E, Lambert's formula, and A, common/lobe_moment.glsl). The estimate is
-// then exact for any mix of the two (a highlight's diffuse and its (R_V . L)^m,
-// Phong's), and the factors tend to 1 as the samples grow, so every other
-// model converges as before: control variates with two closed forms.
-float pair_factor(vec3 exact_pair, vec3 L, vec3 N, vec3 D, float e) {
-    float p = cosine_share(max(dot(N, L), 0.0), lobe_value(L, N, D, e), exact_pair.z);
+// Where both closed forms apply (a rect or the sky, a highlight's lobe), each
+// sample is scaled by alpha p + beta (1 - p) instead of E / E_s: the two factors
+// that make the samples' sums of N . L and of the lobe ((D . L)+)^e both exact
+// (E, Lambert's formula, and A, common/lobe_moment.glsl; e = exact_pair.w, the
+// model's lobe exponent rounded to a whole number). The estimate is then exact
+// for any mix of the two (a highlight's diffuse and its (R_V . L)^m, Phong's),
+// and the factors tend to 1 as the samples grow, so every other model (a
+// microfacet lobe, a metal's, whose exponent the whole e only approximates)
+// converges as before, with less noise the closer its lobe is to the pair:
+// control variates with two closed forms.
+float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
+    float p = cosine_share(max(dot(N, L), 0.0), lobe_value(L, N, D, exact_pair.w), exact_pair.z);
     return exact_pair.x * p + exact_pair.y * (1.0 - p);
 }
 #endif
@@ -201,7 +204,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
     walk.type = int(u_light_vector[i].w);
     walk.rotation = vec2(0.0);
     walk.ratio = 1.0;
-    walk.exact_pair = vec3(0.0);
+    walk.exact_pair = vec4(0.0);
     walk.traced = false;
     walk.from_emitter = 1;
     walk.lobe_side = 1;
@@ -234,9 +237,10 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
 #endif
     float exact = area_exact_projected(i, walk.type, P, N);
     if (exact < 0.0) return walk;
-    float exact_lobe = walk.n > walk.from_emitter ? area_exact_lobe(i, walk.type, P, N, walk.lobe_axis, lobe) : -1.0;
+    float whole = max(floor(lobe + 0.5), 1.0);  // the pair's lobe: exact for the paper's m and Phong's, near for the rest
+    float exact_lobe = walk.n > walk.from_emitter ? area_exact_lobe(i, walk.type, P, N, walk.lobe_axis, whole) : -1.0;
     // Too little of the lobe on the emitter for float to keep its integral (1e-6 of 2 pi / (e + 1)).
-    bool pair = exact > 0.0 && exact_lobe > 1e-3 * 2.0 * PI / (lobe + 1.0);
+    bool pair = exact > 0.0 && exact_lobe > 1e-3 * 2.0 * PI / (whole + 1.0);
     float lambda = pair ? exact / exact_lobe : 0.0;
     float sampled = 0.0;
     vec4 sums = vec4(0.0);  // sum of weight x (p cos, (1 - p) cos, p lobe, (1 - p) lobe)
@@ -246,7 +250,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
         float c = max(dot(N, s.L), 0.0);
         sampled += weight * c;
         if (pair) {
-            float l = lobe_value(s.L, N, walk.lobe_axis, lobe), p = cosine_share(c, l, lambda);
+            float l = lobe_value(s.L, N, walk.lobe_axis, whole), p = cosine_share(c, l, lambda);
             sums += weight * vec4(p * c, (1.0 - p) * c, p * l, (1.0 - p) * l);
         }
     }
@@ -258,7 +262,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
         float beta = (exact_lobe * sums.x - exact * sums.z) / det;
         // Only where the two are told apart well and both factors stay positive (else E / E_s alone).
         if (abs(det) > 1e-3 * (sums.x * sums.w + sums.y * sums.z) && alpha > 0.0 && beta > 0.0)
-            walk.exact_pair = vec3(alpha, beta, lambda);
+            walk.exact_pair = vec4(alpha, beta, lambda, whole);
     }
 #endif
     return walk;
@@ -289,7 +293,7 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
         if (lit && walk.traced) lit = !occluded(P, N, a.L, a.distance);
 #endif
         float factor = walk.exact_pair.x > 0.0
-                           ? pair_factor(walk.exact_pair, a.L, N, walk.lobe_axis, walk.lobe_exponent)
+                           ? pair_factor(walk.exact_pair, a.L, N, walk.lobe_axis)
                            : walk.ratio;
         s.scale = lit ? u_light_scale[i] * (weight * factor) : vec3(0.0);
         return s;
