@@ -173,17 +173,19 @@ std::string json_beside(const std::string& png_path) {
 // same Renderer, the same read_display and write_png), and the scene beside it.
 // A script's `screenshot PATH` names the file; F12 takes the next free
 // NAME-0001.png in the chosen folder, so nothing is overwritten.
-void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path) {
+void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, bool shows_render) {
     const std::string png = path.empty() ? next_screenshot_path(e) : path;
     try {
-        // The screenshot waits for the specialized program (as `m3055 render` uses).
-        const bool deferring = renderer.defers_compiles();
-        const AreaSampling sampling = renderer.area_sampling();
-        renderer.set_defer_compiles(false);
-        renderer.set_area_sampling(kRenderSampling);
-        renderer.render(e.doc.scene);
-        renderer.set_defer_compiles(deferring);
-        renderer.set_area_sampling(sampling);
+        if (!shows_render) {
+            // The screenshot waits for the specialized program (as `m3055 render` uses).
+            const bool deferring = renderer.defers_compiles();
+            const AreaSampling sampling = renderer.area_sampling();
+            renderer.set_defer_compiles(false);
+            renderer.set_area_sampling(kRenderSampling);
+            renderer.render(e.doc.scene);
+            renderer.set_defer_compiles(deferring);
+            renderer.set_area_sampling(sampling);
+        }
         write_png(png, renderer.read_display());
         const std::string json = json_beside(png), text = scene_file_text(e, json);
         write_file_atomic(json, text.data(), text.size());

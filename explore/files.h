@@ -46,8 +46,10 @@ std::string save_as_proposal(const Explorer& explorer);
 std::string next_screenshot_path(const Explorer& explorer);
 // Writes the screenshot (`path`, or the next free path) with `renderer`,
 // which then shows the scene with its specialized program: exactly the PNG
-// `m3055 render` writes for the JSON written beside it. The full paths go to
-// the status line, an error to messages.error.
-void take_screenshot(Explorer& explorer, Renderer& renderer, const std::string& path);
+// `m3055 render` writes for the JSON written beside it. `shows_render`: the
+// renderer's display already holds those pixels (a refined display of area
+// lights), written as they are rather than drawn again (seconds on llvmpipe).
+// The full paths go to the status line, an error to messages.error.
+void take_screenshot(Explorer& explorer, Renderer& renderer, const std::string& path, bool shows_render);
 
 }  // namespace m3055::explore

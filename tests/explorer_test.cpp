@@ -350,8 +350,9 @@ TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
     scene = std::regex_replace(scene, std::regex("\"height\": 320"), "\"height\": 100");
     test::write_text(dir.file("softbox.json"), scene);
     test::write_text(dir.file("script.txt"), "load softbox.json\nset lights[0].size[0] 2.2\nsave_display preview.png\n"
-                                             "settle 300\nsave_display refined.png\nsave scene.json\n"
-                                             "compare on\nsettle 300\nsave_display refined_split.png\n");
+                                             "settle 300\nsave_display refined.png\nsave scene.json\nscreenshot shot.png\n"
+                                             "compare on\nsettle 300\nsave_display refined_split.png\n"
+                                             "screenshot shot_split.png\n");
     const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto render = test::run_m3055({"render", "--scene", dir.file("scene.json"), "--out", dir.file("r.png")});
@@ -364,6 +365,9 @@ TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
     EXPECT_EQ(refined.pixels, rendered.pixels) << "refined: the render's pixels, byte for byte";
     // In the A/B split too: a read-out once refined keeps the refined pixels.
     EXPECT_EQ(read_png(dir.file("refined_split.png")).pixels, rendered.pixels) << "refined in the split";
+    // A screenshot of a refined display writes its pixels (not drawn again): the render's, in the split too.
+    EXPECT_EQ(read_png(dir.file("shot.png")).pixels, rendered.pixels) << "screenshot once refined";
+    EXPECT_EQ(read_png(dir.file("shot_split.png")).pixels, rendered.pixels) << "screenshot once refined, in the split";
 }
 
 // Light names (the scene format's optional "name"): the three-point presets

@@ -268,7 +268,11 @@ void DisplayPanes::answer(Explorer& explorer, const DisplayRequest& request) {
                        if (!practice_) return;
                        std::printf("%s\n", grade_now(explorer).c_str());
                    },
-                   [&](const command::Screenshot& s) { take_screenshot(explorer, *renderer_a_, s.path); },
+                   [&](const command::Screenshot& s) {
+                       // A refined display holds the render's pixels (practice's grading draws with A too).
+                       const bool shows_render = !practice_ && refined_ == refined_of(explorer);
+                       take_screenshot(explorer, *renderer_a_, s.path, shows_render);
+                   },
                    [&](const command::SaveDisplay& s) { write_png(s.path, renderer_a_->read_display()); },
                },
                request);

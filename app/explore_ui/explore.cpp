@@ -163,7 +163,7 @@ public:
         window_.events().dropped.clear();
         imgui_.new_frame();
         apply_keys();
-        e_.session.busy = busy_now();
+        e_.session.busy = busy_shown_ = busy_now();
 
         // 2. Where everything goes this frame (explore/layout.h).
         const ImGuiIO& io = ImGui::GetIO();
@@ -237,6 +237,7 @@ public:
 
 private:
     double last_refine_frame_ = 0.0;  // when a refine's tile was last shown (window time)
+    std::string busy_shown_;          // what the last frame's menu bar said beside the menu
 
     // What stands beside the menu: compiles waiting or announced, a refine, a .brdf being watched.
     std::string busy_now() const {
@@ -263,6 +264,13 @@ private:
         if (!panes_->refine_started()) window_.wait(kIdleBeforeRefine);
         else window_.poll();
         if (frame_needed()) return;  // input came: that frame first
+        // The preview's own frame was drawn before it knew it would refine: one
+        // frame that says so first, as the first tile may build the render's
+        // program (seconds on llvmpipe).
+        if (busy_shown_ != busy_now()) {
+            owe_frames(1);
+            return;
+        }
         panes_->refine(e_);
         if (!panes_->refining() || window_.time() - last_refine_frame_ >= kRefineFrameSeconds) {
             owe_frames(1);
