@@ -15,6 +15,11 @@ using numeric::kPi;
 // Two planes through the origin are one great circle when their normals are this close to parallel.
 constexpr double kSameCircle = 1e-12;
 
+// A unit vector perpendicular to unit n.
+dvec3 perpendicular(const dvec3& n) {
+    return glm::normalize(std::fabs(n.x) > 0.5 ? glm::cross(n, dvec3(0, 1, 0)) : glm::cross(n, dvec3(1, 0, 0)));
+}
+
 // One arc of the region's boundary: angles [lo, hi] along the great circle of
 // inward normal m, u(t) = cos t e1 + sin t e2 with e2 = m x e1 (moving along it
 // keeps the region on the left); empty where hi <= lo.
@@ -30,7 +35,7 @@ struct CircleArc {
 CircleArc arc_on_circle(const std::vector<dvec3>& planes, std::size_t k) {
     const dvec3& m = planes[k];
     CircleArc arc;
-    arc.e1 = glm::normalize(std::fabs(m.x) > 0.5 ? glm::cross(m, dvec3(0, 1, 0)) : glm::cross(m, dvec3(1, 0, 0)));
+    arc.e1 = perpendicular(m);
     arc.e2 = glm::cross(m, arc.e1);
     bool whole = true;
     for (std::size_t j = 0; j < planes.size(); ++j) {
@@ -115,7 +120,7 @@ double clipped_lobe_integral(const std::vector<dvec3>& corners, const dvec3& ins
 }
 
 std::vector<dvec3> hemisphere_corners(const dvec3& up) {
-    const dvec3 t = glm::normalize(std::fabs(up.x) > 0.5 ? glm::cross(up, dvec3(0, 1, 0)) : glm::cross(up, dvec3(1, 0, 0)));
+    const dvec3 t = perpendicular(up);
     const dvec3 b = glm::cross(up, t);
     return {t, b, -t, -b};
 }
