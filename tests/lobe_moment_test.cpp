@@ -13,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <optional>
 
 namespace m3055::ref {
 namespace {
@@ -139,6 +141,91 @@ TEST(LobeMoment, MatchesQuadratureOverTheSky) {
                 << "n " << n << ", axis " << axis.x << " " << axis.y << " " << axis.z;
         }
     }
+}
+
+// The lobe over the disk c + rho (cos t e0 + sin t e1) (rho in [0, 1]) seen from the origin, by its area.
+double disk_by_quadrature(const dvec3& c, const dvec3& e0, const dvec3& e1, const dvec3& N, const dvec3& axis,
+                          int n) {
+    const dvec3 normal = glm::normalize(glm::cross(e0, e1));
+    const double jacobian = glm::length(glm::cross(e0, e1));
+    return gauss([&](double rho) {
+        return gauss([&](double t) {
+            const dvec3 X = c + rho * (std::cos(t) * e0 + std::sin(t) * e1);
+            const double d2 = glm::dot(X, X);
+            const dvec3 u = X / std::sqrt(d2);
+            return lobe(u, N, axis, n) * std::fabs(glm::dot(u, normal)) * jacobian * rho / d2;
+        }, 0.0, 2.0 * kPi, 64);
+    }, 0.0, 1.0, 64);
+}
+
+// A disk of radius r about c, tilted: its axes perpendicular to `facing`.
+struct Disk {
+    dvec3 c, e0, e1;
+};
+Disk disk(const dvec3& c, const dvec3& facing, double r) {
+    const dvec3 n = glm::normalize(facing);
+    const dvec3 a = glm::normalize(glm::cross(n, std::fabs(n.x) > 0.5 ? dvec3(0, 1, 0) : dvec3(1, 0, 0)));
+    return {c, r * a, r * glm::cross(n, a)};
+}
+
+constexpr int kRimNodes = 24;  // glsl/common/lobe_moment.glsl: kDiskRimNodes
+
+TEST(LobeMoment, MatchesQuadratureOverADisk) {
+    const dvec3 N(0.0, 0.0, 1.0);
+    for (const Disk& d : {disk(dvec3(0.2, -0.1, 1.0), dvec3(-0.2, 0.1, -1.0), 0.45),    // facing the point
+                          disk(dvec3(-0.5, 0.3, 1.2), dvec3(0.3, -0.6, -0.5), 0.6),     // tilted, seen aslant
+                          disk(dvec3(0.1, 0.05, 3.0), dvec3(0.0, 0.0, -1.0), 0.1)}) {   // small and far
+        for (const dvec3& towards : {dvec3(0.3, 0.0, 1.0), d.c, dvec3(0.6, 0.3, 1.0)}) {
+            const dvec3 axis = glm::normalize(towards);
+            for (int n : {1, 2, 3, 4, 5, 10, 13, 20, 64}) {
+                const double expected = disk_by_quadrature(d.c, d.e0, d.e1, N, axis, n);
+                const std::optional<double> closed = disk_lobe_integral(d.c, d.e0, d.e1, N, axis, n, kRimNodes);
+                ASSERT_TRUE(closed.has_value());
+                // Relative to the lobe's whole integral where little of it falls on the disk.
+                EXPECT_NEAR(*closed, expected, 1e-9 * std::max(expected, 2.0 * kPi / (n + 1)))
+                    << "n " << n << ", axis " << axis.x << " " << axis.y << " " << axis.z;
+            }
+        }
+    }
+}
+
+TEST(LobeMoment, TheCosineOverADiskOnItsAxisIsItsKnownProjectedSolidAngle) {
+    // A disk of radius R facing the point from distance h on N: pi R^2 / (h^2 + R^2).
+    const double R = 0.8, h = 1.3;
+    const Disk d = disk(dvec3(0.0, 0.0, h), dvec3(0.0, 0.0, -1.0), R);
+    const dvec3 N(0.0, 0.0, 1.0);
+    EXPECT_NEAR(*disk_lobe_integral(d.c, d.e0, d.e1, N, N, 1, kRimNodes), kPi * R * R / (h * h + R * R), 1e-13);
+}
+
+TEST(LobeMoment, ADisksRimTurnedEitherWayGivesTheSameIntegral) {
+    const Disk d = disk(dvec3(-0.5, 0.3, 1.2), dvec3(0.3, -0.6, -0.5), 0.6);
+    const dvec3 N(0.0, 0.0, 1.0), axis = glm::normalize(dvec3(0.1, 0.2, 1.0));
+    for (int n : {3, 4})
+        EXPECT_NEAR(*disk_lobe_integral(d.c, d.e0, d.e1, N, axis, n, kRimNodes),
+                    *disk_lobe_integral(d.c, d.e0, -d.e1, N, axis, n, kRimNodes), 1e-14);
+}
+
+TEST(LobeMoment, TheRimsTrapezoidRuleConvergesGeometrically) {
+    const Disk d = disk(dvec3(0.2, -0.1, 1.0), dvec3(-0.2, 0.1, -1.0), 0.45);
+    const dvec3 N(0.0, 0.0, 1.0), axis = glm::normalize(dvec3(0.6, 0.3, 1.0));
+    const double expected = disk_by_quadrature(d.c, d.e0, d.e1, N, axis, 64);
+    double previous = 1e300;
+    for (int nodes : {8, 16, 24}) {
+        const double error = std::fabs(*disk_lobe_integral(d.c, d.e0, d.e1, N, axis, 64, nodes) - expected) / expected;
+        std::printf("%d nodes: relative error %.2e\n", nodes, error);
+        EXPECT_LT(error, 1e-2 * previous) << nodes << " nodes";
+        previous = error;
+    }
+    EXPECT_LT(previous, 1e-9) << "the shader's 24 nodes";
+}
+
+TEST(LobeMoment, ADiskAcrossAHorizonHasNoClosedFormHere) {
+    const Disk d = disk(dvec3(1.0, 0.0, 0.2), dvec3(-1.0, 0.0, 0.0), 0.5);  // dips below z = 0
+    const dvec3 N(0.0, 0.0, 1.0);
+    EXPECT_FALSE(disk_lobe_integral(d.c, d.e0, d.e1, N, glm::normalize(d.c), 3, kRimNodes).has_value());
+    const Disk above = disk(dvec3(0.0, 0.0, 1.0), dvec3(0.0, 0.0, -1.0), 0.5);
+    EXPECT_FALSE(disk_lobe_integral(above.c, above.e0, above.e1, N, dvec3(1.0, 0.0, 0.0), 3, kRimNodes).has_value())
+        << "the lobe's own horizon through the disk";
 }
 
 }  // namespace

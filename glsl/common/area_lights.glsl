@@ -293,17 +293,22 @@ float area_exact_projected(int i, int type, vec3 P, vec3 N) {
 #include "common/lobe_moment.glsl"
 #endif
 
-// The integral over area light i (a rect or the sky) seen from P above N's
-// horizon of the Phong lobe ((D . w)+)^e, or -1 where it has no closed form
-// here: a disk, a rect below kExactMinSize, e not a whole number in
-// [1, kLobeMomentMaxExponent] (common/lobe_moment.glsl).
+// The integral over area light i seen from P above N's horizon of the Phong
+// lobe ((D . w)+)^e, or -1 where it has no closed form here: an emitter below
+// kExactMinSize, a disk whose rim crosses N's or D's horizon, e not a whole
+// number in [1, kLobeMomentMaxExponent] (common/lobe_moment.glsl).
 float area_exact_lobe(int i, int type, vec3 P, vec3 N, vec3 D, float e) {
 #ifndef HAS_LOBE_CLOSED_FORM
     return -1.0;
 #else
-    if (type == LIGHT_DISK || e < 1.0 || e > float(kLobeMomentMaxExponent) || e != floor(e)) return -1.0;
+    if (e < 1.0 || e > float(kLobeMomentMaxExponent) || e != floor(e)) return -1.0;
     vec3 m[kLobeHemispheres];
     vec3 centre = u_light_vector[i].xyz;
+    if (type == LIGHT_DISK) {
+        vec3 c = centre - P, e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+        if (max(length(e0), length(e1)) < kExactMinSize * length(c)) return -1.0;
+        return disk_lobe_integral(c, e0, e1, N, D, int(e));
+    }
     if (type == LIGHT_SKY) {  // the hemisphere about up; the same plane again counts once
         m[0] = centre, m[1] = centre, m[2] = centre, m[3] = centre;
     } else {

@@ -180,7 +180,7 @@ float cosine_share(float c, float l, float lambda) {
     return sum > 0.0 ? c / sum : 1.0;
 }
 
-// Where both closed forms apply (a rect or the sky, a highlight's lobe), each
+// Where both closed forms apply (a highlight's lobe under a rect, a disk or the sky), each
 // sample is scaled by alpha p + beta (1 - p) instead of E / E_s: the two factors
 // that make the samples' sums of N . L and of the lobe ((D . L)+)^e both exact
 // (E, Lambert's formula, and A, common/lobe_moment.glsl; e = exact_pair.w, the

@@ -1,6 +1,6 @@
 // The closed form of a Phong lobe over a spherical polygon: the integral of
 // ((D . u)+)^n over the directions u of a rect or of the sky above a point's
-// horizon (and D's), n a whole number (Arvo 1995, "Applications of irradiance tensors to
+// horizon (and D's), and over a disk (disk_lobe_integral), n a whole number (Arvo 1995, "Applications of irradiance tensors to
 // the simulation of non-Lambertian phenomena", the axial moments). With it the
 // samples of an area light integrate a highlight (R_V . L)^m as exactly as
 // Lambert's formula makes them integrate N . L (common/lights.glsl:
@@ -99,4 +99,46 @@ float lobe_integral_in_hemispheres(vec3 m[kLobeHemispheres], vec3 D, int e) {
         }
     }
     return sum / float(e + 1);
+}
+
+// Nodes of the trapezoid rule along a disk's rim: the integrands are smooth and
+// periodic, so the rule converges geometrically (against 2-D quadrature, a lobe
+// of n = 64 off the centre of a disk 50 degrees across: 4e-2 at 8 nodes, 2e-5 at
+// 16, 1e-10 at 24; wider lobes 1e-10 at 16; tests/lobe_moment_test.cpp).
+const int kDiskRimNodes = 24;
+
+// The integral of ((D . u)+)^e dw over the directions u towards the disk
+// c + cos t e0 + sin t e1 (c its centre from the shaded point, e0 and e1 its
+// radii along two perpendicular axes), where every point of its rim is above
+// the horizons of unit N and unit D; -1 where one is not (the region would
+// need the horizons' arcs too). The same recurrence as for a polygon, its
+// boundary the rim: with u(t) the rim's direction and f = D . u,
+//     (e + 1) I_e = I_0 [e even] + oint (sum_{j = e-1, e-3, ... >= 0} f^j) D . (u x u') dt,
+// u x u' = (r x r') / |r|^2 for r(t) the rim point (Green's theorem on the
+// sphere with the conormal u x u' / |u'|), and I_0, the solid angle, as the
+// flux of a vector potential with its singularity behind the disk (at -c):
+//     I_0 = oint (c^ x u) . u' / (1 + c^ . u) dt.
+// The rim's orientation is whichever makes I_0 positive.
+float disk_lobe_integral(vec3 c, vec3 e0, vec3 e1, vec3 N, vec3 D, int e) {
+    if (dot(N, c) <= length(vec2(dot(N, e0), dot(N, e1))) || dot(D, c) <= length(vec2(dot(D, e0), dot(D, e1))))
+        return -1.0;
+    vec3 pole = normalize(c);
+    bool odd = e % 2 == 1;
+    float solid = 0.0, boundary = 0.0;
+    for (int k = 0; k < kDiskRimNodes; ++k) {
+        float t = (2.0 * PI / float(kDiskRimNodes)) * float(k);
+        vec3 r = c + cos(t) * e0 + sin(t) * e1, dr = -sin(t) * e0 + cos(t) * e1;
+        float r2 = dot(r, r), len = sqrt(r2);
+        vec3 u = r / len;
+        vec3 du = (dr - dot(u, dr) * u) / len;
+        float f = dot(D, u), power = odd ? 1.0 : f, powers = 0.0;
+        for (int j = odd ? 0 : 1; j < e; j += 2) {
+            powers += power;
+            power *= f * f;
+        }
+        boundary += powers * dot(D, cross(r, dr)) / r2;
+        solid += dot(cross(pole, u), du) / (1.0 + dot(pole, u));
+    }
+    float turn = solid >= 0.0 ? 1.0 : -1.0;
+    return turn * (odd ? boundary : solid + boundary) * (2.0 * PI / float(kDiskRimNodes)) / float(e + 1);
 }

@@ -119,6 +119,34 @@ double clipped_lobe_integral(const std::vector<dvec3>& corners, const dvec3& ins
     return lobe_integral_in_hemispheres(planes, N, axis, n);
 }
 
+std::optional<double> disk_lobe_integral(const dvec3& c, const dvec3& e0, const dvec3& e1, const dvec3& N,
+                                         const dvec3& axis, int n, int nodes) {
+    auto rim_above = [&](const dvec3& m) {
+        return glm::dot(m, c) > std::hypot(glm::dot(m, e0), glm::dot(m, e1));
+    };
+    if (n < 1 || !rim_above(N) || !rim_above(axis)) return std::nullopt;
+    // (n + 1) I_n = I_0 [n even] + the rim's integral of (sum_{j = n-1, n-3, ... >= 0} f^j) axis . (u x u'),
+    // f = axis . u, u x u' = (r x r') / |r|^2 (Green's theorem on the sphere, the conormal u x u' / |u'|);
+    // I_0, the solid angle, as the rim's integral of the vector potential (pole x u) / (1 + pole . u),
+    // singular only at -pole, behind the disk.
+    const dvec3 pole = glm::normalize(c);
+    const bool odd = n % 2 == 1;
+    double solid = 0.0, boundary = 0.0;
+    for (int k = 0; k < nodes; ++k) {
+        const double t = 2.0 * kPi * k / nodes;
+        const dvec3 r = c + std::cos(t) * e0 + std::sin(t) * e1, dr = -std::sin(t) * e0 + std::cos(t) * e1;
+        const double r2 = glm::dot(r, r), length = std::sqrt(r2);
+        const dvec3 u = r / length, du = (dr - glm::dot(u, dr) * u) / length;
+        const double f = glm::dot(axis, u);
+        double power = odd ? 1.0 : f, powers = 0.0;
+        for (int j = odd ? 0 : 1; j < n; j += 2, power *= f * f) powers += power;
+        boundary += powers * glm::dot(axis, glm::cross(r, dr)) / r2;
+        solid += glm::dot(glm::cross(pole, u), du) / (1.0 + glm::dot(pole, u));
+    }
+    const double turn = solid >= 0.0 ? 1.0 : -1.0;  // the rim's orientation that makes the solid angle positive
+    return turn * ((odd ? 0.0 : solid) + boundary) * (2.0 * kPi / nodes) / (n + 1);
+}
+
 std::vector<dvec3> hemisphere_corners(const dvec3& up) {
     const dvec3 t = perpendicular(up);
     const dvec3 b = glm::cross(up, t);
