@@ -199,7 +199,7 @@ AreaSample area_sample_towards(int i, int type, vec3 P, vec3 N, vec3 w) {
 // A Phong lobe ((D . w)+)^e about the unit D, as a density over directions
 // ((e + 1) / 2 pi (D . w)^e) and a sample of it from u (Phong's inversion:
 // cos = u^(1 / (e + 1))). The models' highlights resemble such lobes about
-// V's mirror direction (generated/models.glsl: lobe_exponent); drawing
+// V's mirror direction (generated/models.glsl: lobe_exponents); drawing
 // directions from them as well as from the emitter keeps a sharp highlight of
 // a large light from being a few bright pixels.
 float phong_lobe_pdf(vec3 w, vec3 D, float e) {

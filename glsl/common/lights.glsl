@@ -4,7 +4,7 @@
 // the shader: the renderer drops them.
 //
 // Every model sums over its lights the same way:
-//     for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+//     for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
 //         LightSample light = light_sample_of(i, P, N);
 // Without area lights and shadows (HAS_AREA_LIGHTS, HAS_SHADOWS) that is the
 // plain loop over the lights, token for token, so those programs and their
@@ -110,7 +110,7 @@ struct LightWalk {
     int from_emitter;    // area lights: samples 0 .. from_emitter - 1 drawn from the emitter, the rest from the lobe
     int lobe_side;       // area lights: the lobe's samples are lobe_side x lobe_side strata
     vec3 lobe_axis;      // V's mirror direction
-    float lobe_exponent; // the model's lobe about it (generated/models.glsl: lobe_exponent)
+    float lobe_exponent; // the model's lobe about it that samples are drawn from (generated/models.glsl: lobe_exponents)
 };
 
 #ifdef HAS_AREA_LIGHTS
@@ -196,8 +196,11 @@ float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
 }
 #endif
 
-// `lobe`: the Phong exponent of the model's highlight about V's mirror direction (0: none).
-LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
+// `lobes`: the Phong exponents of the model's highlight about V's mirror direction (0: none),
+// the one its samples are drawn from and the one its closed form controls (ModelSpec::glsl_lobe,
+// glsl_control_lobe).
+LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
+    float lobe = lobes.x;
     LightWalk walk;
     walk.k = 0;
     walk.n = 1;
@@ -237,7 +240,12 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, float lobe) {
 #endif
     float exact = area_exact_projected(i, walk.type, P, N);
     if (exact < 0.0) return walk;
-    float whole = max(floor(lobe + 0.5), 1.0);  // the pair's lobe: exact for the paper's m and Phong's, near for the rest
+    // The pair's lobe, exact for the paper's m and Phong's, near for the rest. Of a mixture's lobes
+    // (lobes.x the sharpest, lobes.y the one that reflects most light) the one the emitter's own
+    // samples resolve worst: across a rect or disk, sampled uniformly in area, the heaviest
+    // (a broad lobe that varies over the whole emitter); under the sky, whose cosine-weighted
+    // samples follow a broad lobe, the sharpest (docs/lights.md, "fourth").
+    float whole = max(floor((walk.type == LIGHT_SKY ? lobes.x : lobes.y) + 0.5), 1.0);
     float exact_lobe = walk.n > walk.from_emitter ? area_exact_lobe(i, walk.type, P, N, walk.lobe_axis, whole) : -1.0;
     // Too little of the lobe on the emitter for float to keep its integral (1e-6 of 2 pi / (e + 1)).
     bool pair = exact > 0.0 && exact_lobe > 1e-3 * 2.0 * PI / (whole + 1.0);
@@ -309,14 +317,14 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
     return s;
 }
 
-// V: towards the viewer; LOBE: the model's lobe_exponent (area lights draw samples from it too;
+// V: towards the viewer; LOBE: the model's lobe_exponents (area lights draw samples from it too;
 // without area lights it is not declared, and a shadow's one ray needs none).
 // (One line: GLSL 3.30 and ES 3.00 have no line continuation.)
 #ifdef HAS_AREA_LIGHTS
 #define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, LOBE); light_walk_.k < light_walk_.n; ++light_walk_.k)
 #else
-// Shadows without area lights: one sample a light, none drawn from a lobe (nor is lobe_exponent generated).
-#define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, 0.0); light_walk_.k < light_walk_.n; ++light_walk_.k)
+// Shadows without area lights: one sample a light, none drawn from a lobe (nor is lobe_exponents generated).
+#define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, vec2(0.0)); light_walk_.k < light_walk_.n; ++light_walk_.k)
 #endif
 #define light_sample_of(i, P, N) light_walk_sample(i, light_walk_, P, N)
 #else

@@ -134,7 +134,7 @@ vec3 shade_classic_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
     }
     vec3 I = u_global_ambient * mat.ka + mat.emission;
     float NoV = max(dot(N, V), 0.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         I += light.spot * u_light_ambient[i] * mat.ka;  // spot-shaped, not attenuated
         float NoL = dot(N, light.L);
@@ -150,7 +150,7 @@ vec3 shade_classic(Material mat, vec3 P, vec3 N, vec3 V) {
     if (mat.spectral_table >= 0.0) return shade_classic_spectral(mat, P, N, V);
     vec3 I = u_global_ambient * mat.ka + mat.emission;
     float NoV = max(dot(N, V), 0.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         I += light.spot * u_light_ambient[i] * mat.ka;  // spot-shaped, not attenuated
         float NoL = dot(N, light.L);

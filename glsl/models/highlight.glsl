@@ -18,7 +18,7 @@ HighlightParts highlight_parts_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
     int table = int(mat.spectral_table);
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
@@ -37,7 +37,7 @@ HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
     if (mat.spectral_table >= 0.0) return highlight_parts_spectral(mat, P, N, V);
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0

@@ -73,7 +73,7 @@ vec3 shade_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
     int samples = int(head.a);
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0
@@ -89,7 +89,7 @@ vec3 shade_metal(Material mat, vec3 P, vec3 N, vec3 V) {
     if (mat.spectral_table >= 0.0) return shade_conductor(mat, P, N, V);
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponent(mat, i)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {
         LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // no contribution where N.L <= 0

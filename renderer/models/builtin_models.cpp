@@ -169,6 +169,7 @@ ModelSpec metal() {
     s.summary = "metal after Cook-Torrance, a mixture of Beckmann lobes; F = C0";
     s.glsl_hook = "beckmann_lobe_sum";
     s.glsl_lobe = "sharpest_lobe(mat, i, LIGHT_LOBES_BECKMANN)";
+    s.glsl_control_lobe = "dominant_lobe(mat, i, LIGHT_LOBES_BECKMANN)";
     return s;
 }
 
@@ -181,6 +182,7 @@ ModelSpec metal_blinn() {
     s.summary = "cheap metal: lobes ((N.H)+)^n_j";
     s.glsl_hook = "blinn_lobe_sum";
     s.glsl_lobe = "exponent_on_half_vector(sharpest_lobe(mat, i, LIGHT_LOBES_EXPONENT))";
+    s.glsl_control_lobe = "exponent_on_half_vector(dominant_lobe(mat, i, LIGHT_LOBES_EXPONENT))";
     return s;
 }
 
@@ -191,6 +193,7 @@ ModelSpec metal_phong() {
     s.summary = "cheap metal: lobes ((R.V)+)^n_j, falls off twice as fast as eq. 15";
     s.glsl_hook = "phong_lobe_sum";
     s.glsl_lobe = "sharpest_lobe(mat, i, LIGHT_LOBES_EXPONENT)";
+    s.glsl_control_lobe = "dominant_lobe(mat, i, LIGHT_LOBES_EXPONENT)";
     return s;
 }
 
@@ -310,6 +313,7 @@ ModelSpec microfacet() {
     s.params.push_back(metal);
     s.derived = {{"lobe_norm", kMaxLobes, gaussian_norms}, {"spectral_table", 1, no_spectral_table}};
     s.glsl_lobe = "microfacet_lobe(mat)";
+    s.glsl_control_lobe = "microfacet_dominant_lobe(mat)";
     return s;
 }
 

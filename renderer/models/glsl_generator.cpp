@@ -161,7 +161,7 @@ std::string material_file(const ModelTable& table) {
     for (const ModelSpec& spec : table.models()) out += unpack(spec);
     out += "    return mat;\n}\n\n// The families' dispatchers to their models' hooks (generated/models.glsl).\n";
     for (const Dispatcher& d : kDispatchers) out += std::string(d.result) + " " + d.name + "(" + d.params + ");\n";
-    return out + "#ifdef HAS_AREA_LIGHTS\nfloat lobe_exponent(Material mat, int i);\n#endif\n";
+    return out + "#ifdef HAS_AREA_LIGHTS\nvec2 lobe_exponents(Material mat, int i);\n#endif\n";
 }
 
 // A family's dispatcher: "if (mat.model == MODEL_X) return hook(...);" per model.
@@ -179,18 +179,20 @@ std::string dispatcher(const ModelTable& table, const Dispatcher& d) {
     return out + "    " + d.otherwise + "\n}\n";
 }
 
-// Area lights' second way of drawing directions (glsl/common/lights.glsl):
-// the Phong exponent about V's mirror direction of the material's highlight,
-// each model's ModelSpec::glsl_lobe; 0 for a model without one.
+// Area lights' second way of drawing directions and their lobe's control
+// variate (glsl/common/lights.glsl): the Phong exponents about V's mirror
+// direction of the material's highlight, each model's ModelSpec::glsl_lobe and
+// glsl_control_lobe; 0 for a model without one.
 std::string lobe_dispatcher(const ModelTable& table) {
     std::string out = "\n#ifdef HAS_AREA_LIGHTS\n#include \"common/lobe_hints.glsl\"\n\n"
-                      "float lobe_exponent(Material mat, int i) {\n";
+                      "vec2 lobe_exponents(Material mat, int i) {\n";
     for (const ModelSpec& spec : table.models()) {
         if (spec.glsl_lobe.empty()) continue;
-        out += "#ifdef " + has_define(spec) + "\n    if (mat.model == MODEL_" + spec.macro_name() + ") return " +
-               spec.glsl_lobe + ";\n#endif\n";
+        const std::string control = spec.glsl_control_lobe.empty() ? spec.glsl_lobe : spec.glsl_control_lobe;
+        out += "#ifdef " + has_define(spec) + "\n    if (mat.model == MODEL_" + spec.macro_name() + ") return vec2(" +
+               spec.glsl_lobe + ", " + control + ");\n#endif\n";
     }
-    return out + "    return 0.0;\n}\n#endif\n";
+    return out + "    return vec2(0.0);\n}\n#endif\n";
 }
 
 std::string models_file(const ModelTable& table) {

@@ -118,6 +118,11 @@ struct ModelSpec {
     // light `i` (helpers: glsl/common/lobe_hints.glsl); area lights draw samples
     // from it as well as from the emitter. "": no highlight to draw from.
     std::string glsl_lobe;
+    // The whole-numbered exponent of the lobe whose closed form is the samples'
+    // control variate (glsl/common/lights.glsl: pair_factor), where it is not
+    // glsl_lobe's: a mixture of lobes draws samples from its sharpest (its peaks)
+    // and is controlled by the one that carries most light. "": glsl_lobe's.
+    std::string glsl_control_lobe;
     std::vector<DerivedValue> derived;
     // GLSL the entry brings itself, (path, text) as the composer includes it
     // (run-time models: a .brdf file's code and its wrapper); built-in models
