@@ -39,10 +39,11 @@ float microfacet_lobe(Material mat) {
     return sharpest;
 }
 
-// The lobe of a mixture whose closed form is the samples' control variate
-// (ModelSpec::glsl_control_lobe): the one that reflects most light from a
-// large emitter (a softbox, the sky), where the control matters; a small
-// emitter's own samples resolve any lobe. A lobe's share is its weight times
+// The lobe of a mixture whose closed form is the samples' control variate under
+// a rect or disk (ModelSpec::glsl_control_lobe; the sky's is the sharpest,
+// common/lights.glsl: light_walk): the one that reflects most light, which
+// varies across the whole of a large emitter that its samples cover uniformly;
+// the sharp lobe has samples of its own. A lobe's share is its weight times
 // its integral over directions: w for the paper's Beckmann delta and the
 // normalized microfacet distributions whatever their roughness, w / (n + 1)
 // for w (c+)^n. On a tie the sharper. The paper's metal ({0.013, 0.2},

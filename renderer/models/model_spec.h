@@ -121,7 +121,7 @@ struct ModelSpec {
     // The whole-numbered exponent of the lobe whose closed form is the samples'
     // control variate (glsl/common/lights.glsl: pair_factor), where it is not
     // glsl_lobe's: a mixture of lobes draws samples from its sharpest (its peaks)
-    // and is controlled by the one that carries most light. "": glsl_lobe's.
+    // and, under a rect or disk, is controlled by the one that carries most light. "": glsl_lobe's.
     std::string glsl_control_lobe;
     std::vector<DerivedValue> derived;
     // GLSL the entry brings itself, (path, text) as the composer includes it
