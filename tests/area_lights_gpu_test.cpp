@@ -35,7 +35,10 @@ constexpr double kBias = 3e-4;
 constexpr double kMeanDiff = 1e-3;
 constexpr double kSameLevelShare = 0.995;     // docs/spec.md's target
 constexpr double kSkySameLevelShare = 0.99;   // unshadowed sky: metal 99.40 %, the rest >= 99.8 %
-constexpr double kSkyShadowMeanDiff = 3e-3;
+// The sky's shadow: what the objects block drawn about them (glsl/common/sky_occluders.glsl):
+// 93.4-94.1 % on the same level, mean |diff| 6.3e-4-7.1e-4 (drawn from the whole sky: 81 %, 2e-3).
+constexpr double kSkyShadowMeanDiff = 1e-3;
+constexpr double kSkyShadowSameLevelShare = 0.92;
 
 struct LightCase {
     std::string name;
@@ -102,6 +105,7 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     const bool sky = kLights[l].name == "sky";
     if (sky && shadow) {
         EXPECT_LE(c.mean_abs_diff, kSkyShadowMeanDiff);
+        EXPECT_GE(c.same_level_share, kSkyShadowSameLevelShare);
     } else {
         EXPECT_LE(c.mean_abs_diff, kMeanDiff);
         EXPECT_GE(c.same_level_share, sky ? kSkySameLevelShare : kSameLevelShare);

@@ -97,6 +97,9 @@ uniform int u_shadow_samples;            // a rect's or disk's probe: this squar
 #ifdef HAS_AREA_LIGHTS
 #include "common/area_lights.glsl"
 #endif
+#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
+#include "common/sky_occluders.glsl"
+#endif
 
 #if defined(HAS_AREA_LIGHTS) || defined(HAS_SHADOWS)
 // Where a model's walk over light i's samples stands.
@@ -110,6 +113,8 @@ struct LightWalk {
     int from_emitter;    // area lights: samples 0 .. from_emitter - 1 drawn from the emitter, the rest from the lobe
     int lobe_side;       // area lights: the lobe's samples are lobe_side x lobe_side strata
     vec3 lobe_axis;      // V's mirror direction
+    int occluder_from;   // a shadowed sky: samples occluder_from .. n - 1 are of what the objects block
+    int occluder_mask;   // ... drawn about the objects of these bits (common/sky_occluders.glsl)
     float lobe_exponent; // the model's lobe about it that samples are drawn from (generated/models.glsl: lobe_exponents)
 };
 
@@ -125,7 +130,7 @@ const float kLobeMinExponent = 1.0;
 // importance sampling), 1 / (n_e p_e + n_l p_l); 0 off the emitter.
 AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weight) {
     int n = u_area_samples;
-    int from_lobe = walk.n - walk.from_emitter;
+    int from_lobe = (walk.occluder_mask != 0 ? walk.occluder_from : walk.n) - walk.from_emitter;
     AreaSample s;
     if (walk.k < walk.from_emitter) {
         s = area_sample(i, walk.type, walk.k, n, walk.rotation, P, N);
@@ -144,7 +149,9 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
 // penumbra) or not probed. A rect or disk is probed with u_shadow_samples^2
 // rays (at most 3 x 3; 2 x 2 probes missed the edges of penumbrae: 1.6 % of a
 // floor's pixels a level off, docs/lights.md); the sky, large enough that what
-// stands beside a point hides part of it almost everywhere, is never probed.
+// stands beside a point hides part of it almost everywhere, is never probed: its
+// shadow is what the objects block (common/sky_occluders.glsl), or, with more
+// than MAX_SKY_OCCLUDERS objects, a ray a sample.
 float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
     int probe = min(3, u_shadow_samples);
     if (type == LIGHT_SKY || u_area_samples <= 1) return -1.0;
@@ -212,6 +219,8 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
     walk.from_emitter = 1;
     walk.lobe_side = 1;
     walk.lobe_axis = 2.0 * dot(N, V) * N - V;
+    walk.occluder_from = 0;
+    walk.occluder_mask = 0;
     walk.lobe_exponent = lobe;
 #ifdef HAS_AREA_LIGHTS
     if (walk.type < LIGHT_RECT) return walk;
@@ -223,9 +232,8 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
     walk.from_emitter = n * n;
     // One sample: the emitter's centre (the explorer's fast path), not a random point.
     walk.rotation = n > 1 ? strata_rotation(i) : vec2(0.0);
-    // A shadowed sky traces every sample (emitter_seen); its lobe keeps n x n of them all the
-    // same: a quarter as many left the shadowed sky 3 levels off in places (the lobe's closed
-    // form keeps only the unshadowed part exact).
+    // As many lobe samples as the emitter's, the sky's too (a quarter as many left a shadowed sky
+    // that traced them 3 levels off in places).
     walk.lobe_side = n;
     walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? walk.lobe_side * walk.lobe_side : 0);
 #ifdef HAS_SHADOWS
@@ -272,6 +280,16 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
         if (abs(det) > 1e-3 * (sums.x * sums.w + sums.y * sums.z) && alpha > 0.0 && beta > 0.0)
             walk.exact_pair = vec4(alpha, beta, lambda, whole);
     }
+#ifdef HAS_SHADOWS
+    // A shadowed sky: its samples as unshadowed, then what the objects block
+    // (common/sky_occluders.glsl), where they are few enough to be drawn about.
+    if (walk.type == LIGHT_SKY && walk.traced && u_sky_occluder_count > 0 && n > 1) {
+        walk.traced = false;
+        walk.occluder_mask = occluder_mask(P, N, u_light_vector[i].xyz);
+        walk.occluder_from = walk.n;
+        walk.n += bit_count(walk.occluder_mask) * sky_occluder_samples(n);
+    }
+#endif
 #endif
     return walk;
 }
@@ -284,6 +302,21 @@ float light_distance(int i, vec3 P) {
 #endif
 
 LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
+#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
+    if (walk.occluder_mask != 0 && walk.k >= walk.occluder_from) {
+        // What an object blocks of the sky: taken away, as a sample of negative light.
+        vec3 up = u_light_vector[i].xyz;
+        float weight;
+        LightSample s;
+        s.L = occluder_sample(walk.k - walk.occluder_from, sky_occluder_samples(u_area_samples), walk.occluder_mask,
+                              walk.rotation, P, N, up, weight);
+        s.spot = 1.0;
+        s.area = true;
+        bool blocked = weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0 && occluded(P, N, s.L, -1.0);
+        s.scale = blocked ? -u_light_scale[i] * weight : vec3(0.0);
+        return s;
+    }
+#endif
 #ifdef HAS_AREA_LIGHTS
     if (walk.type >= LIGHT_RECT) {
         float weight;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 namespace m3055 {
@@ -61,15 +62,21 @@ std::string geometry_key(const Scene& scene) {
 OccluderTexels pack_occluders(const Scene& scene) {
     std::vector<Primitive> primitives;
     std::vector<dvec3> lo, hi;
+    std::vector<SkyOccluder> sky;
     for (const Object& object : scene.objects) {
         if (object.shape == Shape::sphere) {
             primitives.push_back({object.center, {}, {}, object.radius});
             lo.push_back(object.center - dvec3(object.radius));
             hi.push_back(object.center + dvec3(object.radius));
             pad(lo.back(), hi.back());
+            SkyOccluder o;
+            o.sphere_centre = object.center, o.radius = object.radius;
+            o.box_centre = (lo.back() + hi.back()) * 0.5, o.box_half = (hi.back() - lo.back()) * 0.5;
+            sky.push_back(o);
             continue;
         }
         const geometry::Mesh mesh = geometry::make_mesh(object);
+        dvec3 object_lo(std::numeric_limits<double>::max()), object_hi(-std::numeric_limits<double>::max());
         for (std::size_t t = 0; t < mesh.triangles(); ++t) {
             const dvec3& a = mesh.positions[mesh.indices[3 * t]];
             const dvec3& b = mesh.positions[mesh.indices[3 * t + 1]];
@@ -78,9 +85,21 @@ OccluderTexels pack_occluders(const Scene& scene) {
             lo.push_back(glm::min(a, glm::min(b, c)));
             hi.push_back(glm::max(a, glm::max(b, c)));
             pad(lo.back(), hi.back());
+            object_lo = glm::min(object_lo, lo.back());
+            object_hi = glm::max(object_hi, hi.back());
         }
+        if (mesh.triangles() == 0) continue;
+        // The box's sphere, grown as the boxes are, so the float cone holds every float triangle.
+        const dvec3 centre = (object_lo + object_hi) * 0.5, half = (object_hi - object_lo) * 0.5;
+        SkyOccluder o;
+        o.sphere_centre = centre, o.radius = glm::length(half) * (1.0 + 1e-6);
+        o.box_centre = centre, o.box_half = half;
+        o.plane = object.shape == Shape::plane;
+        o.normal = object.axis;
+        sky.push_back(o);
     }
     OccluderTexels out;
+    if (sky.size() <= kMaxSkyOccluders) out.sky = std::move(sky);
     if (primitives.empty()) return out;
     const geometry::BoxTree tree = geometry::build_box_tree(lo, hi, kOccluderLeafSize, kOccluderMaxDepth);
     out.depth = tree.depth;
@@ -135,6 +154,7 @@ void OccluderTexture::upload(const Scene& scene) {
     define_texture_2d(gl_, texture_, kRgba32f, kOccluderTextureWidth, rows, packed.texels.data());
     gl_.ActiveTexture(GL_TEXTURE0);
     primitives_at_ = packed.primitives_at;
+    sky_ = std::move(packed.sky);
     key_ = std::move(key);
     uploaded_ = true;
 }
@@ -146,6 +166,26 @@ void OccluderTexture::set_uniforms(unsigned program) const {
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluders"), kOccluderUnit);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluder_width"), kOccluderTextureWidth);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_occluder_primitives"), uploaded_ ? primitives_at_ : 0);
+    const GLint count = gl_.GetUniformLocation(program, "u_sky_occluder_count");
+    if (count < 0) return;  // a program without a shadowed sky
+    const std::size_t n = uploaded_ ? sky_.size() : 0;
+    std::vector<float> sphere(4 * kMaxSkyOccluders, 0.0f), centre(sphere), half(sphere), normal(sphere);
+    for (std::size_t k = 0; k < n; ++k) {
+        const SkyOccluder& o = sky_[k];
+        const float values[4][4] = {
+            {float(o.sphere_centre.x), float(o.sphere_centre.y), float(o.sphere_centre.z), float(o.radius)},
+            {float(o.box_centre.x), float(o.box_centre.y), float(o.box_centre.z), o.plane ? 1.0f : 0.0f},
+            {float(o.box_half.x), float(o.box_half.y), float(o.box_half.z), 0.0f},
+            {float(o.normal.x), float(o.normal.y), float(o.normal.z), 0.0f}};
+        std::vector<float>* arrays[4] = {&sphere, &centre, &half, &normal};
+        for (int a = 0; a < 4; ++a) std::copy(values[a], values[a] + 4, arrays[a]->begin() + 4 * k);
+    }
+    gl_.Uniform1i(count, GLint(n));
+    const GLsizei size = GLsizei(kMaxSkyOccluders);
+    gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_sphere"), size, sphere.data());
+    gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_centre"), size, centre.data());
+    gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_half"), size, half.data());
+    gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_normal"), size, normal.data());
 }
 
 }  // namespace m3055

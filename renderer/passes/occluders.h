@@ -20,12 +20,25 @@ inline constexpr int kOccluderTextureWidth = 4096;  // texels a row
 inline constexpr int kOccluderLeafSize = 4;   // at most 4: glsl/common/shadows.glsl's leaf code
 inline constexpr int kOccluderMaxDepth = 64;  // never reached: every split halves
 
+// The objects as a shadowed sky's samples are drawn about them
+// (glsl/common/sky_occluders.glsl): each one's bounding sphere and box, and a
+// plane's normal. At most kMaxSkyOccluders objects (the GLSL's MAX_SKY_OCCLUDERS).
+inline constexpr std::size_t kMaxSkyOccluders = 8;
+struct SkyOccluder {
+    dvec3 sphere_centre;
+    double radius = 0.0;
+    dvec3 box_centre, box_half;
+    bool plane = false;
+    dvec3 normal;  // a plane's
+};
+
 // The texels of glsl/common/shadows.glsl's layout: the nodes (two texels
 // each), then the primitives from texel `primitives_at` (three each).
 struct OccluderTexels {
     std::vector<float> texels;  // RGBA
     int primitives_at = 0;      // 0: no objects
     int depth = 0;              // of the tree
+    std::vector<SkyOccluder> sky;  // one an object, or none where the scene has more than kMaxSkyOccluders
 };
 OccluderTexels pack_occluders(const Scene& scene);
 
@@ -46,6 +59,7 @@ private:
     std::string key_;            // the geometry of the last upload
     bool uploaded_ = false;
     int primitives_at_ = 0;
+    std::vector<SkyOccluder> sky_;
 };
 
 }  // namespace m3055
