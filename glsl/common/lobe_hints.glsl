@@ -54,8 +54,9 @@ struct WeighedLobe {
 };
 
 WeighedLobe heavier_lobe(WeighedLobe best, float share, float exponent) {
-    bool wins = share > best.share || (share == best.share && exponent > best.exponent);
-    return wins ? WeighedLobe(share, exponent) : best;
+    // (No ?: between structures: WebGL forbids it.)
+    if (share > best.share || (share == best.share && exponent > best.exponent)) return WeighedLobe(share, exponent);
+    return best;
 }
 
 // A paper metal's lobes: light i's own (Fig. 11) or the material's.

@@ -137,10 +137,14 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
     }
     // Each technique's strata shifted on their own (the same pixel, another hash).
     vec2 shift = fract(rotation + vec2(0.618034, 0.754878) * float(k_of + 1));
-    vec3 w = occluder_direction(occluder_cone(k_of, P, N, up), N, up, net_point(j - technique * per, per, shift));
-    float density = 0.0;
+    OccluderCone own = occluder_cone(k_of, P, N, up);
+    vec3 w = occluder_direction(own, N, up, net_point(j - technique * per, per, shift));
+    // The drawing technique's own density whatever its cone test says of w: a
+    // direction drawn at a narrow cone's rim can fail the test by rounding (SwiftShader
+    // did), and weighed by a wide technique's density alone it was a firefly.
+    float density = float(per) / (2.0 * PI * own.one_minus);
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
-        if (((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), N, w);
+        if (k != k_of && ((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), N, w);
     weight = density > 0.0 ? 1.0 / density : 0.0;
     return w;
 }
