@@ -64,6 +64,17 @@ uint reverse_bits(uint v) {
     return (v >> 16u) | (v << 16u);
 }
 
+// Point k of `count` (a power of two) of Hammersley's net in base 2 (x = k / count,
+// y = k's bits reversed), shifted digitally by `rotation` (stratum_point, below).
+vec2 net_point(int k, int count, vec2 rotation) {
+    // 2^24 / count in float (exact: a power of two): llvmpipe has no vector integer
+    // division, and a udiv here made the softbox's render twice as slow.
+    uint column = uint(16777216.0 / float(count));
+    uvec2 net = uvec2(uint(k) * column, reverse_bits(uint(k)) >> 8u);
+    uvec2 shift = uvec2(rotation * 16777216.0);  // exact: rotation is a 24-bit fraction (strata_rotation)
+    return vec2(net ^ shift) * (1.0 / 16777216.0);
+}
+
 // Sample k of n x n. Where n = 2^m (2, 4, 8, 16), a point of Hammersley's
 // (0, 2m, 2)-net in base 2 (x = k / n², y = k's 2m bits reversed): one point in
 // each of the n x n strata, and also in each of n² columns and n² rows and
@@ -75,14 +86,7 @@ uint reverse_bits(uint v) {
 // Patterson's shift mod 1 would not. Other n: the stratum's centre, shifted
 // by `rotation` (mod 1); n = 1, unrotated, is the emitter's centre.
 vec2 stratum_point(int k, int n, vec2 rotation) {
-    if (n >= 2 && (n & (n - 1)) == 0) {
-        // 2^24 / n² in float (exact: a power of two): llvmpipe has no vector integer
-        // division, and a udiv here made the softbox's render twice as slow.
-        uint column = uint(16777216.0 / float(n * n));
-        uvec2 net = uvec2(uint(k) * column, reverse_bits(uint(k)) >> 8u);
-        uvec2 shift = uvec2(rotation * 16777216.0);  // exact: rotation is a 24-bit fraction (strata_rotation)
-        return vec2(net ^ shift) * (1.0 / 16777216.0);
-    }
+    if (n >= 2 && (n & (n - 1)) == 0) return net_point(k, n * n, rotation);
     vec2 cell = vec2(float(k % n), float(k / n));
     return fract((cell + 0.5) / float(n) + rotation);
 }

@@ -34,14 +34,6 @@ int sky_occluder_samples(int n) {
     return max(n * n / 2, 1);
 }
 
-// Point k of `count` (a power of two) of Hammersley's net in base 2, shifted
-// digitally by `rotation` (as stratum_point's n x n, for any power of two).
-vec2 net_point(int k, int count, vec2 rotation) {
-    uint column = uint(16777216.0 / float(count));
-    uvec2 net = uvec2(uint(k) * column, reverse_bits(uint(k)) >> 8u);
-    return vec2(net ^ uvec2(rotation * 16777216.0)) * (1.0 / 16777216.0);
-}
-
 // How technique k draws from P: uniformly in a cone of half-angle cos^-1(z)
 // about `axis` (N's hemisphere: z = 0 about N), or nothing (z = kOccluderNone:
 // object k cannot block the sky above P).
@@ -97,13 +89,13 @@ OccluderCone occluder_cone(int k, vec3 P, vec3 N, vec3 up) {
 }
 
 // Technique `cone`'s density at w (per solid angle).
-float occluder_pdf(OccluderCone cone, vec3 N, vec3 w) {
+float occluder_pdf(OccluderCone cone, vec3 w) {
     if (cone.z == kOccluderNone) return 0.0;
     return dot(cone.axis, w) >= cone.z ? 1.0 / (2.0 * PI * cone.one_minus) : 0.0;
 }
 
 // Technique `cone`'s direction for the point u of the unit square.
-vec3 occluder_direction(OccluderCone cone, vec3 N, vec3 up, vec2 u) {
+vec3 occluder_direction(OccluderCone cone, vec2 u) {
     float one_minus = u.x * cone.one_minus;  // 1 - cos, uniform in solid angle
     float c = 1.0 - one_minus, s = sqrt(max(one_minus * (2.0 - one_minus), 0.0));
     float phi = 2.0 * PI * u.y;
@@ -138,13 +130,13 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
     // Each technique's strata shifted on their own (the same pixel, another hash).
     vec2 shift = fract(rotation + vec2(0.618034, 0.754878) * float(k_of + 1));
     OccluderCone own = occluder_cone(k_of, P, N, up);
-    vec3 w = occluder_direction(own, N, up, net_point(j - technique * per, per, shift));
+    vec3 w = occluder_direction(own, net_point(j - technique * per, per, shift));
     // The drawing technique's own density whatever its cone test says of w: a
     // direction drawn at a narrow cone's rim can fail the test by rounding (SwiftShader
     // did), and weighed by a wide technique's density alone it was a firefly.
     float density = float(per) / (2.0 * PI * own.one_minus);
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
-        if (k != k_of && ((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), N, w);
+        if (k != k_of && ((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), w);
     weight = density > 0.0 ? 1.0 / density : 0.0;
     return w;
 }
