@@ -285,8 +285,8 @@ async function compareScenes(page, scenes) {
 }
 
 // The first file with this ending that a download finished in `folder`, or null after 10 s.
-async function waitForDownload(folder, ending) {
-  for (let i = 0; i < 100; ++i) {
+async function waitForDownload(folder, ending) {  // up to 60 s: a loaded machine is slow to write one
+  for (let i = 0; i < 600; ++i) {
     const done = fs.readdirSync(folder).filter((f) => f.endsWith(ending));
     if (done.length) return path.join(folder, done[0]);
     await sleep(100);
