@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace m3055::explore {
@@ -61,6 +62,17 @@ inline std::string significant_text(double value) {
     else if (magnitude >= 100.0) std::snprintf(text, sizeof text, "%.0f", value);
     else std::snprintf(text, sizeof text, "%.3g", value);
     return text;
+}
+
+// A dragged value as the document keeps it: four significant digits (one
+// more than the slider shows, so that each pixel of a Shift drag, a tenth of
+// a pixel's 1-11 %, still moves it), within [lo, hi]. A scene saved after a
+// drag then reads "m": 10.4, not the 10.398107170553497 of the pixel the
+// mouse stopped on.
+inline double dragged_value(double value, double lo, double hi) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3e", value);
+    return std::clamp(std::strtod(text, nullptr), lo, hi);
 }
 
 }  // namespace m3055::explore

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace m3055::explore {
 namespace {
 
@@ -36,6 +39,28 @@ TEST(SliderScale, TextKeepsThreeSignificantDigits) {
     EXPECT_EQ(significant_text(0.1), "0.1");
     EXPECT_EQ(significant_text(43.56), "43.6");
     EXPECT_EQ(significant_text(1234.4), "1234");
+}
+
+// What a drag leaves in the document has four significant digits, stays in
+// its range, and loses no pixel of a drag: on a 150 px slider with Shift held
+// (1/1500 of it a pixel), neighbouring pixels give different values.
+TEST(SliderScale, DraggedValueHasFourSignificantDigitsAndLosesNoPixel) {
+    for (const auto& [lo, hi] : {std::pair{0.0, 100.0}, std::pair{1.0, 10000.0}, std::pair{0.0, 10.0}}) {
+        double last = -1.0;
+        for (int pixel = 0; pixel <= 1500; ++pixel) {
+            const double v = dragged_value(log_slider_value(pixel / 1500.0, lo, hi), lo, hi);
+            EXPECT_GE(v, lo);
+            EXPECT_LE(v, hi);
+            char text[32];
+            std::snprintf(text, sizeof text, "%.3e", v);
+            EXPECT_EQ(std::strtod(text, nullptr), v) << v;
+            if (pixel > 0) EXPECT_GT(v, last) << lo << " " << hi << " " << pixel;
+            last = v;
+        }
+    }
+    EXPECT_EQ(dragged_value(10.398107170553497, 1.0, 10000.0), 10.4);
+    EXPECT_EQ(dragged_value(4.49871e-5, 0.0, 100.0), 4.499e-5);
+    EXPECT_EQ(dragged_value(9999.96, 1.0, 10000.0), 10000.0);
 }
 
 // A light's intensity on 4 decades (0.001 ... 10, 0 at

@@ -116,8 +116,9 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
     }
     double fine = at;
     if (fine_drag(id, at, &fine)) {
-        if (fine == at) return false;
-        *value = log_slider_value(fine, lo, hi, decades);
+        const double dragged = dragged_value(log_slider_value(fine, lo, hi, decades), lo, hi);
+        if (dragged == *value) return false;
+        *value = dragged;
         return true;
     }
     if (ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::GetIO().KeyCtrl) {
@@ -126,7 +127,9 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
         return false;
     }
     if (!moved) return false;
-    *value = log_slider_value(position, lo, hi, decades);
+    const double dragged = dragged_value(log_slider_value(position, lo, hi, decades), lo, hi);
+    if (dragged == *value) return false;
+    *value = dragged;
     return true;
 }
 
