@@ -207,6 +207,22 @@ void compare_section(Explorer& explorer) {
     ImGui::PopID();
 }
 
+namespace {
+
+// The next screenshot's path beside its button when it fits, else wrapped on
+// a line of its own. It holds the scene file's name: beside the button,
+// "next: softbox_three_point-0001.png" reached 39 px past the panel's edge at
+// 1280 x 720, and the panel widened to 480 px a frame after the start.
+void next_screenshot_line(const Explorer& explorer) {
+    const std::string next = "next: " + next_screenshot_path(explorer);
+    same_line_if_fits(ImGui::CalcTextSize(next.c_str()).x);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", next.c_str());
+    ImGui::PopTextWrapPos();
+}
+
+}  // namespace
+
 void file_section(Explorer& explorer) {
     ImGui::TextWrapped("scene file: %s", explorer.doc.file.empty() ? "(none: Ctrl+S asks)" : explorer.doc.file.c_str());
     if (ImGui::Button("Save (Ctrl+S)")) explorer.commands.push(command::Save{});
@@ -214,18 +230,13 @@ void file_section(Explorer& explorer) {
     same_line_if_fits(button_width("Save as..."));
     if (ImGui::Button("Save as...")) explorer.commands.push(command::AskSaveAs{});
     tooltip("Writes the scene JSON to a file you name; it becomes the scene's own file.");
-    ImGui::InputText(field("screenshot folder").c_str(), &explorer.session.files.screenshot_dir);
+    // (A label of at most the 110 px the panel leaves labels: "screenshot
+    // folder" reached 7 px past its edge and widened it for every scene.)
+    ImGui::InputText(field("screenshot dir").c_str(), &explorer.session.files.screenshot_dir);
     tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");
     if (ImGui::Button("Screenshot PNG + JSON (F12)")) explorer.commands.push(command::Screenshot{});
     tooltip("Display A at its own resolution, exactly the bytes `m3055 render` writes for the JSON beside it.");
-    if (narrow_panel()) {  // a path: wrapped on its own line
-        ImGui::PushTextWrapPos(0.0f);
-        ImGui::TextDisabled("next: %s", next_screenshot_path(explorer).c_str());
-        ImGui::PopTextWrapPos();
-    } else {
-        ImGui::SameLine();
-        ImGui::TextDisabled("next: %s", next_screenshot_path(explorer).c_str());
-    }
+    next_screenshot_line(explorer);
     if (ImGui::InputText(field("load").c_str(), &explorer.view.load_path, ImGuiInputTextFlags_EnterReturnsTrue)) explorer.commands.push(command::LoadScene{explorer.view.load_path});
     tooltip("A scene JSON file; Enter or the Load button opens it (undoable with Ctrl+Z).");
     same_line_if_fits(button_width("Load"));
