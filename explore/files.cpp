@@ -194,7 +194,8 @@ void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, b
             e.session.platform.file_written(json);
         }
         const std::string full = full_path(png);
-        e.session.messages.status = "screenshot " + full + " + " + json_beside(full);
+        // The JSON by its extension: the path once is what fits the statistics' column at 1280 x 720.
+        e.session.messages.status = "screenshot " + full + " + " + std::filesystem::path(json).extension().string();
     } catch (const std::exception& error) {
         e.session.messages.error = error.what();
     }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace m3055::explore {
@@ -145,10 +146,35 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     }
 }
 
+// A new message (the text just drawn) scrolled up into view if it ends
+// below the column: at 1280 x 720 the statistics' column has room for two
+// lines under the histogram, and F12's confirmation with its path takes
+// three or four. Watched over its first frames, as it wraps again once the
+// column's scrollbar shows; then the column is the user's to scroll.
+void scroll_new_message_into_view(const std::string& message) {
+    constexpr int kFramesWatched = 3;
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID message_key = ImGui::GetID("##message"), frames_key = ImGui::GetID("##message frames");
+    const int hash = static_cast<int>(ImHashStr(message.c_str()));
+    if (storage->GetInt(message_key) != hash) {
+        storage->SetInt(message_key, hash);
+        storage->SetInt(frames_key, 0);
+    }
+    const int frames = storage->GetInt(frames_key);
+    if (frames >= kFramesWatched) return;
+    storage->SetInt(frames_key, frames + 1);
+    const float visible_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight();
+    if (ImGui::GetItemRectMax().y > visible_bottom) ImGui::SetScrollHereY(1.0f);  // its last line at the bottom
+}
+
 // The last message (saved, screenshot, loaded: with the full path) where it
 // is seen, and the diagnostics.
 void stats_messages(const Explorer& explorer, const FrameInfo& info) {
-    if (!explorer.session.messages.status.empty()) ImGui::TextWrapped("%s", explorer.session.messages.status.c_str());
+    const std::string& message = explorer.session.messages.status;
+    if (!message.empty()) {
+        ImGui::TextWrapped("%s", message.c_str());
+        scroll_new_message_into_view(message);
+    }
     if (ImGui::TreeNode("Diagnostics")) {  // closed by default: for bug reports, not for lessons
         ImGui::TextWrapped("GL renderer: %s", info.gl_renderer.c_str());
         ImGui::TextWrapped("GL version: %s", info.gl_version.c_str());
