@@ -16,11 +16,20 @@
 
 namespace m3055::explore {
 
-void set_scene(Explorer& e, const Scene& scene, const std::string& name, const std::string& action) {
+namespace {
+// A preset's name in the title bar (a figure, or one of the scenes built in):
+// what it is, not a path. It has no file, and "scenes/NAME.json" there read as
+// the file Ctrl+S would write while the File section said there was none.
+const std::string kPresetName = "preset ";
+}  // namespace
+
+void set_scene(Explorer& e, const Scene& scene, const std::string& name, const std::string& action,
+               const std::string& file) {
     auto content = std::make_shared<DocumentContent>();
     content->scene = scene;
     content->camera_home = scene.camera;
     content->name = name;
+    content->file = file;  // in the step: a redo of a load has its file again
     content->material_b = scene.objects.empty() ? e.doc.material_b : scene.objects[0].material;
     content->b_edited = false;
     edit_document(e, {DocumentEdit{content_of(e.doc), std::move(content)}, action.empty() ? "load " + name : action});
@@ -38,8 +47,7 @@ bool apply(Explorer& e, const command::LoadScene& c) {
         if (c.error_dialog) e.view.dialog = Dialog::load_error;
         return false;
     }
-    set_scene(e, scene, c.path);
-    e.doc.file = c.path;
+    set_scene(e, scene, c.path, "", c.path);
     mark_saved(e.doc);
     e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
     messages.status = "loaded " + c.path;
@@ -55,8 +63,8 @@ bool apply(Explorer& e, const command::LoadFigure& c) {
             const std::string source = "scenes/" + c.name + ".json";
             // Built in: no file of its own, unsaved once edited; Ctrl+S asks
             // where to save (proposing NAME.json, never the file of the scene it replaced).
-            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()), source,
-                      "figure preset " + c.name);
+            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()),
+                      kPresetName + c.name, "figure preset " + c.name);
             mark_saved(e.doc);
             e.session.messages.status = "figure preset " + c.name;
             e.session.messages.error.clear();
@@ -117,8 +125,7 @@ bool apply(Explorer& e, const command::Save&) {
 std::string save_as_proposal(const Explorer& e) {
     if (!e.doc.file.empty()) return e.doc.file;
     std::string name = e.session.files.save_name;
-    const std::filesystem::path from(e.doc.name);
-    if (from.extension() == ".json") name = from.filename().string();  // a figure preset: fig10.json
+    if (e.doc.name.rfind(kPresetName, 0) == 0) name = e.doc.name.substr(kPresetName.size()) + ".json";
     const std::string& dir = e.session.files.save_dir;
     return dir.empty() ? name : (std::filesystem::path(dir) / name).string();
 }

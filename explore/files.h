@@ -13,16 +13,18 @@
 
 namespace m3055::explore {
 
-// Replaces the document with `scene` named `name` (no file; camera_home =
-// its camera, selections reset, B = a copy of the first object's material):
-// one undo step, named `action` ("load NAME" when empty).
-void set_scene(Explorer& explorer, const Scene& scene, const std::string& name, const std::string& action = "");
+// Replaces the document with `scene` named `name`, its own file `file` ("":
+// none; camera_home = its camera, selections reset, B = a copy of the first
+// object's material): one undo step, named `action` ("load NAME" when empty).
+void set_scene(Explorer& explorer, const Scene& scene, const std::string& name, const std::string& action = "",
+               const std::string& file = "");
 
 // A scene file; on failure the current scene stays and the loader's one-line
 // message goes to messages.error and load_error. Returns success.
 bool apply(Explorer& explorer, const command::LoadScene& c);
 // The paper's figure presets (scenes/*.json embedded at build time), by file
-// stem: "fig05" ... "fig13", "spec_example" (step "figure preset NAME").
+// stem: "fig05" ... "fig13", "spec_example" (step "figure preset NAME"),
+// named "preset NAME" in the title bar, with no file.
 bool apply(Explorer& explorer, const command::LoadFigure& c);
 
 // Writes the scene JSON (atomically); it becomes the scene's own file.

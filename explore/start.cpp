@@ -24,8 +24,7 @@ std::optional<grading::Assignment> start_scene(Explorer& e, const std::string& s
     if (scene_path.empty() || new_submission) {
         set_scene(e, default_scene(), "spec example");
     } else {
-        set_scene(e, load_scene_file(scene_path, LoadContext::trusted()), scene_path);
-        e.doc.file = scene_path;
+        set_scene(e, load_scene_file(scene_path, LoadContext::trusted()), scene_path, "", scene_path);
     }
     if (!scene_path.empty()) e.session.files.save_dir = std::filesystem::path(scene_path).parent_path().string();
     std::optional<grading::Assignment> assignment;

@@ -113,7 +113,33 @@ TEST(ExploreFiles, ALoadIsOneUndoStepBackToThePreviousScene) {
     EXPECT_EQ(explorer.doc.history.undo_label(), "load " + file);
     ASSERT_TRUE(run(explorer, command::Undo{}));
     EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), fig05);
-    EXPECT_EQ(explorer.doc.name, "scenes/fig05.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig05");
+    EXPECT_EQ(explorer.doc.file, "");
+    ASSERT_TRUE(run(explorer, command::Redo{}));
+    EXPECT_EQ(explorer.doc.name, file);
+    EXPECT_EQ(explorer.doc.file, file) << "a redone load has its file again: Ctrl+S writes it";
+}
+
+// A figure preset is no file the user opened: the title names it as a preset
+// (not scenes/NAME.json), it has no file, and Ctrl+S asks where to save
+// rather than write over the file of the scene it replaced or the repository's.
+TEST(ExploreFiles, AFigurePresetHasNoFileAndCtrlSAsks) {
+    const fs::path dir = fresh_folder("explore_files_preset_save");
+    Explorer explorer = started();
+    const std::string file = (dir / "mine.json").string();
+    ASSERT_TRUE(run(explorer, command::SaveTo{file}));
+    const std::string mine = m3055::test::read_text(file);
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig06"}));
+    EXPECT_EQ(title_name(explorer.doc), "preset fig06");
+    EXPECT_EQ(explorer.doc.file, "");
+    ASSERT_TRUE(run(explorer, command::ApplyLightPreset{LightPreset::three_point_warm}));
+    commit_edits(explorer);
+    EXPECT_EQ(title_name(explorer.doc), "preset fig06 * (unsaved edits)");
+    EXPECT_EQ(explorer.doc.file, "");
+    run(explorer, command::Save{});
+    EXPECT_EQ(explorer.view.dialog, Dialog::save_as);
+    EXPECT_EQ(explorer.view.save_path, (dir / "fig06.json").string());
+    EXPECT_EQ(m3055::test::read_text(file), mine) << "the replaced scene's file is not written";
 }
 
 TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {

@@ -47,10 +47,10 @@ TEST(ExploreKeys, CtrlDigitsPickTheFigurePresetsInThePapersOrder) {
     EXPECT_STREQ(figure_for_digit(9), "fig13");
     Explorer explorer = started();
     EXPECT_TRUE(press(explorer, "ctrl+2"));
-    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig06");
     EXPECT_FALSE(unsaved(explorer.doc)) << "a preset as it came has nothing to lose";
     EXPECT_TRUE(press(explorer, "ctrl+3"));
-    EXPECT_EQ(explorer.doc.name, "scenes/fig07.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig07");
 }
 
 // In a browser Ctrl+digit switches tabs and Ctrl+0 resets the zoom: the
@@ -63,7 +63,7 @@ TEST(ExploreKeys, ThePagesFigureKeysAreCtrlAltDigitsAndItsCtrlDigitsTheBrowsers)
     EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), fresh);
     EXPECT_EQ(explorer.doc.name, "spec example");
     EXPECT_TRUE(press(explorer, "ctrl+alt+2"));
-    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig06");
     EXPECT_FALSE(press(explorer, "6"));
     EXPECT_NE(explorer.session.messages.status.find("Ctrl+Alt+6"), std::string::npos) << explorer.session.messages.status;
     EXPECT_TRUE(press(explorer, "ctrl+z")) << "the other Ctrl shortcuts stay the explorer's";
@@ -152,7 +152,7 @@ TEST(ExploreKeys, CtrlDigitReplacesAnEditedSceneUndoably) {
     const nlohmann::json edited = scene_to_json(explorer.doc.scene, PathWriting::absolute());
     ASSERT_TRUE(press(explorer, "ctrl+2"));
     commit_edits(explorer);
-    EXPECT_EQ(explorer.doc.name, "scenes/fig06.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig06");
     EXPECT_EQ(explorer.doc.history.undo_label(), "figure preset fig06");
     ASSERT_TRUE(run(explorer, command::Undo{}));
     EXPECT_EQ(scene_to_json(explorer.doc.scene, PathWriting::absolute()), edited);
@@ -193,7 +193,7 @@ TEST(ExploreKeys, SingleKeysWaitWhileAWidgetTakesTheKeyboardButCtrlShortcutsDoNo
     EXPECT_FALSE(press(explorer, "escape", slider_held));
     EXPECT_FALSE(press(explorer, "1", slider_held));
     EXPECT_TRUE(press(explorer, "ctrl+1", slider_held));
-    EXPECT_EQ(explorer.doc.name, "scenes/fig05.json");
+    EXPECT_EQ(explorer.doc.name, "preset fig05");
 }
 
 TEST(ExploreKeys, EscQuitsAskingFirstWhenEditedF1TogglesPanelsF12AsksForAScreenshotRResetsTheCamera) {

@@ -224,7 +224,11 @@ void next_screenshot_line(const Explorer& explorer) {
 }  // namespace
 
 void file_section(Explorer& explorer) {
-    ImGui::TextWrapped("scene file: %s", explorer.doc.file.empty() ? "(none: Ctrl+S asks)" : explorer.doc.file.c_str());
+    // Without a file, the name the title bar shows (a figure preset, the spec example): what Ctrl+S saves.
+    if (explorer.doc.file.empty())
+        ImGui::TextWrapped("scene file: none (%s); Ctrl+S asks where to save", explorer.doc.name.c_str());
+    else
+        ImGui::TextWrapped("scene file: %s", explorer.doc.file.c_str());
     if (ImGui::Button("Save (Ctrl+S)")) explorer.commands.push(command::Save{});
     tooltip("Writes the scene JSON to its own file (asks for one when it has none).");
     same_line_if_fits(button_width("Save as..."));
