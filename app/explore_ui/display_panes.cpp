@@ -139,7 +139,8 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     const double ms = milliseconds_since(start);
     if (!shape.empty()) drawn_program_shapes_.insert(shape);
     if (preview) preview_scale_.note(ms, divisor);
-    refine_pending_ = preview;
+    refine_pending_ = drew_preview_ = preview;
+    refine_ms_ = 0.0;
     refine_tiles_.start(explorer.doc.scene.display.width, explorer.doc.scene.display.height);
     return ms;
 }
@@ -163,7 +164,9 @@ void DisplayPanes::refine(Explorer& explorer) {
         refine_pending_ = false;
         return;
     }
-    refine_tiles_.drawn(tile, milliseconds_since(start));
+    const double ms = milliseconds_since(start);
+    refine_tiles_.drawn(tile, ms);
+    refine_ms_ += ms;
     if (!refine_tiles_.done()) return;
     refine_pending_ = false;
     refined_ = refined_of(explorer);

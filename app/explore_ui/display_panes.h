@@ -73,6 +73,12 @@ public:
     // that may hold them for seconds (see render_if_needed).
     bool compile_announced() const { return announce_frames_ > 0; }
     bool refine_started() const { return refine_pending_ && refine_tiles_.started(); }
+    // For the statistics, what the last drawing's time was of: render_if_needed
+    // drew a preview of area lights; the refine that followed has drawn the
+    // render's pixels in refine_ms (its tiles together, GPU finished; negative
+    // until it has).
+    bool drew_preview() const { return drew_preview_; }
+    double refine_ms() const { return drew_preview_ && refined_ ? refine_ms_ : -1.0; }
     // The next tile, top down (explore/refine_tiles.h), drawn with the render's samples
     // (about kRefineBandMs); the last one leaves the displays showing the render's pixels.
     void refine(Explorer& explorer);
@@ -127,6 +133,8 @@ private:
     PreviewScale preview_scale_;   // how much smaller a preview of area lights is drawn
     bool refine_pending_ = false;  // the displays show a preview, not the render's pixels
     RefineTiles refine_tiles_;     // where the refine draws next
+    bool drew_preview_ = false;    // the last render_if_needed drew a preview
+    double refine_ms_ = 0.0;       // the refine's tiles so far, after that preview
     // Area lights or shadows, and the models, of the scenes drawn so far (their
     // programs are built), the one announced last, and how many frames more wait for it.
     std::set<std::string> drawn_program_shapes_;

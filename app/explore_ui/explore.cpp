@@ -203,6 +203,8 @@ public:
             panes_->update_read_outs(e_);  // the difference panes show with the panels hidden too
             info_.compare_count = panes_->compare_count(e_);
             info_.refining = panes_->refining();
+            info_.render_is_preview = panes_->drew_preview();
+            info_.refine_ms = panes_->refine_ms();
         }
         // What the next frame will show beside the menu: a preview drawn above is refining from now
         // on (a script's `settle` reads it after this frame).

@@ -118,11 +118,23 @@ void level_histogram_view(const LevelHistogram& h, int bits) {
 // column, side by side in the band under the display).
 namespace {
 
+// What the display's last drawing took, saying what it was: with area lights
+// the time of a preview (one sample a light) is no render's, and the refine
+// to the render's pixels draws in tiles between frames.
+void drawing_time(const FrameInfo& info) {
+    if (!info.render_is_preview) ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
+    else if (info.refine_ms < 0.0) ImGui::TextWrapped("preview %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
+    else ImGui::TextWrapped("refined in %.1f ms, UI %.1f ms", info.refine_ms, info.frame_ms);
+    tooltip("The display's last drawing, GPU finished (A and B in the split). With area lights: \"preview\", the "
+            "preview drawn while edits come; \"refined in\", the refine to the render's pixels once done, its "
+            "tiles together (drawn between frames when input stops). UI: the last frame's CPU time.");
+}
+
 // Timings, the display's scale, the A/B count.
 void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     const Display& d = explorer.doc.scene.display;
     // Short wrapped lines: the column is 220 pixels wide at 1280 x 720.
-    ImGui::TextWrapped("render %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
+    drawing_time(info);
     ImGui::TextWrapped("frames %ld, renders %ld", info.frames, info.renders);
     const char* transform = d.view_transform == ViewTransform::srgb ? "sRGB" : "linear";
     if (info.scale >= 1) ImGui::TextWrapped("%d x %d, %d bits, %s, shown %d x", d.width, d.height, d.bits, transform, info.scale);

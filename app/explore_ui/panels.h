@@ -24,6 +24,8 @@ namespace m3055::explore {
 struct FrameInfo {
     double frame_ms = 0.0;    // CPU time of the last UI frame (without waiting)
     double render_ms = 0.0;   // the last scene render (GPU finished), both halves in compare
+    bool render_is_preview = false;  // ... a preview of area lights (explore/display_renderers.h)
+    double refine_ms = -1.0;  // the refine after that preview, its tiles together (negative: not done)
     long frames = 0;          // UI frames drawn so far
     long renders = 0;         // scene renders so far
     bool refining = false;    // the display shows a preview of area lights, not yet the render's pixels
