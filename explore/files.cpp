@@ -180,8 +180,9 @@ std::string json_beside(const std::string& png_path) {
 // same Renderer, the same read_display and write_png), and the scene beside it.
 // A script's `screenshot PATH` names the file; F12 takes the next free
 // NAME-0001.png in the chosen folder, so nothing is overwritten.
-void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, bool shows_render) {
+bool take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, bool shows_render) {
     const std::string png = path.empty() ? next_screenshot_path(e) : path;
+    bool drawn = shows_render;
     try {
         if (!shows_render) {
             // The screenshot waits for the specialized program (as `m3055 render` uses).
@@ -189,9 +190,16 @@ void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, b
             const AreaSampling sampling = renderer.area_sampling();
             renderer.set_defer_compiles(false);
             renderer.set_area_sampling(kRenderSampling);
-            renderer.render(e.doc.scene);
+            try {
+                renderer.render(e.doc.scene);
+            } catch (...) {  // the explorer's own settings back, whatever failed
+                renderer.set_defer_compiles(deferring);
+                renderer.set_area_sampling(sampling);
+                throw;
+            }
             renderer.set_defer_compiles(deferring);
             renderer.set_area_sampling(sampling);
+            drawn = true;
         }
         write_png(png, renderer.read_display());
         const std::string json = json_beside(png), text = scene_file_text(e, json);
@@ -206,6 +214,7 @@ void take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, b
     } catch (const std::exception& error) {
         e.session.messages.error = error.what();
     }
+    return drawn;
 }
 
 }  // namespace m3055::explore

@@ -52,6 +52,8 @@ std::string next_screenshot_path(const Explorer& explorer);
 // renderer's display already holds those pixels (a refined display of area
 // lights), written as they are rather than drawn again (seconds on llvmpipe).
 // The full paths go to the status line, an error to messages.error.
-void take_screenshot(Explorer& explorer, Renderer& renderer, const std::string& path, bool shows_render);
+// Returns whether the renderer's display holds the render's pixels of the
+// scene afterwards (it does unless drawing them failed).
+bool take_screenshot(Explorer& explorer, Renderer& renderer, const std::string& path, bool shows_render);
 
 }  // namespace m3055::explore

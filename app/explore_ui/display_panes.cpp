@@ -274,7 +274,18 @@ void DisplayPanes::answer(Explorer& explorer, const DisplayRequest& request) {
                    [&](const command::Screenshot& s) {
                        // A refined display holds the render's pixels (practice's grading draws with A too).
                        const bool shows_render = !practice_ && refined_ == refined_of(explorer);
-                       take_screenshot(explorer, *renderer_a_, s.path, shows_render);
+                       const auto start = std::chrono::steady_clock::now();
+                       const bool drawn = take_screenshot(explorer, *renderer_a_, s.path, shows_render);
+                       if (shows_render || !drawn) return;
+                       displays_drawn();
+                       // A's display now holds the render's pixels: alone on screen, it is the
+                       // refined display, which the refine under way would only draw again
+                       // (20 s for the softbox on llvmpipe, after the screenshot's own).
+                       if (!practice_ && !explorer.view.compare && refine_pending_) {
+                           refine_pending_ = false;
+                           refine_ms_ = milliseconds_since(start);
+                           refined_ = refined_of(explorer);
+                       }
                    },
                    [&](const command::SaveDisplay& s) { write_png(s.path, renderer_a_->read_display()); },
                },
