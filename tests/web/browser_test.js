@@ -213,7 +213,9 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 async function openPage(browser, url) {
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 750 });  // the canvas: 1280 x 720 under the page's bar
-  page.on('pageerror', (e) => console.log('  page error: ' + ((e && e.message) || String(e))));
+  // With the first frames of its stack: a trap in the explorer's wasm names its function.
+  page.on('pageerror', (e) => console.log('  page error: ' + ((e && e.message) || String(e)) +
+    (e && e.stack ? '\n    ' + e.stack.split('\n').slice(1, 9).map((l) => l.trim()).join('\n    ') : '')));
   const start = Date.now();
   await page.goto(url, { waitUntil: 'load' });
   await page.evaluate(() => window.m3055.ready);
@@ -612,11 +614,11 @@ async function abSplitByMouse(browser, base) {
   const a = decodePng(pngOf(await page.evaluate(() => window.m3055.displayPNG())));
   // The side panel's rows are 25 px from the first header at y = 90: Display,
   // Material, Lights (closed here), then Spectra, Objects, Camera and A/B
-  // compare (opened here), whose first rows are "split" and, after two rows
+  // compare (opened here), whose first rows are "split" and, after three rows
   // of text, "difference pane".
   const header = (i) => 90 + 25 * i;
   for (const [x, y] of [[60, header(0)], [60, header(1)], [60, header(2)], [60, header(6)], [18, header(7)],
-                        [18, header(7) + 59]]) {
+                        [18, header(7) + 74]]) {
     await page.mouse.click(x, y);
     await settle(page);
   }
