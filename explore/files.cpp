@@ -122,12 +122,27 @@ bool apply(Explorer& e, const command::Save&) {
     return apply(e, command::SaveTo{e.doc.file});
 }
 
+namespace {
+// A preset's own name ("fig05" for "preset fig05"), "" for any other document.
+std::string preset_of(const Document& doc) {
+    return doc.name.rfind(kPresetName, 0) == 0 ? doc.name.substr(kPresetName.size()) : "";
+}
+}  // namespace
+
 std::string save_as_proposal(const Explorer& e) {
+    namespace fs = std::filesystem;
     if (!e.doc.file.empty()) return e.doc.file;
-    std::string name = e.session.files.save_name;
-    if (e.doc.name.rfind(kPresetName, 0) == 0) name = e.doc.name.substr(kPresetName.size()) + ".json";
+    const std::string preset = preset_of(e.doc);
+    const fs::path name = preset.empty() ? fs::path(e.session.files.save_name) : fs::path(preset + ".json");
     const std::string& dir = e.session.files.save_dir;
-    return dir.empty() ? name : (std::filesystem::path(dir) / name).string();
+    const fs::path first = dir.empty() ? name : fs::path(dir) / name;
+    // Never a file that exists (the last file's folder may be the repository's
+    // scenes/, which holds the presets' own files): NAME-2.json, -3, ...
+    std::error_code ec;
+    fs::path proposal = first;
+    for (int n = 2; fs::exists(proposal, ec); ++n)
+        proposal = first.parent_path() / (first.stem().string() + "-" + std::to_string(n) + first.extension().string());
+    return proposal.string();
 }
 
 bool apply(Explorer& e, const command::AskSaveAs&) {
@@ -150,7 +165,8 @@ bool apply(Explorer& e, const command::SaveAs& c) {
 
 std::string next_screenshot_path(const Explorer& e) {
     namespace fs = std::filesystem;
-    const std::string stem = e.doc.file.empty() ? "m3055" : fs::path(e.doc.file).stem().string();
+    const std::string preset = preset_of(e.doc);
+    const std::string stem = !e.doc.file.empty() ? fs::path(e.doc.file).stem().string() : preset.empty() ? "m3055" : preset;
     const std::string& folder = e.session.files.screenshot_dir;
     const fs::path dir = folder.empty() ? fs::path(".") : fs::path(folder);
     for (int n = 1;; ++n) {

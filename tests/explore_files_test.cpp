@@ -140,6 +140,14 @@ TEST(ExploreFiles, AFigurePresetHasNoFileAndCtrlSAsks) {
     EXPECT_EQ(explorer.view.dialog, Dialog::save_as);
     EXPECT_EQ(explorer.view.save_path, (dir / "fig06.json").string());
     EXPECT_EQ(m3055::test::read_text(file), mine) << "the replaced scene's file is not written";
+    // A fig06.json there already (the repository's scenes/ holds every preset's):
+    // the proposal is a name that is free.
+    std::ofstream(dir / "fig06.json") << "{}";
+    std::ofstream(dir / "fig06-2.json") << "{}";
+    run(explorer, command::Save{});
+    EXPECT_EQ(explorer.view.save_path, (dir / "fig06-3.json").string());
+    explorer.session.files.screenshot_dir = dir.string();
+    EXPECT_EQ(next_screenshot_path(explorer), (dir / "fig06-0001.png").string()) << "F12 names the preset";
 }
 
 TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {

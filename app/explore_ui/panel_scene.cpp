@@ -237,7 +237,7 @@ void file_section(Explorer& explorer) {
     // (A label of at most the 110 px the panel leaves labels: "screenshot
     // folder" reached 7 px past its edge and widened it for every scene.)
     ImGui::InputText(field("screenshot dir").c_str(), &explorer.session.files.screenshot_dir);
-    tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name.");
+    tooltip("F12 writes the next free NAME-0001.png (and its scene JSON) here; NAME is the scene file's name (or the preset's).");
     if (ImGui::Button("Screenshot PNG + JSON (F12)")) explorer.commands.push(command::Screenshot{});
     tooltip("Display A at its own resolution, exactly the bytes `m3055 render` writes for the JSON beside it.");
     next_screenshot_line(explorer);
