@@ -136,11 +136,12 @@ std::string save_as_proposal(const Explorer& e) {
     const fs::path name = preset.empty() ? fs::path(e.session.files.save_name) : fs::path(preset + ".json");
     const std::string& dir = e.session.files.save_dir;
     const fs::path first = dir.empty() ? name : fs::path(dir) / name;
-    // Never a file that exists (the last file's folder may be the repository's
-    // scenes/, which holds the presets' own files): NAME-2.json, -3, ...
+    // A preset's: never a file that exists (the last file's folder may be the
+    // repository's scenes/, which holds the presets' own files): NAME-2.json,
+    // -3, ... (A practice's submission.json keeps its name: that is the file to hand in.)
     std::error_code ec;
     fs::path proposal = first;
-    for (int n = 2; fs::exists(proposal, ec); ++n)
+    for (int n = 2; !preset.empty() && fs::exists(proposal, ec); ++n)
         proposal = first.parent_path() / (first.stem().string() + "-" + std::to_string(n) + first.extension().string());
     return proposal.string();
 }

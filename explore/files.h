@@ -41,7 +41,8 @@ bool apply(Explorer& explorer, const command::SaveAs& c);
 // Save As's proposal: the scene's own file; without one, its name in the
 // folder of the last file loaded or saved (a figure preset: "fig10.json"; the
 // start of a practice: files.save_name, "submission.json") -- never the file
-// of a scene it replaced, nor any file that exists (then NAME-2.json, -3, ...).
+// of a scene it replaced, nor, for a preset, any file that exists (then
+// NAME-2.json, -3, ...).
 std::string save_as_proposal(const Explorer& explorer);
 // F12: the next free DIR/NAME-0001.png (NAME: the scene file's stem, a
 // preset's name, or "m3055"), neither it nor its .json existing yet.
