@@ -349,9 +349,9 @@ void redo_command(Call& c) {
 void print_state(Call& c) {
     commit_edits(c.explorer);
     const History& h = c.explorer.doc.history;
-    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tselected=%d\tbusy=%s\n", title_name(c.explorer.doc).c_str(),
+    std::printf("state title=%s\tundo=%s\tredo=%s\tsteps=%zu\tbusy=%s\tselected=%d\n", title_name(c.explorer.doc).c_str(),
                 h.can_undo() ? h.undo_label().c_str() : "", h.can_redo() ? h.redo_label().c_str() : "",
-                h.undo_steps(), c.view().selected_object, c.explorer.session.busy.c_str());
+                h.undo_steps(), c.explorer.session.busy.c_str(), c.view().selected_object);
     std::fflush(stdout);
 }
 

@@ -48,7 +48,7 @@
 //   undo | redo             the Edit menu's entries (an error when there is nothing to undo)
 //   print_grade             (--assignment) print the live grade once current, graded now if stale:
 //                           "grade score=S max=M passed=yes|no<TAB>reason<TAB>..." (the reasons grade writes)
-//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>selected=I<TAB>busy=LINE"
+//   print_state             print "state title=...<TAB>undo=LABEL<TAB>redo=LABEL<TAB>steps=N<TAB>busy=LINE<TAB>selected=I"
 //                           (LINE: what the menu bar says the explorer is busy with, "" when idle)
 //   screenshot PATH         display-resolution PNG + scene JSON beside it
 //   save_display PATH       A's pixels as the window shows them now, as a PNG: with area lights
