@@ -4,7 +4,7 @@
 
 namespace m3055::explore {
 
-std::size_t events_for_this_frame(const std::deque<InputEvent>& queue) {
+std::size_t events_for_this_frame(const std::deque<InputEvent>& queue, bool hold_characters) {
     std::set<int> keys_fed, buttons_fed;
     bool key_pressed = false, moved = false;
     std::size_t n = 0;
@@ -18,12 +18,13 @@ std::size_t events_for_this_frame(const std::deque<InputEvent>& queue) {
         } else if (event.kind == InputEvent::Kind::key) {
             if (!keys_fed.insert(event.key).second) break;  // its second transition: next frame
             if (event.press && event.edit_key) key_pressed = true;
-        } else if (key_pressed) {
+        } else if (key_pressed || hold_characters) {
             break;  // a character after a key press: next frame, so the order holds
         }
         ++n;
     }
-    return n == 0 && !queue.empty() ? 1 : n;
+    const bool held = hold_characters && !queue.empty() && queue.front().kind == InputEvent::Kind::character;
+    return n == 0 && !queue.empty() && !held ? 1 : n;
 }
 
 }  // namespace m3055::explore

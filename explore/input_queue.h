@@ -30,14 +30,45 @@ struct InputEvent {
     // A key a text field acts on (BackSpace, Delete, Enter, Tab, arrows, Home,
     // End; not a printable key nor a modifier): no character after its press in one frame.
     bool edit_key = false;
+    // Tab: its press moves the keyboard's focus to the next field, which takes
+    // frames (ImGui focuses the next item a frame later, and a logarithmic
+    // slider turns into its text field a frame or two after that): the
+    // characters after it wait for them (kFocusFrames).
+    bool focus_key = false;
 };
+
+// The frames a focus key's move takes before a character may follow it:
+// a digit typed right after Tab on a slow frame (the sanitizer build's) went
+// nowhere. Imperceptible as a delay (about 0.1 s at 30 frames a second).
+inline constexpr int kFocusFrames = 3;
 
 // How many events from the front of `queue` go to Dear ImGui this frame: all
 // of them up to the first that would change a key or button fed this frame
 // already, that is a character after an edit key's press fed this frame, or
 // that is a button's change after a move or a move after a button's change
 // fed this frame (moves in a row go together: the last one counts). At least
-// one when the queue is not empty.
-std::size_t events_for_this_frame(const std::deque<InputEvent>& queue);
+// one when the queue is not empty, unless `hold_characters` (a focus key's
+// move under way): then none from the first character on.
+std::size_t events_for_this_frame(const std::deque<InputEvent>& queue, bool hold_characters = false);
+
+// The queue fed frame after frame (the window's ImGui layer): each frame's
+// events_for_this_frame, the characters held for kFocusFrames frames after a
+// focus key was fed.
+class InputFeed {
+public:
+    // How many events from the front of `queue` go to Dear ImGui this frame;
+    // the caller pops each and tells fed() about it.
+    std::size_t this_frame(const std::deque<InputEvent>& queue) {
+        const bool focus_moving = frames_since_focus_key_ < kFocusFrames;
+        if (focus_moving) ++frames_since_focus_key_;
+        return events_for_this_frame(queue, focus_moving);
+    }
+    void fed(const InputEvent& event) {
+        if (event.focus_key) frames_since_focus_key_ = 0;
+    }
+
+private:
+    int frames_since_focus_key_ = kFocusFrames;
+};
 
 }  // namespace m3055::explore

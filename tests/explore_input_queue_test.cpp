@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <string>
+#include <vector>
 
 namespace m3055::explore {
 namespace {
@@ -119,6 +120,33 @@ TEST(ExploreInputQueue, MovesAndKeysShareAFrameButNotAButtonsChange) {
 }
 
 TEST(ExploreInputQueue, AnEmptyQueueFeedsNothing) { EXPECT_EQ(events_for_this_frame({}), 0u); }
+
+// Tab then a digit typed before the next field is active: the digit waits
+// kFocusFrames frames after the Tab's press is fed (the keys after it do not),
+// so it reaches the field Tab moved to (a sanitizer build's slow frames lost it).
+TEST(ExploreInputQueue, CharactersWaitForAFocusKeysMove) {
+    constexpr int kTab = 258;
+    InputEvent tab = key(kTab, true);
+    tab.edit_key = tab.focus_key = true;
+    std::deque<InputEvent> queue = {tab, key(kTab, false), character('7'), key(kBackspace, true)};
+    InputFeed feed;
+    std::vector<std::size_t> fed;
+    while (!queue.empty() && fed.size() < 10) {
+        const std::size_t n = feed.this_frame(queue);
+        fed.push_back(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            feed.fed(queue.front());
+            queue.pop_front();
+        }
+    }
+    // The press; its release; kFocusFrames - 1 frames more of nothing; the digit with the key after it.
+    std::vector<std::size_t> expected = {1, 1};
+    for (int frame = 1; frame < kFocusFrames; ++frame) expected.push_back(0);
+    expected.push_back(2);
+    EXPECT_EQ(fed, expected);
+    EXPECT_EQ(events_for_this_frame({character('a'), character('b')}, true), 0u) << "held, however many";
+    EXPECT_EQ(events_for_this_frame({key(kA, true), character('a')}, true), 1u) << "the keys before them go";
+}
 
 }  // namespace
 }  // namespace m3055::explore

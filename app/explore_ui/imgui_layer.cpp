@@ -41,6 +41,7 @@ void queue_key(GLFWwindow* window, int key, int scancode, int action, int mods) 
     event.mods = mods;
     event.press = action == GLFW_PRESS;
     event.edit_key = key >= GLFW_KEY_ESCAPE && !is_modifier(key);  // GLFW: printable keys are below 256
+    event.focus_key = key == GLFW_KEY_TAB && event.press;
     WindowEvents& events = events_of(window);
     events.input.push_back(event);
     events.frames_owed = kFramesAfterInput;
@@ -167,9 +168,10 @@ ImGuiLayer::~ImGuiLayer() {
 void ImGuiLayer::new_frame() {
     std::deque<InputEvent>& queue = events_of(window_).input;
     bool pointer_fed = false, button_fed = false;
-    for (std::size_t n = events_for_this_frame(queue); n > 0; --n) {
+    for (std::size_t n = feed_.this_frame(queue); n > 0; --n) {
         const InputEvent event = queue.front();
         queue.pop_front();
+        feed_.fed(event);
         if (event.kind == InputEvent::Kind::character) {
             ImGui_ImplGlfw_CharCallback(window_, event.codepoint);
         } else if (event.kind == InputEvent::Kind::pointer) {

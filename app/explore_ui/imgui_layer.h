@@ -6,6 +6,8 @@
 // two frames is not lost, and a click keeps its place among the keys.
 #pragma once
 
+#include "explore/input_queue.h"
+
 struct GLFWwindow;
 
 namespace m3055::explore {
@@ -29,6 +31,7 @@ private:
     bool buttons_down_[5] = {};
     bool pointer_known_ = false;  // the queue has fed a move or a click
     double pointer_x_ = 0.0, pointer_y_ = 0.0;  // the pointer as the queue has fed it
+    InputFeed feed_;  // which queued events go to ImGui each frame (explore/input_queue.h)
 };
 
 }  // namespace m3055::explore
