@@ -514,7 +514,7 @@ async function realInput(browser, base) {
 // The mouse wheel over the side panel scrolls it, as on the desktop: one notch
 // down moves the panel's rows up (found by matching the rows of two
 // screenshots), one notch up puts them back pixel for pixel.
-const PANEL = { x0: 0, x1: 490, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar
+const PANEL = { x0: 0, x1: 430, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar (the panel: 440 px)
 function panelRows(png) {
   const image = decodePng(png);
   const rows = [];
