@@ -341,14 +341,20 @@ TEST_F(Explorer, PixelProbeEqualsTheHeadlessRender) {
     EXPECT_NE(run.out.find("\tselected=2\n"), std::string::npos) << "the click on the right sphere: " << run.out;
 }
 
-// With area lights the display shows a fast preview while edits come, and
-// once input stops it refines to exactly `m3055 render`'s pixels.
-TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
-    TempDir dir;
+// The softbox preset at 160 x 100 (its refine takes seconds, not 20), as
+// softbox.json in `dir`.
+void write_small_softbox(const TempDir& dir) {
     std::string scene = test::read_text(test::source_path("scenes/softbox_three_point.json"));
     scene = std::regex_replace(scene, std::regex("\"width\": 512"), "\"width\": 160");
     scene = std::regex_replace(scene, std::regex("\"height\": 320"), "\"height\": 100");
     test::write_text(dir.file("softbox.json"), scene);
+}
+
+// With area lights the display shows a fast preview while edits come, and
+// once input stops it refines to exactly `m3055 render`'s pixels.
+TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
+    TempDir dir;
+    write_small_softbox(dir);
     test::write_text(dir.file("script.txt"), "load softbox.json\nset lights[0].size[0] 2.2\nsave_display preview.png\n"
                                              "settle 300\nsave_display refined.png\nsave scene.json\nscreenshot shot.png\n"
                                              "compare on\nsettle 300\nsave_display refined_split.png\n"
@@ -375,10 +381,7 @@ TEST_F(Explorer, AreaLightPreviewRefinesToTheRendersPixels) {
 // (20 s for the softbox at 512 x 320 on llvmpipe).
 TEST_F(Explorer, ScreenshotOfAPreviewLeavesTheDisplayRefined) {
     TempDir dir;
-    std::string scene = test::read_text(test::source_path("scenes/softbox_three_point.json"));
-    scene = std::regex_replace(scene, std::regex("\"width\": 512"), "\"width\": 160");
-    scene = std::regex_replace(scene, std::regex("\"height\": 320"), "\"height\": 100");
-    test::write_text(dir.file("softbox.json"), scene);
+    write_small_softbox(dir);
     test::write_text(dir.file("script.txt"), "load softbox.json\nset lights[0].size[0] 2.2\nprint_state\n"
                                              "screenshot shot.png\nprint_state\nsave_display after.png\n");
     const ExplorerRun run = run_explorer(dir.path(), {"--script", dir.file("script.txt"), "--exit-after-script"});
