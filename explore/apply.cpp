@@ -12,7 +12,7 @@ namespace {
 
 bool ask_quit(Explorer& e) {
     if (!e.session.platform.can_quit) return false;  // a page is closed by its tab, not by Esc
-    if (unsaved(e.doc)) e.view.dialog = Dialog::unsaved_edits;
+    if (work_unsaved(e)) e.view.dialog = Dialog::unsaved_edits;
     else e.session.quit = true;
     return true;
 }

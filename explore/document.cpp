@@ -4,10 +4,8 @@
 
 namespace m3055::explore {
 
-namespace {
 // A file by its path; a scene without one by its name (no path holds a newline).
 std::string saved_key(const Document& doc) { return doc.file.empty() ? "\n" + doc.name : doc.file; }
-}  // namespace
 
 Material* material_of(Document& doc, int& selected) {
     if (doc.scene.objects.empty()) return nullptr;

@@ -37,6 +37,8 @@ Material* material_of(Document& doc, int& selected);
 
 // The document is not what its file (or, without one, its origin) held when last loaded or saved here.
 bool unsaved(const Document& doc);
+// What the document is saved as: its file, or "\n" + its name without one.
+std::string saved_key(const Document& doc);
 // The document as it is now is what its file (or origin) holds.
 void mark_saved(Document& doc);
 // "NAME" or "NAME * (unsaved edits)" for the title bar.

@@ -15,6 +15,10 @@ Material* selected_material(Explorer& explorer) {
     return &explorer.doc.scene.objects[std::size_t(explorer.view.selected_object)].groups[std::size_t(group)].material;
 }
 
+bool work_unsaved(const Explorer& explorer) {
+    return unsaved(explorer.doc) || !explorer.session.replaced_unsaved.empty();
+}
+
 int selected_group(const Explorer& explorer) {
     const auto& objects = explorer.doc.scene.objects;
     if (objects.empty()) return -1;

@@ -29,6 +29,10 @@ Material* selected_material(Explorer& explorer);
 // (an index into Object::groups), or -1 for an object with one material.
 int selected_group(const Explorer& explorer);
 
+// Quitting would lose work: the document has unsaved edits, or a load or a
+// preset replaced one that had (Session::replaced_unsaved; undo brings it back).
+bool work_unsaved(const Explorer& explorer);
+
 // The second scene of the A/B compare: the same scene, the selected object wearing material B.
 Scene compare_scene(const Explorer& explorer);
 

@@ -23,8 +23,14 @@ namespace {
 const std::string kPresetName = "preset ";
 }  // namespace
 
-void set_scene(Explorer& e, const Scene& scene, const std::string& name, const std::string& action,
-               const std::string& file) {
+std::string set_scene(Explorer& e, const Scene& scene, const std::string& name, const std::string& action,
+                      const std::string& file) {
+    // Edits not saved, replaced (not at the start: the first scene replaces nothing of the user's).
+    std::string replaced;
+    if (e.doc.revision != 0 && unsaved(e.doc)) {
+        replaced = e.session.replaced_unsaved = e.doc.name;
+        e.session.replaced_unsaved_key = saved_key(e.doc);
+    }
     auto content = std::make_shared<DocumentContent>();
     content->scene = scene;
     content->camera_home = scene.camera;
@@ -35,6 +41,11 @@ void set_scene(Explorer& e, const Scene& scene, const std::string& name, const s
     edit_document(e, {DocumentEdit{content_of(e.doc), std::move(content)}, action.empty() ? "load " + name : action});
     e.view.selected_object = 0;
     e.view.selected_light = 0;
+    return replaced;
+}
+
+std::string replaced_note(const std::string& replaced) {
+    return replaced.empty() ? "" : "; the unsaved edits of " + replaced + " are one Ctrl+Z back";
 }
 
 bool apply(Explorer& e, const command::LoadScene& c) {
@@ -47,10 +58,10 @@ bool apply(Explorer& e, const command::LoadScene& c) {
         if (c.error_dialog) e.view.dialog = Dialog::load_error;
         return false;
     }
-    set_scene(e, scene, c.path, "", c.path);
+    const std::string replaced = set_scene(e, scene, c.path, "", c.path);
     mark_saved(e.doc);
     e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
-    messages.status = "loaded " + c.path;
+    messages.status = "loaded " + c.path + replaced_note(replaced);
     messages.error.clear();
     messages.load_error.clear();
     return true;
@@ -63,10 +74,11 @@ bool apply(Explorer& e, const command::LoadFigure& c) {
             const std::string source = "scenes/" + c.name + ".json";
             // Built in: no file of its own, unsaved once edited; Ctrl+S asks
             // where to save (proposing NAME.json, never the file of the scene it replaced).
-            set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()),
-                      kPresetName + c.name, "figure preset " + c.name);
+            const std::string replaced =
+                set_scene(e, scene_from_json(nlohmann::json::parse(figure.json), source, LoadContext::trusted()),
+                          kPresetName + c.name, "figure preset " + c.name);
             mark_saved(e.doc);
-            e.session.messages.status = "figure preset " + c.name;
+            e.session.messages.status = "figure preset " + c.name + replaced_note(replaced);
             e.session.messages.error.clear();
             return true;
         } catch (const std::exception& error) {
@@ -107,6 +119,7 @@ bool apply(Explorer& e, const command::SaveTo& c) {
         e.doc.file = c.path;
         e.doc.name = std::filesystem::path(c.path).filename().string();
         mark_saved(e.doc);
+        if (saved_key(e.doc) == e.session.replaced_unsaved_key) e.session.replaced_unsaved.clear();
         e.session.files.overwrite_warned.clear();
         e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
         e.session.messages.status = "saved " + full_path(c.path);

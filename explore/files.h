@@ -16,8 +16,12 @@ namespace m3055::explore {
 // Replaces the document with `scene` named `name`, its own file `file` ("":
 // none; camera_home = its camera, selections reset, B = a copy of the first
 // object's material): one undo step, named `action` ("load NAME" when empty).
-void set_scene(Explorer& explorer, const Scene& scene, const std::string& name, const std::string& action = "",
-               const std::string& file = "");
+// Returns the replaced document's name where it had unsaved edits (then
+// Session::replaced_unsaved: quitting asks first), else "".
+std::string set_scene(Explorer& explorer, const Scene& scene, const std::string& name, const std::string& action = "",
+                      const std::string& file = "");
+// "; the unsaved edits of NAME are one Ctrl+Z back" for a status line, or "".
+std::string replaced_note(const std::string& replaced);
 
 // A scene file; on failure the current scene stays and the loader's one-line
 // message goes to messages.error and load_error. Returns success.

@@ -150,6 +150,36 @@ TEST(ExploreFiles, AFigurePresetHasNoFileAndCtrlSAsks) {
     EXPECT_EQ(next_screenshot_path(explorer), (dir / "fig06-0001.png").string()) << "F12 names the preset";
 }
 
+// A preset (or a load) over unsaved edits: one Ctrl+Z brings them back, the
+// status line says so, and quitting asks first until they are saved; without
+// this, Esc after a figure key quit at once and the edits were gone.
+TEST(ExploreFiles, APresetOverUnsavedEditsSaysSoAndQuittingAsks) {
+    const fs::path dir = fresh_folder("explore_files_replaced_unsaved");
+    Explorer explorer = started();
+    const std::string file = (dir / "mine.json").string();
+    ASSERT_TRUE(run(explorer, command::SaveTo{file}));
+    ASSERT_TRUE(run(explorer, command::ApplyLightPreset{LightPreset::three_point_warm}));
+    commit_edits(explorer);
+    ASSERT_TRUE(unsaved(explorer.doc));
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig05"}));
+    EXPECT_FALSE(unsaved(explorer.doc)) << "the preset as it is built in";
+    EXPECT_TRUE(work_unsaved(explorer));
+    EXPECT_EQ(explorer.session.replaced_unsaved, "mine.json");
+    EXPECT_NE(explorer.session.messages.status.find("the unsaved edits of mine.json are one Ctrl+Z back"),
+              std::string::npos) << explorer.session.messages.status;
+    run(explorer, command::AskQuit{});
+    EXPECT_FALSE(explorer.session.quit);
+    EXPECT_EQ(explorer.view.dialog, Dialog::unsaved_edits);
+    explorer.view.dialog = Dialog::none;
+    // Back to them and saved: nothing is left to lose.
+    ASSERT_TRUE(run(explorer, command::Undo{}));
+    ASSERT_TRUE(run(explorer, command::Save{}));
+    ASSERT_TRUE(run(explorer, command::LoadFigure{"fig06"}));
+    EXPECT_FALSE(work_unsaved(explorer));
+    run(explorer, command::AskQuit{});
+    EXPECT_TRUE(explorer.session.quit);
+}
+
 TEST(ExploreFiles, ScreenshotPathIsTheNextFreeNumberNamedAfterTheSceneFile) {
     const fs::path dir = fresh_folder("explore_files_screenshots");
     Explorer explorer = started();

@@ -35,16 +35,24 @@ void quit_dialog(Explorer& explorer) {
     open_when_asked(explorer, Dialog::unsaved_edits, "Unsaved edits");
     centre_next_window();
     if (!ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-    ImGui::Text("\"%s\" has edits that are not saved.", explorer.doc.name.c_str());
-    ImGui::TextUnformatted(explorer.doc.file.empty() ? "Save asks for a file name."
-                                                    : ("Save writes " + explorer.doc.file + ".").c_str());
-    if (ImGui::Button("Save")) {
+    const bool current = unsaved(explorer.doc);
+    const std::string& replaced = explorer.session.replaced_unsaved;
+    if (current) {
+        ImGui::Text("\"%s\" has edits that are not saved.", explorer.doc.name.c_str());
+        ImGui::TextUnformatted(explorer.doc.file.empty() ? "Save asks for a file name."
+                                                        : ("Save writes " + explorer.doc.file + ".").c_str());
+    }
+    // A scene replaced by a load or a preset, its edits not saved: only undo brings it back.
+    if (!replaced.empty())
+        ImGui::Text("\"%s\" had edits that are not saved when it was replaced:\nCancel, then Ctrl+Z back to it, to keep them.",
+                    replaced.c_str());
+    if (current && ImGui::Button("Save")) {
         ImGui::CloseCurrentPopup();
         explorer.session.files.quit_after_save = true;
         run_command(explorer, command::Save{});  // now: whether it saved decides what follows
         if (explorer.view.dialog != Dialog::save_as && !unsaved(explorer.doc)) explorer.session.quit = true;
     }
-    ImGui::SameLine();
+    if (current) ImGui::SameLine();
     if (ImGui::Button("Discard")) {
         ImGui::CloseCurrentPopup();
         explorer.session.quit = true;

@@ -119,7 +119,7 @@ public:
     bool done() {
         if (e_.session.quit) return true;
         if (window_.should_close()) {
-            if (!unsaved(e_.doc)) return true;
+            if (!work_unsaved(e_)) return true;
             window_.cancel_close();  // ask first (the unsaved-edits dialog)
             e_.commands.push(command::AskQuit{});
             owe_frames(1);

@@ -187,7 +187,7 @@ EMSCRIPTEN_KEEPALIVE int m3055_idle(void) {
 // before quitting then; the page asks before it is closed or reloaded), else 0.
 EMSCRIPTEN_KEEPALIVE int m3055_unsaved(void) {
     ExplorerSession* s = web::session();
-    return s && explore::unsaved(s->explorer().doc) ? 1 : 0;
+    return s && explore::work_unsaved(s->explorer()) ? 1 : 0;
 }
 
 // The practice grade line as `m3055 grade` scores it ("" outside practice mode).
