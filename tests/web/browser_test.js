@@ -514,7 +514,7 @@ async function realInput(browser, base) {
 // The mouse wheel over the side panel scrolls it, as on the desktop: one notch
 // down moves the panel's rows up (found by matching the rows of two
 // screenshots), one notch up puts them back pixel for pixel.
-const PANEL = { x0: 0, x1: 430, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar (the panel: 440 px)
+const PANEL = { x0: 0, x1: 410, y0: 90, y1: 500, wheelX: 250, wheelY: 660 };  // left of its scrollbar (x 418-432 in the 440 px panel)
 function panelRows(png) {
   const image = decodePng(png);
   const rows = [];
@@ -532,7 +532,8 @@ function rowsMovedUp(before, after) {
     for (let y = PANEL.y0; y < PANEL.y1; ++y) if (before[y + dy] !== undefined && after[y] === before[y + dy]) ++matches;
     if (matches > best.matches) best = { dy, matches };
   }
-  return best.matches >= 0.9 * (PANEL.y1 - PANEL.y0) ? best.dy : 0;
+  // Of the rows both images hold at that shift (a panel scrolled to its end moves less than a notch).
+  return best.matches >= 0.9 * (PANEL.y1 - PANEL.y0 - Math.abs(best.dy)) ? best.dy : 0;
 }
 async function wheelScrollsPanel(browser, base) {
   const page = await openPage(browser, base);
@@ -555,7 +556,9 @@ async function wheelScrollsPanel(browser, base) {
     await page.waitForFunction((count) => window.wheelsSeen >= count, { timeout: 30000 }, n);
     await settle(page);
   };
-  const before = await shot();
+  const beforeShot = await page.screenshot();
+  fs.writeFileSync(path.join(out, `${backend}-wheel-before.png`), beforeShot);
+  const before = panelRows(beforeShot);
   await wheel(100, 1);  // one notch down, as Chromium reports a wheel's notch (100 px)
   const down = await page.screenshot();
   fs.writeFileSync(path.join(out, `${backend}-wheel-down.png`), down);
