@@ -161,6 +161,7 @@ std::string save_as_proposal(const Explorer& e) {
 
 bool apply(Explorer& e, const command::AskSaveAs&) {
     e.view.save_path = save_as_proposal(e);
+    e.view.save_as_error.clear();
     e.session.files.overwrite_warned.clear();
     e.view.dialog = Dialog::save_as;
     return true;

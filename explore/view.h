@@ -48,6 +48,7 @@ struct View {
     Dialog dialog = Dialog::none;  // to open next frame
     // The dialogs' and the File section's text fields.
     std::string save_path = "m3055-scene.json";  // Save As
+    std::string save_as_error;  // what the Save As dialog's last Save said (not an older error)
     std::string load_path;                       // File > load
     std::string brdf_path;                       // File > Open BRDF
     std::string model_path;                      // File > Add model

@@ -72,18 +72,26 @@ void save_as_dialog(Explorer& explorer) {
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(420.0f);
     const bool enter = ImGui::InputText("file", &explorer.view.save_path, ImGuiInputTextFlags_EnterReturnsTrue);
-    if (!explorer.session.messages.error.empty()) ImGui::TextColored(ImVec4(1, 0.43f, 0.43f, 1), "%s", explorer.session.messages.error.c_str());
+    // Only what this dialog's Save said: an older error (a failed screenshot) belongs elsewhere.
+    std::string& said = explorer.view.save_as_error;
+    if (!said.empty()) ImGui::TextColored(ImVec4(1, 0.43f, 0.43f, 1), "%s", said.c_str());
     if (ImGui::Button("Save") || enter) {
         explorer.session.messages.error.clear();
         if (run_command(explorer, command::SaveAs{explorer.view.save_path})) {
             ImGui::CloseCurrentPopup();
+            said.clear();
             if (explorer.session.files.quit_after_save) explorer.session.quit = true;
+        } else {
+            said = explorer.session.messages.error;
         }
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escape_pressed()) {
         ImGui::CloseCurrentPopup();
         explorer.session.files.quit_after_save = false;
+        // Its warning ("exists ...: Save again to overwrite it") is moot once cancelled.
+        if (!said.empty() && explorer.session.messages.error == said) explorer.session.messages.error.clear();
+        said.clear();
     }
     ImGui::EndPopup();
 }
