@@ -211,7 +211,7 @@ TEST(AtomicWrite, MissingFolderThrowsNamingThePath) {
         write_file_atomic(path, "abc", 3);
         FAIL() << "expected ImageError";
     } catch (const ImageError& e) {
-        EXPECT_EQ(std::string(e.what()), path + ": cannot create temporary file: No such file or directory");
+        EXPECT_EQ(std::string(e.what()), path + ": cannot write into its folder: No such file or directory");
     }
     EXPECT_EQ(folder_entries(dir.path()), std::vector<std::string>{});
 }
@@ -243,7 +243,7 @@ TEST(AtomicWrite, ParentIsAFileThrowsAndKeepsTheFile) {
         write_pfm(path, RgbFloatImage{1, 1, {0.f, 0.f, 0.f}});
         FAIL() << "expected ImageError";
     } catch (const ImageError& e) {
-        EXPECT_EQ(std::string(e.what()), path + ": cannot create temporary file: Not a directory");
+        EXPECT_EQ(std::string(e.what()), path + ": cannot write into its folder: Not a directory");
     }
     EXPECT_EQ(test::read_text(parent), "old bytes\n\x01\x02");
     EXPECT_EQ(folder_entries(dir.path()), std::vector<std::string>{"plain"});

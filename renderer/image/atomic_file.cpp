@@ -127,7 +127,9 @@ Temporary create_temporary(const std::string& path) {
     t.name = name_of(path);
     if (t.name.empty() || t.name == "." || t.name == "..") fail(path, "not a file name", EISDIR);
     t.folder = ::open(folder_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (t.folder < 0) fail(path, "cannot create temporary file", errno);
+    // Said as what it is (and as the command line's check says it): a missing
+    // folder is the usual mistake, and "cannot create temporary file" hid it.
+    if (t.folder < 0) fail(path, "cannot write into its folder", errno);
     const long name_max = ::fpathconf(t.folder, _PC_NAME_MAX);
     std::random_device seed;
     std::mt19937_64 random((std::uint64_t(seed()) << 32) ^ seed());
