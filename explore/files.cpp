@@ -28,8 +28,8 @@ std::string set_scene(Explorer& e, const Scene& scene, const std::string& name, 
     // Edits not saved, replaced (not at the start: the first scene replaces nothing of the user's).
     std::string replaced;
     if (e.doc.revision != 0 && unsaved(e.doc)) {
-        replaced = e.session.replaced_unsaved = e.doc.name;
-        e.session.replaced_unsaved_key = saved_key(e.doc);
+        replaced = e.doc.name;
+        e.session.replaced_unsaved = saved_key(e.doc);
     }
     auto content = std::make_shared<DocumentContent>();
     content->scene = scene;
@@ -119,7 +119,7 @@ bool apply(Explorer& e, const command::SaveTo& c) {
         e.doc.file = c.path;
         e.doc.name = std::filesystem::path(c.path).filename().string();
         mark_saved(e.doc);
-        if (saved_key(e.doc) == e.session.replaced_unsaved_key) e.session.replaced_unsaved.clear();
+        if (saved_key(e.doc) == e.session.replaced_unsaved) e.session.replaced_unsaved.clear();
         e.session.files.overwrite_warned.clear();
         e.session.files.save_dir = std::filesystem::path(c.path).parent_path().string();
         e.session.messages.status = "saved " + full_path(c.path);
@@ -216,20 +216,20 @@ bool take_screenshot(Explorer& e, Renderer& renderer, const std::string& path, b
     bool drawn = shows_render;
     try {
         if (!shows_render) {
-            // The screenshot waits for the specialized program (as `m3055 render` uses).
-            const bool deferring = renderer.defers_compiles();
-            const AreaSampling sampling = renderer.area_sampling();
+            // The screenshot waits for the specialized program (as `m3055 render` uses);
+            // the explorer's own settings come back however the render ends.
+            struct Restore {
+                Renderer& renderer;
+                bool deferring;
+                AreaSampling sampling;
+                ~Restore() {
+                    renderer.set_defer_compiles(deferring);
+                    renderer.set_area_sampling(sampling);
+                }
+            } restore{renderer, renderer.defers_compiles(), renderer.area_sampling()};
             renderer.set_defer_compiles(false);
             renderer.set_area_sampling(kRenderSampling);
-            try {
-                renderer.render(e.doc.scene);
-            } catch (...) {  // the explorer's own settings back, whatever failed
-                renderer.set_defer_compiles(deferring);
-                renderer.set_area_sampling(sampling);
-                throw;
-            }
-            renderer.set_defer_compiles(deferring);
-            renderer.set_area_sampling(sampling);
+            renderer.render(e.doc.scene);
             drawn = true;
         }
         write_png(png, renderer.read_display());

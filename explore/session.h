@@ -87,10 +87,10 @@ struct Session {
     std::string busy;         // this frame's busy_line (explore/busy.h), beside the menu
     bool render_needed = true;  // the document or the view changed: the displays are drawn again once
     bool quit = false;          // the frame loop ends
-    // A document with unsaved edits that a load or a preset replaced (its name;
-    // "" for none): undo brings it back, so quitting asks first (explore/document.h).
+    // A document with unsaved edits that a load or a preset replaced, as
+    // saved_key names it (its file, or "\n" + its name; "" for none): undo
+    // brings it back, so quitting asks first (explore/explorer.h: work_unsaved).
     std::string replaced_unsaved;
-    std::string replaced_unsaved_key;  // its file, or "\n" + its name without one
 };
 
 }  // namespace m3055::explore

@@ -164,7 +164,7 @@ TEST(ExploreFiles, APresetOverUnsavedEditsSaysSoAndQuittingAsks) {
     ASSERT_TRUE(run(explorer, command::LoadFigure{"fig05"}));
     EXPECT_FALSE(unsaved(explorer.doc)) << "the preset as it is built in";
     EXPECT_TRUE(work_unsaved(explorer));
-    EXPECT_EQ(explorer.session.replaced_unsaved, "mine.json");
+    EXPECT_EQ(explorer.session.replaced_unsaved, file) << "mine.json, by its file";
     EXPECT_NE(explorer.session.messages.status.find("the unsaved edits of mine.json are one Ctrl+Z back"),
               std::string::npos) << explorer.session.messages.status;
     run(explorer, command::AskQuit{});

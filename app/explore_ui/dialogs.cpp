@@ -36,7 +36,8 @@ void quit_dialog(Explorer& explorer) {
     centre_next_window();
     if (!ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     const bool current = unsaved(explorer.doc);
-    const std::string& replaced = explorer.session.replaced_unsaved;
+    const std::string& key = explorer.session.replaced_unsaved;  // a file, or "\n" + a name
+    const std::string replaced = key.empty() || key[0] != '\n' ? key : key.substr(1);
     if (current) {
         ImGui::Text("\"%s\" has edits that are not saved.", explorer.doc.name.c_str());
         ImGui::TextUnformatted(explorer.doc.file.empty() ? "Save asks for a file name."

@@ -114,23 +114,22 @@ bool log_slider(const char* label, double* value, double lo, double hi, const ch
         typing_focus = true;
         return false;
     }
-    double fine = at;
-    if (fine_drag(id, at, &fine)) {
-        const double dragged = dragged_value(log_slider_value(fine, lo, hi, decades), lo, hi);
+    // The value at slider position `p`, as a drag leaves it; false when that is the value already.
+    const auto drag_to = [&](double p) {
+        const double dragged = dragged_value(log_slider_value(p, lo, hi, decades), lo, hi);
         if (dragged == *value) return false;
         *value = dragged;
         return true;
-    }
+    };
+    double fine = at;
+    if (fine_drag(id, at, &fine)) return drag_to(fine);
     if (ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && ImGui::GetIO().KeyCtrl) {
         typing_id = id;  // and the click does not move the value
         typing_focus = true;
         return false;
     }
     if (!moved) return false;
-    const double dragged = dragged_value(log_slider_value(position, lo, hi, decades), lo, hi);
-    if (dragged == *value) return false;
-    *value = dragged;
-    return true;
+    return drag_to(position);
 }
 
 }  // namespace
