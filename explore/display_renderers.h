@@ -44,7 +44,7 @@ private:
 
 // A's scene, and B's compare scene when the split is on. A scene with area
 // lights (preview_differs) is drawn as a preview: the area lights' fast
-// sampling (kFastSampling: one sample and one shadow ray an emitter,
+// sampling (kFastSampling: one or two points and one shadow ray an emitter,
 // docs/lights.md), at 1/divisor of the display's size.
 void render_displays(const Explorer& explorer, Renderer& a, Renderer& b, int divisor = 1);
 

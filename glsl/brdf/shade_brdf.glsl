@@ -10,7 +10,7 @@ vec3 shade_brdf(Material mat, vec3 P, vec3 N, vec3 V) {
     vec3 X, Y;
     tangent_frame(mat.axis, N, X, Y);
     vec3 I = vec3(0.0);
-    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, vec2(0.0)) {
+    for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, vec3(0.0)) {
         LightSample light = light_sample_of(i, P, N);
         float NoL = dot(N, light.L);
         if (NoL <= 0.0) continue;  // (N.L)+: the BRDF is not evaluated below the horizon

@@ -168,9 +168,73 @@ AreaSample area_sample_at(int i, int type, vec2 u, vec3 P, vec3 N) {
     return emitter_sample(P, centre + at.x * e0 + at.y * e1, normal, emitter_area(i, type));
 }
 
+// The sky's direction w seen from a point of normal N, as a sample of it.
+AreaSample sky_direction(vec3 N, vec3 up, vec3 w) {
+    AreaSample s;
+    s.L = w;
+    s.distance = -1.0;
+    s.pdf = sky_pdf(N, up, w);
+    return s;
+}
+
+// The sky's one sample (n = 1): midway between N and up, inside the part of
+// the sky above N's horizon whatever way N faces (N itself, the centre of the
+// cosine's square, is no part of the sky for a face turned sideways or down).
+AreaSample sky_centre(vec3 N, vec3 up) {
+    return sky_direction(N, up, normalize(N + up));
+}
+
 // Sample k of n x n of area light i (of type `type`) from the point P of normal N.
 AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
+    if (n == 1 && type == LIGHT_SKY) return sky_centre(N, u_light_vector[i].xyz);
     return area_sample_at(i, type, stratum_point(k, n, rotation), P, N);
+}
+
+// The explorer's preview (n = 1) takes two points of an emitter for a model
+// whose highlight the lobe's closed form integrates wholly (ModelSpec::
+// glsl_lobe_exact): one where the highlight about D is (the representative
+// point Karis 2013 takes for sphere and tube lights: where the ray P + t D
+// meets the emitter's plane, moved onto the rect or disk if it falls outside;
+// far along D's trace on the plane where D points away from it), and one on
+// the emitter's far side from it: the pair's two factors (common/lights.glsl)
+// need two points that the cosine and the lobe tell apart, and are positive
+// where the two bracket the lobe's share of the light. For the sky, D itself,
+// lifted above the sky's horizon (its lobe's tail is what is seen), and a
+// direction between N and up, away from D.
+vec2 emitter_point_towards(int i, int type, vec3 P, vec3 D) {
+    vec3 centre = u_light_vector[i].xyz, normal = u_light_spot[i].xyz;
+    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+    float facing = -dot(D, normal), height = dot(P - centre, normal);
+    vec3 offset = facing > 0.0 ? P + (height / facing) * D - centre
+                               : P - height * normal - centre + 1e4 * (D + facing * normal);
+    vec2 at = vec2(dot(offset, e0) / dot(e0, e0), dot(offset, e1) / dot(e1, e1));
+    return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
+}
+
+vec2 emitter_point_apart(vec2 at) {
+    float r = length(at);
+    return -0.9 * (r > 1e-3 ? at / r : vec2(1.0, 0.0));
+}
+
+AreaSample emitter_point(int i, int type, vec2 at, vec3 P) {
+    vec3 centre = u_light_vector[i].xyz;
+    vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
+    return emitter_sample(P, centre + at.x * e0 + at.y * e1, u_light_spot[i].xyz, emitter_area(i, type));
+}
+
+// Point k (0 or 1) of the preview's two.
+AreaSample preview_point(int i, int type, int k, vec3 P, vec3 N, vec3 D) {
+    vec3 up = u_light_vector[i].xyz;
+    if (type == LIGHT_SKY) {
+        if (k == 1) return sky_direction(N, up, normalize(D + max(0.1 - dot(D, up), 0.0) * up));
+        // Midway between N and up, moved 39 degrees away from D (on a face turned down, below a horizon: no pair).
+        vec3 mid = normalize(N + up), away = D - dot(D, mid) * mid, T, B;
+        complete_frame(mid, T, B);
+        away = dot(away, away) > 1e-6 ? normalize(away) : T;
+        return sky_direction(N, up, normalize(mid - 0.8 * away));
+    }
+    vec2 at = emitter_point_towards(i, type, P, D);
+    return emitter_point(i, type, k == 0 ? emitter_point_apart(at) : at, P);
 }
 
 // The density with which area_sample draws the direction w (0 where w misses

@@ -116,6 +116,7 @@ struct LightWalk {
     int occluder_from;   // a shadowed sky: samples occluder_from .. n - 1 are of what the objects block
     int occluder_mask;   // ... drawn about the objects of these bits (common/sky_occluders.glsl)
     float lobe_exponent; // the model's lobe about it that samples are drawn from (generated/models.glsl: lobe_exponents)
+    bool two_points;     // the preview (n = 1): a point where the highlight is beside the centre (preview_point)
 };
 
 #ifdef HAS_AREA_LIGHTS
@@ -132,6 +133,13 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
     int n = u_area_samples;
     int from_lobe = (walk.occluder_mask != 0 ? walk.occluder_from : walk.n) - walk.from_emitter;
     AreaSample s;
+    if (n == 1 && walk.two_points) {
+        // The preview's two points (light_walk), each an estimate of its own: the pair's
+        // factors make the two one.
+        s = preview_point(i, walk.type, walk.k, P, N, walk.lobe_axis);
+        weight = s.pdf > 0.0 ? 1.0 / s.pdf : 0.0;
+        return s;
+    }
     if (walk.k < walk.from_emitter) {
         s = area_sample(i, walk.type, walk.k, n, walk.rotation, P, N);
     } else {
@@ -153,8 +161,9 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
 // shadow is what the objects block (common/sky_occluders.glsl), or, with more
 // than MAX_SKY_OCCLUDERS objects, a ray a sample.
 float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
-    int probe = min(3, u_shadow_samples);
-    if (type == LIGHT_SKY || u_area_samples <= 1) return -1.0;
+    // The preview (n = 1): its centre, the one ray of a hard shadow for its two points.
+    int probe = u_area_samples <= 1 ? 1 : min(3, u_shadow_samples);
+    if (type == LIGHT_SKY) return -1.0;
     bool some_seen = false, some_hidden = false;
     for (int k = 0; k < probe * probe; ++k) {
         // The probes on a lattice that takes in the emitter's edge (u = 0 and 1:
@@ -205,8 +214,8 @@ float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
 
 // `lobes`: the Phong exponents of the model's highlight about V's mirror direction (0: none),
 // the one its samples are drawn from and the one its closed form controls (ModelSpec::glsl_lobe,
-// glsl_control_lobe).
-LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
+// glsl_control_lobe), and 1 where the highlight is exactly that lobe (glsl_lobe_exact).
+LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
     float lobe = lobes.x;
     LightWalk walk;
     walk.k = 0;
@@ -222,6 +231,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
     walk.occluder_from = 0;
     walk.occluder_mask = 0;
     walk.lobe_exponent = lobe;
+    walk.two_points = false;
 #ifdef HAS_AREA_LIGHTS
     if (walk.type < LIGHT_RECT) return walk;
     if (!faces_emitter(i, walk.type, P)) {
@@ -248,6 +258,13 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
 #endif
     float exact = area_exact_projected(i, walk.type, P, N);
     if (exact < 0.0) return walk;
+#ifdef HAS_LOBE_CLOSED_FORM
+    // The preview's one sample and, with the lobe's closed form, a second where the
+    // highlight is: the pair below then makes the two exact for a highlight's cosine
+    // and lobe together (kept only where the pair holds).
+    walk.two_points = n == 1 && lobe >= kLobeMinExponent && lobes.z > 0.0;
+    if (walk.two_points) walk.n = 2;
+#endif
     // The pair's lobe, exact for the paper's m and Phong's, near for the rest. Of a mixture's lobes
     // (lobes.x the sharpest, lobes.y the one that reflects most light) the one the emitter's own
     // samples resolve worst: across a rect or disk, sampled uniformly in area, the heaviest
@@ -260,6 +277,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
     float lambda = pair ? exact / exact_lobe : 0.0;
     float sampled = 0.0;
     vec4 sums = vec4(0.0);  // sum of weight x (p cos, (1 - p) cos, p lobe, (1 - p) lobe)
+    vec2 shares = vec2(0.0);  // the preview's two points: their p
     for (LightWalk w = walk; w.k < w.n; ++w.k) {
         float weight;
         AreaSample s = walk_direction(i, w, P, N, weight);
@@ -268,6 +286,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
         if (pair) {
             float l = lobe_value(s.L, N, walk.lobe_axis, whole), p = cosine_share(c, l, lambda);
             sums += weight * vec4(p * c, (1.0 - p) * c, p * l, (1.0 - p) * l);
+            if (w.k < 2) shares[w.k] = p;
         }
     }
     if (sampled > 0.0) walk.ratio = exact / sampled;
@@ -277,9 +296,24 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec2 lobes) {
         float alpha = (exact * sums.w - exact_lobe * sums.y) / det;
         float beta = (exact_lobe * sums.x - exact * sums.z) / det;
         // Only where the two are told apart well and both factors stay positive (else E / E_s alone).
-        if (abs(det) > 1e-3 * (sums.x * sums.w + sums.y * sums.z) && alpha > 0.0 && beta > 0.0)
+        // The preview's two points need only their own factors positive (each point's
+        // alpha p + beta (1 - p)); of many samples, with shares between 0 and 1, the factors.
+        vec2 factors = walk.two_points ? alpha * shares + beta * (1.0 - shares) : vec2(alpha, beta);
+        if (abs(det) > 1e-3 * (sums.x * sums.w + sums.y * sums.z) && factors.x > 0.0 && factors.y > 0.0)
             walk.exact_pair = vec4(alpha, beta, lambda, whole);
     }
+#ifdef HAS_LOBE_CLOSED_FORM
+    // Without the pair the preview's second point would weigh a sharp highlight's peak
+    // as if it covered the emitter: the centre alone, as before.
+    if (walk.two_points && walk.exact_pair.x <= 0.0) {
+        walk.n = 1;
+        walk.two_points = false;
+        float weight;
+        AreaSample s = walk_direction(i, walk, P, N, weight);
+        float c = weight * max(dot(N, s.L), 0.0);
+        walk.ratio = c > 0.0 ? exact / c : 1.0;
+    }
+#endif
 #ifdef HAS_SHADOWS
     // A shadowed sky: its samples as unshadowed, then what the objects block
     // (common/sky_occluders.glsl), where they are few enough to be drawn about.
@@ -357,7 +391,7 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
 #define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, LOBE); light_walk_.k < light_walk_.n; ++light_walk_.k)
 #else
 // Shadows without area lights: one sample a light, none drawn from a lobe (nor is lobe_exponents generated).
-#define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, vec2(0.0)); light_walk_.k < light_walk_.n; ++light_walk_.k)
+#define FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, LOBE) for (LightWalk light_walk_ = light_walk(i, P, N, V, vec3(0.0)); light_walk_.k < light_walk_.n; ++light_walk_.k)
 #endif
 #define light_sample_of(i, P, N) light_walk_sample(i, light_walk_, P, N)
 #else

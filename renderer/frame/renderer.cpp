@@ -104,7 +104,7 @@ struct Renderer::Impl {
 
     // The defines of a pass over `objects` (passes/shader_plan.h), and the lobe's
     // closed form where the sampling asks for it and the scene has an area light
-    // (the explorer's preview does without it: its compile costs seconds on llvmpipe).
+    // (the render's and the explorer's preview: kRenderSampling, kFastSampling).
     std::vector<std::string> defines_of(const std::vector<const Object*>& objects, const std::vector<Light>& lights) const {
         std::vector<std::string> defines = specialization_defines(shader_mode, objects, lights);
         if (sampling.lobe_closed_form &&

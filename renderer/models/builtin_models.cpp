@@ -93,6 +93,7 @@ ModelSpec highlight() {
     s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/highlight.glsl", s.glsl_hook = "shade_highlight";
     s.glsl_lobe = "mat.m";
+    s.glsl_lobe_exact = true;
     return s;
 }
 
@@ -109,6 +110,7 @@ ModelSpec translucent() {
     s.derived = {{"spectral_table", 1, no_spectral_table}};
     s.glsl_file = "models/translucent.glsl", s.glsl_hook = "shade_translucent";
     s.glsl_lobe = "mat.m";
+    s.glsl_lobe_exact = true;
     return s;
 }
 
@@ -256,6 +258,7 @@ ModelSpec phong() {
     ModelSpec s = classic("phong", "Phong", "Phong 1975 (seed 001)", "Lambert + ((R.V)+)^n K_spec", true);
     s.params.push_back(shininess("exponent n on R.V: larger is a smaller, sharper highlight", "seed 001"));
     s.glsl_lobe = "mat.shininess";
+    s.glsl_lobe_exact = true;
     return s;
 }
 

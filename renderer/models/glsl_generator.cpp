@@ -161,7 +161,7 @@ std::string material_file(const ModelTable& table) {
     for (const ModelSpec& spec : table.models()) out += unpack(spec);
     out += "    return mat;\n}\n\n// The families' dispatchers to their models' hooks (generated/models.glsl).\n";
     for (const Dispatcher& d : kDispatchers) out += std::string(d.result) + " " + d.name + "(" + d.params + ");\n";
-    return out + "#ifdef HAS_AREA_LIGHTS\nvec2 lobe_exponents(Material mat, int i);\n#endif\n";
+    return out + "#ifdef HAS_AREA_LIGHTS\nvec3 lobe_exponents(Material mat, int i);\n#endif\n";
 }
 
 // A family's dispatcher: "if (mat.model == MODEL_X) return hook(...);" per model.
@@ -182,17 +182,18 @@ std::string dispatcher(const ModelTable& table, const Dispatcher& d) {
 // Area lights' second way of drawing directions and their lobe's control
 // variate (glsl/common/lights.glsl): the Phong exponents about V's mirror
 // direction of the material's highlight, each model's ModelSpec::glsl_lobe and
-// glsl_control_lobe; 0 for a model without one.
+// glsl_control_lobe; 0 for a model without one. Third: 1 where the highlight is
+// exactly that lobe (ModelSpec::glsl_lobe_exact).
 std::string lobe_dispatcher(const ModelTable& table) {
     std::string out = "\n#ifdef HAS_AREA_LIGHTS\n#include \"common/lobe_hints.glsl\"\n\n"
-                      "vec2 lobe_exponents(Material mat, int i) {\n";
+                      "vec3 lobe_exponents(Material mat, int i) {\n";
     for (const ModelSpec& spec : table.models()) {
         if (spec.glsl_lobe.empty()) continue;
         const std::string control = spec.glsl_control_lobe.empty() ? spec.glsl_lobe : spec.glsl_control_lobe;
-        out += "#ifdef " + has_define(spec) + "\n    if (mat.model == MODEL_" + spec.macro_name() + ") return vec2(" +
-               spec.glsl_lobe + ", " + control + ");\n#endif\n";
+        out += "#ifdef " + has_define(spec) + "\n    if (mat.model == MODEL_" + spec.macro_name() + ") return vec3(" +
+               spec.glsl_lobe + ", " + control + (spec.glsl_lobe_exact ? ", 1.0" : ", 0.0") + ");\n#endif\n";
     }
-    return out + "    return vec2(0.0);\n}\n#endif\n";
+    return out + "    return vec3(0.0);\n}\n#endif\n";
 }
 
 std::string models_file(const ModelTable& table) {

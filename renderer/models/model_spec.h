@@ -123,6 +123,13 @@ struct ModelSpec {
     // glsl_lobe's: a mixture of lobes draws samples from its sharpest (its peaks)
     // and, under a rect or disk, is controlled by the one that carries most light. "": glsl_lobe's.
     std::string glsl_control_lobe;
+    // Whether the highlight is exactly cosine terms and ((R_V . L)+)^glsl_lobe (the
+    // paper's highlight, Phong): the pair of closed forms then integrates it wholly
+    // from any two points, so the explorer's preview takes two of an area light (its
+    // centre and where the highlight is) in place of the centre alone. A lobe that
+    // only resembles that one (a microfacet's, a metal's) could be overshot by two
+    // points standing for the whole emitter: the centre alone (docs/lights.md).
+    bool glsl_lobe_exact = false;
     std::vector<DerivedValue> derived;
     // GLSL the entry brings itself, (path, text) as the composer includes it
     // (run-time models: a .brdf file's code and its wrapper); built-in models

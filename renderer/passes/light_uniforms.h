@@ -17,15 +17,17 @@ namespace m3055 {
 // (`shadow`, at most 3 x 3), then in a penumbra (the sky: always) one ray for
 // each of the samples. The render's
 // setting and its error against the reference: docs/lights.md. The explorer's
-// preview while a slider moves takes each emitter's centre (n = 1: exact for
-// Lambert terms) and one ray to it (a hard shadow from the centre).
+// preview while a slider moves takes one point of each emitter (n = 1: exact
+// for Lambert terms), two for the paper's highlight and Phong (exact for them
+// with the lobe's closed form), and one ray to the centre (a hard shadow).
 struct AreaSampling {
     int light = 8;
     int shadow = 3;
     // A highlight of whole exponent under a rect or the sky integrated exactly
     // (glsl/common/lobe_moment.glsl, compiled in only then: kLobeClosedFormDefine);
-    // off: the samples scaled by E / E_s alone. On in the render (its compile
-    // costs about 5 s more on llvmpipe, once per scene shape; docs/lights.md).
+    // off: the samples scaled by E / E_s alone. On in the render and the preview
+    // (one program for both in the explorer; its compile costs about 3-5 s more
+    // on llvmpipe, once per scene shape; docs/lights.md).
     bool lobe_closed_form = false;
     bool operator==(const AreaSampling& o) const {
         return light == o.light && shadow == o.shadow && lobe_closed_form == o.lobe_closed_form;
@@ -35,7 +37,7 @@ struct AreaSampling {
 inline constexpr AreaSampling kRenderSampling{8, 3, true};
 // The define of the programs that integrate the lobe in closed form (AreaSampling::lobe_closed_form).
 inline constexpr const char* kLobeClosedFormDefine = "HAS_LOBE_CLOSED_FORM";
-inline constexpr AreaSampling kFastSampling{1, 1};
+inline constexpr AreaSampling kFastSampling{1, 1, true};
 
 struct LightUniforms {
     int count = 0;
