@@ -30,7 +30,7 @@ struct Setting {
 // exponent under a rect or the sky is integrated exactly.
 const Setting kSettings[] = {
     {"fast preview (explorer)", kFastSampling},
-    {"centre alone (the preview before 2026-11-28)", {1, 1}},
+    {"one point an emitter, no closed form", {1, 1}},
     {"2 x 2 samples, 2 x 2 probe", {2, 2}},
     {"4 x 4 samples, 3 x 3 probe", {4, 3}},
     {"8 x 8 samples, 3 x 3 probe", {8, 3}},
