@@ -184,12 +184,6 @@ AreaSample sky_centre(vec3 N, vec3 up) {
     return sky_direction(N, up, normalize(N + up));
 }
 
-// Sample k of n x n of area light i (of type `type`) from the point P of normal N.
-AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
-    if (n == 1 && type == LIGHT_SKY) return sky_centre(N, u_light_vector[i].xyz);
-    return area_sample_at(i, type, stratum_point(k, n, rotation), P, N);
-}
-
 // The explorer's preview (n = 1) takes two points of an emitter for a model
 // whose highlight the lobe's closed form integrates wholly (ModelSpec::
 // glsl_lobe_exact): one where the highlight about D is (the representative
@@ -216,6 +210,19 @@ vec2 emitter_point_apart(vec2 at) {
     return -0.9 * (r > 1e-3 ? at / r : vec2(1.0, 0.0));
 }
 
+// The point `at` of emitter i moved, where N's horizon crosses the emitter and
+// `at` is below it, across the horizon's line into the part P sees (0.05 of a
+// half-side in), then back onto the rect or disk: a point below the horizon
+// adds nothing, and the pair needs two that do.
+vec2 emitter_point_above(int i, int type, vec3 P, vec3 N, vec2 at) {
+    vec3 c = u_light_vector[i].xyz - P;
+    vec2 g = vec2(dot(N, u_light_extent[2 * i].xyz), dot(N, u_light_extent[2 * i + 1].xyz));
+    float h = dot(N, c) + dot(at, g), gg = dot(g, g);
+    if (h > 0.0 || gg <= 0.0) return at;
+    at += (0.05 * sqrt(gg) - h) / gg * g;
+    return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
+}
+
 AreaSample emitter_point(int i, int type, vec2 at, vec3 P) {
     vec3 centre = u_light_vector[i].xyz;
     vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
@@ -234,7 +241,18 @@ AreaSample preview_point(int i, int type, int k, vec3 P, vec3 N, vec3 D) {
         return sky_direction(N, up, normalize(mid - 0.8 * away));
     }
     vec2 at = emitter_point_towards(i, type, P, D);
-    return emitter_point(i, type, k == 0 ? emitter_point_apart(at) : at, P);
+    if (k == 0) at = emitter_point_apart(at);
+    return emitter_point(i, type, emitter_point_above(i, type, P, N, at), P);
+}
+
+// Sample k of n x n of area light i (of type `type`) from the point P of normal N.
+// n = 1 (the preview's one point): the centre, moved into the part above N's
+// horizon where the emitter crosses it (the centre below it lit nothing, though
+// Lambert's E is exact for what P sees).
+AreaSample area_sample(int i, int type, int k, int n, vec2 rotation, vec3 P, vec3 N) {
+    if (n == 1 && type == LIGHT_SKY) return sky_centre(N, u_light_vector[i].xyz);
+    if (n == 1) return emitter_point(i, type, emitter_point_above(i, type, P, N, vec2(0.0)), P);
+    return area_sample_at(i, type, stratum_point(k, n, rotation), P, N);
 }
 
 // The density with which area_sample draws the direction w (0 where w misses

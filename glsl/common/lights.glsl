@@ -161,7 +161,8 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
 // shadow is what the objects block (common/sky_occluders.glsl), or, with more
 // than MAX_SKY_OCCLUDERS objects, a ray a sample.
 float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
-    // The preview (n = 1): its centre, the one ray of a hard shadow for its two points.
+    // The preview (n = 1): its one point (the centre, or the point nearest it above N's
+    // horizon), the one ray of a hard shadow for its two points.
     int probe = u_area_samples <= 1 ? 1 : min(3, u_shadow_samples);
     if (type == LIGHT_SKY) return -1.0;
     bool some_seen = false, some_hidden = false;
@@ -171,7 +172,7 @@ float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
         // for every pixel: an occluder's edge enters a penumbra across the
         // emitter's boundary, where rotated strata's centres, 1/6 in, missed it.
         vec2 u = probe > 1 ? vec2(float(k % probe), float(k / probe)) / float(probe - 1) : vec2(0.5);
-        AreaSample s = area_sample_at(i, type, u, P, N);
+        AreaSample s = probe > 1 ? area_sample_at(i, type, u, P, N) : area_sample(i, type, 0, 1, rotation, P, N);
         if (!(s.pdf > 0.0 && dot(N, s.L) > 0.0)) continue;
         if (occluded(P, N, s.L, s.distance)) some_hidden = true;
         else some_seen = true;
@@ -272,8 +273,11 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
     // samples follow a broad lobe, the sharpest (docs/lights.md, "fourth").
     float whole = max(floor((walk.type == LIGHT_SKY ? lobes.x : lobes.y) + 0.5), 1.0);
     float exact_lobe = walk.n > walk.from_emitter ? area_exact_lobe(i, walk.type, P, N, walk.lobe_axis, whole) : -1.0;
-    // Too little of the lobe on the emitter for float to keep its integral (1e-6 of 2 pi / (e + 1)).
-    bool pair = exact > 0.0 && exact_lobe > 1e-3 * 2.0 * PI / (whole + 1.0);
+    // Too little of the lobe on the emitter (under 1e-3 of its whole, 2 pi / (e + 1)) for
+    // float to keep its integral: E / E_s alone. The preview's two points take the pair down
+    // to 1e-6 of it: a highlight's tail there, its value at one point times E / cos, was up
+    // to 6e-4 off; the pair's error is A's, a float's share of an integral that small.
+    bool pair = exact > 0.0 && exact_lobe > (walk.two_points ? 1e-6 : 1e-3) * 2.0 * PI / (whole + 1.0);
     float lambda = pair ? exact / exact_lobe : 0.0;
     float sampled = 0.0;
     vec4 sums = vec4(0.0);  // sum of weight x (p cos, (1 - p) cos, p lobe, (1 - p) lobe)
