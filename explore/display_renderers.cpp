@@ -45,11 +45,11 @@ std::size_t deferred_programs(const Renderer& a, const Renderer& b) {
     return a.deferred_programs() + b.deferred_programs();
 }
 
-void refine_region(const Explorer& e, Renderer& a, Renderer& b, const DisplayRegion& region) {
-    a.set_area_sampling(kRenderSampling);
+void refine_region(const Explorer& e, Renderer& a, Renderer& b, const DisplayRegion& region, AreaSampling sampling) {
+    a.set_area_sampling(sampling);
     a.render_region(e.doc.scene, region);
     if (!e.view.compare) return;
-    b.set_area_sampling(kRenderSampling);
+    b.set_area_sampling(sampling);
     b.render_region(compare_scene(e), region);
 }
 

@@ -59,8 +59,11 @@ bool preview_differs(const Scene& scene);
 void refine_displays(const Explorer& explorer, Renderer& a, Renderer& b);
 // The same for `region` only: the explorer refines in tiles between frames
 // (explore/refine_tiles.h), so input waits for one tile at most; tiles over
-// the whole display give refine_displays's pixels.
-void refine_region(const Explorer& explorer, Renderer& a, Renderer& b, const DisplayRegion& region);
+// the whole display give refine_displays's pixels. With kFastSampling: the
+// preview's pixels at the display's size (a preview drawn smaller, sharpened
+// first: about 1 s for the softbox, where the render's take 12 s and more).
+void refine_region(const Explorer& explorer, Renderer& a, Renderer& b, const DisplayRegion& region,
+                   AreaSampling sampling = kRenderSampling);
 // A tile of refinement should take about this long (input waits for one tile at most).
 inline constexpr double kRefineBandMs = 60.0;
 // While refining, a frame shows the tiles drawn so far this often (a frame a

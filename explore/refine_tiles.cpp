@@ -4,7 +4,7 @@
 
 namespace m3055::explore {
 
-void RefineTiles::start(int width, int height) {
+void RefineTiles::start(int width, int height, bool sharpen_first) {
     width_ = width;
     height_ = height;
     band_top_ = height;
@@ -12,6 +12,7 @@ void RefineTiles::start(int width, int height) {
     band_x_ = 0;
     tiles_drawn_ = 0;
     last_pixels_ = 0;
+    sharpening_ = sharpen_first;
 }
 
 DisplayRegion RefineTiles::next(double budget_ms) const {
@@ -44,6 +45,12 @@ void RefineTiles::drawn(const DisplayRegion& tile, double ms) {
     if (band_x_ >= width_) {
         band_x_ = 0;
         band_top_ = band_bottom_;
+    }
+    if (band_top_ <= 0 && sharpening_) {  // the render's pass next, from the top
+        sharpening_ = false;
+        band_top_ = band_bottom_ = height_;
+        band_x_ = 0;
+        last_pixels_ = kFirstTilePixels / 2;  // its first tile small again: the render's samples cost more
     }
 }
 

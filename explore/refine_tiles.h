@@ -2,7 +2,11 @@
 // (app/explore_ui/display_panes.h): the display in tiles, top down, each a
 // part of a band of rows, each sized to take about kRefineBandMs from what the
 // last one cost, so input waits for one tile at most. No GL: the panes draw
-// each tile with Renderer::render_region.
+// each tile with Renderer::render_region. A preview drawn smaller than the
+// display is first sharpened: a pass of the preview's own sampling at the
+// display's size (about 1 s for the softbox at 512 x 320 on llvmpipe), then
+// the pass of the render's (12 s and more), so that the display is whole and
+// nearly right soon after input stops.
 //
 // Why tiles and not whole rows: a row of the sky fill at 512 px costs 0.3 to 1 s
 // on llvmpipe (docs/lights.md), and a band thinner than 4 rows costs as much as
@@ -24,9 +28,12 @@ public:
     // and a cheap tile says nothing of the next.
     static constexpr int kMaxTilePixels = 2048;
 
-    // A new refine of a width x height display, from its top row.
-    void start(int width, int height);
-    bool done() const { return band_top_ <= 0; }
+    // A new refine of a width x height display, from its top row; `sharpen_first`:
+    // a pass of the preview's sampling before the render's.
+    void start(int width, int height, bool sharpen_first = false);
+    bool done() const { return band_top_ <= 0 && !sharpening_; }
+    // The pass under way draws the preview's sampling (kFastSampling), not the render's.
+    bool sharpening() const { return sharpening_; }
     bool started() const { return tiles_drawn_ > 0; }
 
     // The next tile to draw, for a tile to take about `budget_ms`.
@@ -39,6 +46,7 @@ private:
     int band_top_ = 0, band_bottom_ = 0;  // the band being refined: rows [band_bottom_, band_top_)
     int band_x_ = 0;                      // its columns refined so far: [0, band_x_)
     int tiles_drawn_ = 0;
+    bool sharpening_ = false;
     int last_pixels_ = 0;        // the last tile's size
     double ms_per_pixel_ = 0.0;  // the last tile's cost (not the first's: it may include a compile)
 };

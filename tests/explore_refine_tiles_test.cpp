@@ -1,7 +1,8 @@
 // Where the refine of an area-light preview draws next (explore/refine_tiles.h):
 // tiles cover the display once, top down, on llvmpipe's 4 x 4 grid, the
 // first small, then sized to the budget from the last tile's cost and never
-// more than twice the last.
+// more than twice the last; a preview drawn smaller: twice, the preview's
+// sampling first.
 #include "explore/refine_tiles.h"
 
 #include <gtest/gtest.h>
@@ -13,13 +14,15 @@ namespace m3055::explore {
 namespace {
 
 // Draws every tile of a width x height display, `cost(tile)` ms each; the tiles in order.
-std::vector<DisplayRegion> refine_all(int width, int height, const std::function<double(const DisplayRegion&)>& cost) {
+std::vector<DisplayRegion> refine_all(int width, int height, const std::function<double(const DisplayRegion&)>& cost,
+                                      bool sharpen_first = false, std::vector<bool>* sharpening = nullptr) {
     RefineTiles tiles;
-    tiles.start(width, height);
+    tiles.start(width, height, sharpen_first);
     std::vector<DisplayRegion> drawn;
     while (!tiles.done() && drawn.size() < 100000) {
         const DisplayRegion tile = tiles.next(60.0);
         drawn.push_back(tile);
+        if (sharpening) sharpening->push_back(tiles.sharpening());
         tiles.drawn(tile, cost(tile));
     }
     return drawn;
@@ -69,6 +72,32 @@ TEST(RefineTiles, ACheapRegionDoesNotMakeTheNextTileLong) {
         if (drawn[i].x1 != 512) {
             EXPECT_LE(area(drawn[i]), 2.0 * area(drawn[i - 1])) << i;
         }
+    }
+}
+
+// A preview drawn smaller than the display: the preview's pass covers the display once,
+// then the render's pass covers it once, from the top again, its first tile small.
+TEST(RefineTiles, SharpenedFirstThenTheRendersPass) {
+    std::vector<bool> sharpening;
+    const auto drawn = refine_all(512, 320, [](const DisplayRegion& t) { return 0.01 * area(t); }, true, &sharpening);
+    std::vector<int> covered(512 * 320, 0), covered_sharp(512 * 320, 0);
+    std::size_t first_render_tile = drawn.size();
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        if (!sharpening[i] && first_render_tile == drawn.size()) first_render_tile = i;
+        if (i > first_render_tile) {
+            EXPECT_FALSE(sharpening[i]) << i;  // one pass of each, in that order
+        }
+        for (int y = drawn[i].y0; y < drawn[i].y1; ++y)
+            for (int x = drawn[i].x0; x < drawn[i].x1; ++x)
+                ++(sharpening[i] ? covered_sharp : covered)[std::size_t(y) * 512 + x];
+    }
+    ASSERT_GT(first_render_tile, 0u);
+    ASSERT_LT(first_render_tile, drawn.size());
+    EXPECT_EQ(drawn[first_render_tile].y1, 320);
+    EXPECT_LE(area(drawn[first_render_tile]), RefineTiles::kFirstTilePixels);
+    for (std::size_t p = 0; p < covered.size(); ++p) {
+        ASSERT_EQ(covered_sharp[p], 1) << p;
+        ASSERT_EQ(covered[p], 1) << p;
     }
 }
 

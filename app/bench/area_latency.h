@@ -21,6 +21,7 @@ struct AreaLatencyReport {
     DragStats before;  // every frame at the display's size with 2 x 2 shadow rays (the explorer until now)
     DragStats after;   // the explorer's preview (explore/display_renderers.h)
     int divisor_min = 1, divisor_max = 1;  // the preview's sizes, 1/divisor of the display's
+    double sharpen_ms = 0;                 // the refine's first pass: the preview at the display's size
     double refine_ms = 0;                  // from the last step to the render's pixels
     std::string markdown() const;
 };

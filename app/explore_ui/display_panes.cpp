@@ -141,7 +141,7 @@ double DisplayPanes::render_if_needed(Explorer& explorer, double now) {
     if (preview) preview_scale_.note(ms, divisor);
     refine_pending_ = drew_preview_ = preview;
     refine_ms_ = 0.0;
-    refine_tiles_.start(explorer.doc.scene.display.width, explorer.doc.scene.display.height);
+    refine_tiles_.start(explorer.doc.scene.display.width, explorer.doc.scene.display.height, preview && divisor > 1);
     return ms;
 }
 
@@ -156,7 +156,8 @@ void DisplayPanes::refine(Explorer& explorer) {
     const DisplayRegion tile = refine_tiles_.next(kRefineBandMs);
     const auto start = std::chrono::steady_clock::now();
     try {
-        refine_region(explorer, *renderer_a_, *renderer_b_, tile);
+        refine_region(explorer, *renderer_a_, *renderer_b_, tile,
+                      refine_tiles_.sharpening() ? kFastSampling : kRenderSampling);
         displays_drawn();
         gl_.Finish();
     } catch (const std::exception& e) {

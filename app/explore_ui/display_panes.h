@@ -69,6 +69,8 @@ public:
     // A preview of area lights is showing (explore/display_renderers.h): the
     // display is "refining" until refine() has drawn the render's pixels.
     bool refining() const { return refine_pending_; }
+    // ... and its first pass, the preview at the display's size, is under way.
+    bool sharpening() const { return refine_pending_ && refine_tiles_.sharpening(); }
     // The displays wait one frame that says "compiling..." before a render
     // that may hold them for seconds (see render_if_needed).
     bool compile_announced() const { return announce_frames_ > 0; }
@@ -79,8 +81,10 @@ public:
     // until it has).
     bool drew_preview() const { return drew_preview_; }
     double refine_ms() const { return drew_preview_ && refined_ ? refine_ms_ : -1.0; }
-    // The next tile, top down (explore/refine_tiles.h), drawn with the render's samples
-    // (about kRefineBandMs); the last one leaves the displays showing the render's pixels.
+    // The next tile, top down (explore/refine_tiles.h), about kRefineBandMs: where the
+    // preview was drawn smaller than the display, first its own pixels at the display's
+    // size (a sharp approximation about a second after input stops), then the render's
+    // samples; the last tile leaves the displays showing the render's pixels.
     void refine(Explorer& explorer);
     // The display as `m3055 render` writes it: A rendered now with its
     // specialized program; the window shows it on the next frame.

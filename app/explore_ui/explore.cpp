@@ -259,9 +259,10 @@ private:
     }
 
     // A preview of area lights on the display: after kIdleBeforeRefine s with
-    // no input, between frames, drawn again with the render's samples, a tile
-    // at a time (input polled between tiles), shown by a frame every
-    // kRefineFrameSeconds and at the end; "refining..." goes with the last.
+    // no input, between frames, drawn again (a preview drawn smaller first at the
+    // display's size, then with the render's samples), a tile at a time (input
+    // polled between tiles), shown by a frame every kRefineFrameSeconds and at
+    // the end of each pass; "refining..." goes with the last.
     void refine_when_idle() {
         if (!panes_->refine_started()) window_.wait(kIdleBeforeRefine);
         else window_.poll();
@@ -273,8 +274,11 @@ private:
             owe_frames(1);
             return;
         }
+        const bool sharpening = panes_->sharpening();
         panes_->refine(e_);
-        if (!panes_->refining() || window_.time() - last_refine_frame_ >= kRefineFrameSeconds) {
+        // Shown when the preview is whole at the display's size, and when the render's pixels are.
+        if (sharpening != panes_->sharpening() || !panes_->refining() ||
+            window_.time() - last_refine_frame_ >= kRefineFrameSeconds) {
             owe_frames(1);
             last_refine_frame_ = window_.time();
         }
