@@ -172,7 +172,9 @@ float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
         // for every pixel: an occluder's edge enters a penumbra across the
         // emitter's boundary, where rotated strata's centres, 1/6 in, missed it.
         vec2 u = probe > 1 ? vec2(float(k % probe), float(k / probe)) / float(probe - 1) : vec2(0.5);
-        AreaSample s = probe > 1 ? area_sample_at(i, type, u, P, N) : area_sample(i, type, 0, 1, rotation, P, N);
+        AreaSample s;  // (no ?: between structures in GLSL ES)
+        if (probe > 1) s = area_sample_at(i, type, u, P, N);
+        else s = area_sample(i, type, 0, 1, rotation, P, N);
         if (!(s.pdf > 0.0 && dot(N, s.L) > 0.0)) continue;
         if (occluded(P, N, s.L, s.distance)) some_hidden = true;
         else some_seen = true;
@@ -290,7 +292,8 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         if (pair) {
             float l = lobe_value(s.L, N, walk.lobe_axis, whole), p = cosine_share(c, l, lambda);
             sums += weight * vec4(p * c, (1.0 - p) * c, p * l, (1.0 - p) * l);
-            if (w.k < 2) shares[w.k] = p;
+            if (w.k == 0) shares.x = p;
+            else if (w.k == 1) shares.y = p;
         }
     }
     if (sampled > 0.0) walk.ratio = exact / sampled;
