@@ -160,11 +160,13 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
 // stands beside a point hides part of it almost everywhere, is never probed: its
 // shadow is what the objects block (common/sky_occluders.glsl), or, with more
 // than MAX_SKY_OCCLUDERS objects, a ray a sample.
+// The preview (n = 1), the sky's too: its one point (a rect's or disk's centre,
+// or the point nearest it above N's horizon; the sky's between N and up), the
+// one ray of a hard shadow for its two points (a ray each drew the objects'
+// mirror images on a floor under the sky, where its highlight's point met them).
 float emitter_seen(int i, int type, vec2 rotation, vec3 P, vec3 N) {
-    // The preview (n = 1): its one point (the centre, or the point nearest it above N's
-    // horizon), the one ray of a hard shadow for its two points.
     int probe = u_area_samples <= 1 ? 1 : min(3, u_shadow_samples);
-    if (type == LIGHT_SKY) return -1.0;
+    if (type == LIGHT_SKY && probe > 1) return -1.0;
     bool some_seen = false, some_hidden = false;
     for (int k = 0; k < probe * probe; ++k) {
         // The probes on a lattice that takes in the emitter's edge (u = 0 and 1:
