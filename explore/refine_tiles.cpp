@@ -15,6 +15,12 @@ void RefineTiles::start(int width, int height, bool sharpen_first) {
     sharpening_ = sharpen_first;
 }
 
+double RefineTiles::progress() const {
+    const double total = double(width_) * height_;
+    if (total <= 0.0) return 1.0;
+    return (double(height_ - band_top_) * width_ + double(band_x_) * (band_top_ - band_bottom_)) / total;
+}
+
 DisplayRegion RefineTiles::next(double budget_ms) const {
     // The pixels this tile may take: the first few, then the budget at the last
     // tile's cost, at most twice the last tile and kMaxTilePixels.

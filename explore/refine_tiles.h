@@ -34,6 +34,8 @@ public:
     bool done() const { return band_top_ <= 0 && !sharpening_; }
     // The pass under way draws the preview's sampling (kFastSampling), not the render's.
     bool sharpening() const { return sharpening_; }
+    // The share of the display the pass under way has drawn (0 ... 1).
+    double progress() const;
     bool started() const { return tiles_drawn_ > 0; }
 
     // The next tile to draw, for a tile to take about `budget_ms`.

@@ -101,6 +101,29 @@ TEST(RefineTiles, SharpenedFirstThenTheRendersPass) {
     }
 }
 
+// The share drawn (the statistics' "N %"): 0 at a pass's start, growing tile by
+// tile as the tiles' pixels, back to 0 for the render's pass.
+TEST(RefineTiles, ProgressIsTheShareOfThePassDrawn) {
+    RefineTiles tiles;
+    tiles.start(130, 83, true);
+    EXPECT_EQ(tiles.progress(), 0.0);
+    double drawn_pixels = 0.0;
+    bool sharpening = true;
+    while (!tiles.done()) {
+        const DisplayRegion tile = tiles.next(60.0);
+        tiles.drawn(tile, 0.01 * area(tile));
+        drawn_pixels += area(tile);
+        if (sharpening && !tiles.sharpening()) {  // the preview's pass ended: the render's from 0
+            EXPECT_EQ(drawn_pixels, 130.0 * 83.0);
+            drawn_pixels = 0.0;
+            sharpening = false;
+        }
+        EXPECT_DOUBLE_EQ(tiles.progress(), drawn_pixels / (130.0 * 83.0));
+    }
+    EXPECT_FALSE(sharpening);
+    EXPECT_DOUBLE_EQ(tiles.progress(), 1.0);
+}
+
 TEST(RefineTiles, AStartBeginsAgainFromTheTop) {
     RefineTiles tiles;
     tiles.start(64, 40);

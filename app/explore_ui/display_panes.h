@@ -71,6 +71,8 @@ public:
     bool refining() const { return refine_pending_; }
     // ... and its first pass, the preview at the display's size, is under way.
     bool sharpening() const { return refine_pending_ && refine_tiles_.sharpening(); }
+    // ... the share of the display its pass under way has drawn (0 ... 1).
+    double refine_progress() const { return refine_tiles_.progress(); }
     // The displays wait one frame that says "compiling..." before a render
     // that may hold them for seconds (see render_if_needed).
     bool compile_announced() const { return announce_frames_ > 0; }

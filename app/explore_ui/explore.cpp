@@ -203,6 +203,9 @@ public:
             panes_->update_read_outs(e_);  // the difference panes show with the panels hidden too
             info_.compare_count = panes_->compare_count(e_);
             info_.refining = panes_->refining();
+            info_.sharpening = panes_->sharpening();
+            info_.refine_started = panes_->refine_started();
+            info_.refine_progress = panes_->refine_progress();
             info_.render_is_preview = panes_->drew_preview();
             info_.refine_ms = panes_->refine_ms();
         }

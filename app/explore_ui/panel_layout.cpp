@@ -126,8 +126,9 @@ void drawing_time(const FrameInfo& info) {
     else if (info.refine_ms < 0.0) ImGui::TextWrapped("preview %.1f ms, UI %.1f ms", info.render_ms, info.frame_ms);
     else ImGui::TextWrapped("refined in %.1f ms, UI %.1f ms", info.refine_ms, info.frame_ms);
     tooltip("The display's last drawing, GPU finished (A and B in the split). With area lights: \"preview\", the "
-            "preview drawn while edits come; \"refined in\", the refine to the render's pixels once done, its "
-            "tiles together (drawn between frames when input stops). UI: the last frame's CPU time.");
+            "preview drawn while edits come (shown until the refine is done); \"refined in\", the refine to the "
+            "render's pixels once done: the drawing time of its tiles added up, both passes (not the time since "
+            "input stopped: frames and input come between tiles). UI: the last frame's CPU time.");
 }
 
 // Timings, the display's scale, the A/B count.
@@ -144,12 +145,18 @@ void stats_numbers(const Explorer& explorer, const FrameInfo& info) {
     const auto& lights = explorer.doc.scene.lights;
     if (std::any_of(lights.begin(), lights.end(),
                     [](const Light& l) { return l.enabled && l.intensity > 0.0 && is_area_light(l.type); })) {
-        if (info.refining) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "area lights: preview");
-        else ImGui::TextWrapped("area lights: the render's pixels");
-        tooltip("While edits come the display draws each rect, disk and sky light from its centre with one shadow "
-                "ray (hard shadows), at a smaller size when a frame would take over 35 ms. When input stops it "
-                "refines (\"refining...\" beside the menu) to what F12 and m3055 render give: 8 x 8 samples and soft "
-                "shadows, byte for byte (docs/lights.md).");
+        const ImVec4 amber(1, 0.8f, 0.3f, 1);
+        const int percent = static_cast<int>(100.0 * info.refine_progress);
+        if (!info.refining) ImGui::TextWrapped("area lights: the render's pixels");
+        else if (!info.refine_started) ImGui::TextColored(amber, "area lights: preview");
+        else if (info.sharpening) ImGui::TextColored(amber, "area lights: preview, full size %d %%", percent);
+        else ImGui::TextColored(amber, "area lights: render's pixels %d %%", percent);
+        tooltip("While edits come the display draws each rect, disk and sky light at one point (two for a highlight "
+                "the closed forms integrate) with one shadow ray (hard shadows), at a smaller size when a frame "
+                "would take over 35 ms. When input stops it refines (\"refining...\" beside the menu), top down: "
+                "a smaller preview first at the display's size (\"preview, full size N %\"), then to what F12 and "
+                "m3055 render give, 8 x 8 samples and soft shadows, byte for byte (\"render's pixels N %\": the "
+                "share of the display drawn so far; docs/lights.md).");
     }
     if (!info.compare_count.empty()) {
         ImGui::TextWrapped("A/B: %s", info.compare_count.c_str());

@@ -29,6 +29,9 @@ struct FrameInfo {
     long frames = 0;          // UI frames drawn so far
     long renders = 0;         // scene renders so far
     bool refining = false;    // the display shows a preview of area lights, not yet the render's pixels
+    bool sharpening = false;  // ... its refine's first pass: the preview at the display's size
+    bool refine_started = false;   // ... its refine has drawn a tile
+    double refine_progress = 0.0;  // ... the share of the display the pass under way has drawn
     // frame_ms of the frames that rendered a changed scene, the last kMaxFrameSamples
     // (--stats' render_frame_ms; the page's m3055.frameTimes(): scripts/bench-web).
     std::vector<double> render_frame_ms;
