@@ -205,6 +205,8 @@ vec2 emitter_point_towards(int i, int type, vec3 P, vec3 D) {
     return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
 }
 
+// The emitter's far side from `at`: 0.9 of a half-side out, opposite at's
+// direction from the centre (along e0's negative for the centre itself).
 vec2 emitter_point_apart(vec2 at) {
     float r = length(at);
     return -0.9 * (r > 1e-3 ? at / r : vec2(1.0, 0.0));
