@@ -195,14 +195,18 @@ AreaSample sky_centre(vec3 N, vec3 up) {
 // where the two bracket the lobe's share of the light. For the sky, D itself,
 // lifted above the sky's horizon (its lobe's tail is what is seen), and a
 // direction between N and up, away from D.
+// The point `at` of a rect's square or a disk's circle nearest to it.
+vec2 onto_emitter(int type, vec2 at) {
+    return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
+}
+
 vec2 emitter_point_towards(int i, int type, vec3 P, vec3 D) {
     vec3 centre = u_light_vector[i].xyz, normal = u_light_spot[i].xyz;
     vec3 e0 = u_light_extent[2 * i].xyz, e1 = u_light_extent[2 * i + 1].xyz;
     float facing = -dot(D, normal), height = dot(P - centre, normal);
     vec3 offset = facing > 0.0 ? P + (height / facing) * D - centre
                                : P - height * normal - centre + 1e4 * (D + facing * normal);
-    vec2 at = vec2(dot(offset, e0) / dot(e0, e0), dot(offset, e1) / dot(e1, e1));
-    return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
+    return onto_emitter(type, vec2(dot(offset, e0) / dot(e0, e0), dot(offset, e1) / dot(e1, e1)));
 }
 
 // The emitter's far side from `at`: 0.9 of a half-side out, opposite at's
@@ -221,8 +225,7 @@ vec2 emitter_point_above(int i, int type, vec3 P, vec3 N, vec2 at) {
     vec2 g = vec2(dot(N, u_light_extent[2 * i].xyz), dot(N, u_light_extent[2 * i + 1].xyz));
     float h = dot(N, c) + dot(at, g), gg = dot(g, g);
     if (h > 0.0 || gg <= 0.0) return at;
-    at += (0.05 * sqrt(gg) - h) / gg * g;
-    return type == LIGHT_RECT ? clamp(at, -1.0, 1.0) : at / max(length(at), 1.0);
+    return onto_emitter(type, at + (0.05 * sqrt(gg) - h) / gg * g);
 }
 
 AreaSample emitter_point(int i, int type, vec2 at, vec3 P) {
@@ -264,10 +267,7 @@ AreaSample area_sample_towards(int i, int type, vec3 P, vec3 N, vec3 w) {
     s.L = w;
     s.distance = -1.0;
     vec3 centre = u_light_vector[i].xyz;
-    if (type == LIGHT_SKY) {
-        s.pdf = sky_pdf(N, centre, w);
-        return s;
-    }
+    if (type == LIGHT_SKY) return sky_direction(N, centre, w);
     s.pdf = 0.0;
     vec3 normal = u_light_spot[i].xyz;
     float facing = -dot(w, normal);

@@ -133,7 +133,7 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
     int n = u_area_samples;
     int from_lobe = (walk.occluder_mask != 0 ? walk.occluder_from : walk.n) - walk.from_emitter;
     AreaSample s;
-    if (n == 1 && walk.two_points) {
+    if (walk.two_points) {
         // The preview's two points (light_walk), each an estimate of its own: the pair's
         // factors make the two one.
         s = preview_point(i, walk.type, walk.k, P, N, walk.lobe_axis);
