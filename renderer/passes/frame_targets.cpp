@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace m3055 {
 
@@ -56,7 +57,10 @@ void FrameTargets::set_material_uniforms(unsigned program) const { materials_.se
 
 void FrameTargets::quantize(const Display& display) {
     gl_.Disable(GL_DEPTH_TEST);
-    const unsigned program = programs_.get({"passes/fullscreen.vert", "passes/quantize.frag", {}});
+    std::vector<std::string> defines;
+    if (display.dither) defines.push_back("DITHER");
+    if (display.view_transform == ViewTransform::srgb) defines.push_back("SRGB");
+    const unsigned program = programs_.get({"passes/fullscreen.vert", "passes/quantize.frag", defines});
     gl_.BindFramebuffer(GL_FRAMEBUFFER, display_fbo_.id());
     gl_.Viewport(0, 0, width(), height());
     gl_.UseProgram(program);
@@ -64,8 +68,6 @@ void FrameTargets::quantize(const Display& display) {
     gl_.BindTexture(GL_TEXTURE_2D, scene_.colour(0));
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_colour"), 0);
     gl_.Uniform1i(gl_.GetUniformLocation(program, "u_bits"), display.bits);
-    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_dither"), display.dither ? 1 : 0);
-    gl_.Uniform1i(gl_.GetUniformLocation(program, "u_srgb"), display.view_transform == ViewTransform::srgb ? 1 : 0);
     gl_.BindVertexArray(empty_vao_.id());
     gl_.DrawArrays(GL_TRIANGLES, 0, 3);
     gl_.BindVertexArray(0);
