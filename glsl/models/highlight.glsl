@@ -34,7 +34,9 @@ HighlightParts highlight_parts_spectral(Material mat, vec3 P, vec3 N, vec3 V) {
 }
 
 HighlightParts highlight_parts(Material mat, vec3 P, vec3 N, vec3 V) {
+#ifdef HAS_SPECTRAL_TABLES
     if (mat.spectral_table >= 0.0) return highlight_parts_spectral(mat, P, N, V);
+#endif
     vec3 diffuse = vec3(0.0);
     vec3 keep = vec3(1.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {

@@ -86,7 +86,9 @@ vec3 shade_conductor(Material mat, vec3 P, vec3 N, vec3 V) {
 
 // The metal family: (d + sum_l a_l c_l lobes_l) C0, lights with N.L > 0 only.
 vec3 shade_metal(Material mat, vec3 P, vec3 N, vec3 V) {
+#ifdef HAS_SPECTRAL_TABLES
     if (mat.spectral_table >= 0.0) return shade_conductor(mat, P, N, V);
+#endif
     float NoV = max(dot(N, V), 0.0);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < LIGHT_LOOP_END; ++i) FOR_EACH_SAMPLE_OF_LIGHT(i, P, N, V, lobe_exponents(mat, i)) {

@@ -3,6 +3,7 @@
 #include "models/glsl_generator.h"
 #include "models/model_table.h"
 #include "scene/area_light.h"
+#include "scene/conductor_use.h"
 
 #include <set>
 
@@ -27,7 +28,7 @@ std::vector<std::string> specialization_defines(ShaderMode mode, const std::vect
         // Every model and light kind, chosen at run time (no SPECIALIZED, no LIGHT_COUNT);
         // area lights and shadows only where the scene has them (their code is large).
         std::vector<std::string> all = every_model_define(model_table());
-        all.insert(all.end(), {"HAS_LIGHT_LOBES", "HAS_POINT_LIGHTS", "HAS_SPOT_LIGHTS"});
+        all.insert(all.end(), {"HAS_LIGHT_LOBES", "HAS_POINT_LIGHTS", "HAS_SPECTRAL_TABLES", "HAS_SPOT_LIGHTS"});
         const std::vector<std::string> extra = area_and_shadow_defines(lights);
         all.insert(all.end(), extra.begin(), extra.end());
         return all;
@@ -38,6 +39,8 @@ std::vector<std::string> specialization_defines(ShaderMode mode, const std::vect
             const ModelSpec& model = material->model();
             flags.insert(has_define(model));
             flags.insert(family_define(static_cast<int>(model.family)));
+            // The materials passes/spectral_tables.cpp gives a table.
+            if (material->colour_spectrum() || conductor_use(*material)) flags.insert("HAS_SPECTRAL_TABLES");
         }
     int count = 0;
     for (const Light& light : lights) {
