@@ -26,6 +26,13 @@ uniform vec4 u_sky_occluder_sphere[MAX_SKY_OCCLUDERS];    // bounding sphere: ce
 uniform vec4 u_sky_occluder_centre[MAX_SKY_OCCLUDERS];    // the box's centre; w: 1 for a plane
 uniform vec4 u_sky_occluder_half[MAX_SKY_OCCLUDERS];      // the box's half extents
 uniform vec4 u_sky_occluder_normal[MAX_SKY_OCCLUDERS];    // a plane's unit normal
+// A sphere's or a box's exact shape, for the closed forms of what it blocks
+// (u_sky_occluder_half[k].w: kOccluderSphere, kOccluderBox, else 0): a
+// sphere's is its bounding sphere; a box's (a cube, a plane) is its three unit
+// axes (w: its half size along each; a plane's normal: 0) and its centre.
+uniform vec4 u_sky_occluder_frame[4 * MAX_SKY_OCCLUDERS];
+const float kOccluderSphere = 1.0;  // renderer/passes/occluders.h: SkyOccluderShape
+const float kOccluderBox = 2.0;
 
 // Samples of each technique, for the sky's n x n: half as many (a power of two
 // for n = 2, 4, 8, 16), so that four objects take as many rays as the n x n
@@ -139,4 +146,166 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
         if (k != k_of && ((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), w);
     weight = density > 0.0 ? 1.0 / density : 0.0;
     return w;
+}
+
+// ---- The exact part: spheres and boxes ------------------------------------------------
+// The samples above estimate what the objects block; its largest part has a
+// closed form where the object is a sphere or a box (a cube, a plane): the
+// projected solid angle of its silhouette. The blocked samples are scaled so
+// that their sum of N . L equals that exact part plus their own estimate of the
+// rest (the other objects, and where two exact shapes overlap, counted twice
+// by the closed forms and taken off again by the samples), as the emitters'
+// samples are by E / E_s (common/lights.glsl): the Lambert term of the sky's
+// shadow by spheres and boxes is then exact, and every other term's noise
+// shrinks with the same ratio. Both closed forms and every ray test below
+// start at o, the shadow ray's own origin (P + eps N, common/shadows.glsl).
+
+// Whether the ray o + t w, t > 0, meets object k's exact shape (a sphere or a
+// box; false for any other object). A box's slab test meets the same faces as
+// its triangles do (common/shadows.glsl).
+bool occluder_shape_meets(int k, vec3 o, vec3 w) {
+    float shape = u_sky_occluder_half[k].w;
+    if (shape == kOccluderSphere)
+        return ray_meets_sphere(o, w, u_sky_occluder_sphere[k].xyz, u_sky_occluder_sphere[k].w, 3.4e38);
+    if (shape != kOccluderBox) return false;
+    vec3 rel = o - u_sky_occluder_frame[4 * k + 3].xyz;
+    float enter = 0.0, leave = 3.4e38;
+    for (int a = 0; a < 3; ++a) {
+        vec4 axis = u_sky_occluder_frame[4 * k + a];
+        float s = dot(axis.xyz, rel), v = dot(axis.xyz, w);
+        if (abs(v) < 1e-30) {
+            if (abs(s) > axis.w) return false;
+            continue;
+        }
+        float t0 = (-axis.w - s) / v, t1 = (axis.w - s) / v;
+        enter = max(enter, min(t0, t1));
+        leave = min(leave, max(t0, t1));
+    }
+    return enter <= leave;
+}
+
+// The projected solid angle about N of what object k blocks above N's and up's
+// horizons, seen from o: a sphere's silhouette (a cone, as a disk: the circle
+// where the tangents from o touch it), where its rim is wholly above up's
+// horizon or that horizon is N's; a box's faces that face o (a convex box's front faces cover its
+// silhouette once), each a rect clipped to both horizons (Arvo's moment of
+// order 1 about N, common/lobe_moment.glsl). -1 where neither applies.
+float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
+    float shape = u_sky_occluder_half[k].w;
+    if (shape == kOccluderSphere) {
+        vec4 sphere = u_sky_occluder_sphere[k];
+        vec3 to_centre = sphere.xyz - o;
+        float d2 = dot(to_centre, to_centre), r2 = sphere.w * sphere.w;
+        if (d2 <= 1.001 * r2) return -1.0;  // on or in it: it blocks nothing above a convex surface's own horizon
+        float shrink = 1.0 - r2 / d2;
+        vec3 axis = to_centre * inversesqrt(d2), c = to_centre * shrink;
+        float rim = sphere.w * sqrt(shrink);
+        // Its rim wholly above up's horizon, or up's horizon N's (a floor under a sphere resting
+        // on it: the rim touches the horizon there, and N's clipping is up's).
+        bool up_is_N = length(cross(up, N)) < 1e-6 && dot(up, N) > 0.0;
+        if (!up_is_N && dot(up, c) <= rim * length(cross(up, axis))) return -1.0;
+        vec3 T, B;
+        complete_frame(axis, T, B);
+        return disk_projected_solid_angle(c, rim * T, rim * B, N);
+    }
+#ifdef HAS_LOBE_CLOSED_FORM
+    if (shape == kOccluderBox) {
+        vec3 centre = u_sky_occluder_frame[4 * k + 3].xyz - o;
+        float sum = 0.0;
+        for (int face = 0; face < 6; ++face) {
+            int a = face % 3;
+            float side = face < 3 ? 1.0 : -1.0;
+            vec4 n = u_sky_occluder_frame[4 * k + a], u = u_sky_occluder_frame[4 * k + (a + 1) % 3],
+                 v = u_sky_occluder_frame[4 * k + (a + 2) % 3];
+            if (u.w <= 0.0 || v.w <= 0.0) continue;  // a plane's sides: no area
+            vec3 c = centre + side * n.w * n.xyz;       // the face's centre from o
+            if (dot(side * n.xyz, c) >= 0.0) continue;  // o behind or in its plane
+            vec3 e0 = u.w * u.xyz, e1 = v.w * v.xyz;
+            vec3 q0 = c - e0 - e1, q1 = c + e0 - e1, q2 = c + e0 + e1, q3 = c - e0 + e1;
+            float winding = dot(cross(q0, q1), c) >= 0.0 ? 1.0 : -1.0;
+            vec3 m[kLobeHemispheres];
+            m[0] = winding * normalize(cross(q0, q1)), m[1] = winding * normalize(cross(q1, q2));
+            m[2] = winding * normalize(cross(q2, q3)), m[3] = winding * normalize(cross(q3, q0));
+            m[4] = up, m[5] = N;
+            sum += lobe_integral_in_hemispheres(m, N, 1);
+        }
+        return sum;
+    }
+#endif
+    return -1.0;
+}
+
+// Which of the first kOccluderKeptBits blocked samples are blocked, kept from
+// the walk of occluder_exact_ratio so that no sample traces its ray twice.
+const int kOccluderKeptBits = 256;  // 8 techniques of the render's 32 samples
+
+struct OccluderBits {
+    uvec4 low, high;  // bit j of sample j (words 0-3, 4-7)
+    bool kept;        // the bits hold the answer (else each sample finds it: occluder_blocks)
+};
+
+bool occluder_bit(OccluderBits bits, int j) {
+    int word = j >> 5;
+    uint value = word < 4 ? bits.low[word] : bits.high[word - 4];
+    return ((value >> uint(j & 31)) & 1u) != 0u;
+}
+
+// The factor for the blocked samples (occluder_sample, `per` a technique of
+// `mask`): (the exact part + the samples' estimate of the rest) / the samples'
+// estimate of the whole, each a sum of N . L; 1 where no object of `mask` has
+// a closed form here. Walks the samples ahead of the model, a ray for each not
+// already blocked by an exact shape, and keeps which are blocked in `bits`.
+float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out OccluderBits bits) {
+    bits.low = uvec4(0u);
+    bits.high = uvec4(0u);
+    bits.kept = false;
+    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));  // as common/shadows.glsl: occluded
+    vec3 o = P + eps * N;
+    int exact_mask = 0;
+    float exact = 0.0;
+    for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
+        if (((mask >> k) & 1) == 0) continue;
+        float projected = occluder_shape_projected(k, o, N, up);
+        if (projected < 0.0) continue;
+        exact += projected;
+        exact_mask |= 1 << k;
+    }
+    if (exact_mask == 0) return 1.0;
+    float sampled = 0.0, rest = 0.0;
+    int count = bit_count(mask) * per;
+    bits.kept = count <= kOccluderKeptBits;
+    for (int j = 0; j < count; ++j) {
+        float weight;
+        vec3 L = occluder_sample(j, per, mask, rotation, P, N, up, weight);
+        float c = dot(N, L);
+        if (!(weight > 0.0 && c > 0.0 && dot(up, L) > 0.0)) continue;
+        int exact_hits = 0;
+        bool blocked = false;
+        for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
+            if (((mask >> k) & 1) == 0 || !occluder_shape_meets(k, o, L)) continue;
+            blocked = true;
+            exact_hits += (exact_mask >> k) & 1;
+        }
+        if (!blocked) blocked = occluded(P, N, L, -1.0);
+        if (blocked) {
+            sampled += weight * c;
+            uint bit = 1u << uint(j & 31);
+            int word = j >> 5;
+            if (word < 4) bits.low[word] |= bit;
+            else if (word < 8) bits.high[word - 4] |= bit;
+        }
+        rest += weight * c * (float(blocked) - float(exact_hits));
+    }
+    float target = exact + rest;
+    return sampled > 0.0 && target > 0.0 ? target / sampled : 1.0;
+}
+
+// Whether a sample of the blocked part is blocked: by an exact shape of `mask`
+// (no ray needed), else by what a ray meets.
+bool occluder_blocks(int mask, vec3 P, vec3 N, vec3 L) {
+    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
+    vec3 o = P + eps * N;
+    for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
+        if (((mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) return true;
+    return occluded(P, N, L, -1.0);
 }

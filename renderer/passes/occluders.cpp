@@ -72,6 +72,7 @@ OccluderTexels pack_occluders(const Scene& scene) {
             SkyOccluder o;
             o.sphere_centre = object.center, o.radius = object.radius;
             o.box_centre = (lo.back() + hi.back()) * 0.5, o.box_half = (hi.back() - lo.back()) * 0.5;
+            o.shape = SkyOccluderShape::sphere;
             sky.push_back(o);
             continue;
         }
@@ -96,6 +97,21 @@ OccluderTexels pack_occluders(const Scene& scene) {
         o.box_centre = centre, o.box_half = half;
         o.plane = object.shape == Shape::plane;
         o.normal = object.axis;
+        if (object.shape == Shape::cube) {
+            // make_cube's frame: the unit axes turned by rotate_xyz, the faces at +- size / 2.
+            const dvec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+            for (int a = 0; a < 3; ++a) o.axes[a] = geometry::rotate_xyz(unit[a], object.rotation_deg);
+            o.half_sizes = dvec3(object.size / 2);
+            o.shape = SkyOccluderShape::box;
+            o.centre = object.center;
+        } else if (object.shape == Shape::plane) {
+            // make_plane's square: its edges along the normal's axis frame, no thickness.
+            const geometry::AxisFrame frame = geometry::axis_frame(object.axis);
+            o.axes[0] = frame.t, o.axes[1] = frame.b, o.axes[2] = frame.a;
+            o.half_sizes = dvec3(object.size / 2, object.size / 2, 0.0);
+            o.shape = SkyOccluderShape::box;
+            o.centre = object.center;
+        }
         sky.push_back(o);
     }
     OccluderTexels out;
@@ -170,15 +186,21 @@ void OccluderTexture::set_uniforms(unsigned program) const {
     if (count < 0) return;  // a program without a shadowed sky
     const std::size_t n = uploaded_ ? sky_.size() : 0;
     std::vector<float> sphere(4 * kMaxSkyOccluders, 0.0f), centre(sphere), half(sphere), normal(sphere);
+    std::vector<float> frame(4 * 4 * kMaxSkyOccluders, 0.0f);
     for (std::size_t k = 0; k < n; ++k) {
         const SkyOccluder& o = sky_[k];
         const float values[4][4] = {
             {float(o.sphere_centre.x), float(o.sphere_centre.y), float(o.sphere_centre.z), float(o.radius)},
             {float(o.box_centre.x), float(o.box_centre.y), float(o.box_centre.z), o.plane ? 1.0f : 0.0f},
-            {float(o.box_half.x), float(o.box_half.y), float(o.box_half.z), 0.0f},
+            {float(o.box_half.x), float(o.box_half.y), float(o.box_half.z), float(int(o.shape))},
             {float(o.normal.x), float(o.normal.y), float(o.normal.z), 0.0f}};
         std::vector<float>* arrays[4] = {&sphere, &centre, &half, &normal};
         for (int a = 0; a < 4; ++a) std::copy(values[a], values[a] + 4, arrays[a]->begin() + 4 * k);
+        for (int a = 0; a < 4; ++a) {  // a box's three axes (w: the half size along it), then its centre
+            const dvec3 v = a < 3 ? o.axes[a] : o.centre;
+            const float texel[4] = {float(v.x), float(v.y), float(v.z), a < 3 ? float(o.half_sizes[a]) : 0.0f};
+            std::copy(texel, texel + 4, frame.begin() + 4 * (4 * k + std::size_t(a)));
+        }
     }
     gl_.Uniform1i(count, GLint(n));
     const GLsizei size = GLsizei(kMaxSkyOccluders);
@@ -186,6 +208,7 @@ void OccluderTexture::set_uniforms(unsigned program) const {
     gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_centre"), size, centre.data());
     gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_half"), size, half.data());
     gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_normal"), size, normal.data());
+    gl_.Uniform4fv(gl_.GetUniformLocation(program, "u_sky_occluder_frame"), 4 * size, frame.data());
 }
 
 }  // namespace m3055

@@ -22,14 +22,22 @@ inline constexpr int kOccluderMaxDepth = 64;  // never reached: every split halv
 
 // The objects as a shadowed sky's samples are drawn about them
 // (glsl/common/sky_occluders.glsl): each one's bounding sphere and box, and a
-// plane's normal. At most kMaxSkyOccluders objects (the GLSL's MAX_SKY_OCCLUDERS).
+// plane's normal; and the shapes whose silhouettes have closed forms (a sphere:
+// its bounding sphere is the sphere; a cube or a plane: a box, its unit axes
+// and half sizes, a plane's 0 along its normal). At most kMaxSkyOccluders
+// objects (the GLSL's MAX_SKY_OCCLUDERS).
 inline constexpr std::size_t kMaxSkyOccluders = 8;
+enum class SkyOccluderShape { other = 0, sphere = 1, box = 2 };  // the GLSL's kOccluderSphere, kOccluderBox
 struct SkyOccluder {
     dvec3 sphere_centre;
     double radius = 0.0;
     dvec3 box_centre, box_half;
     bool plane = false;
     dvec3 normal;  // a plane's
+    SkyOccluderShape shape = SkyOccluderShape::other;
+    dvec3 centre;           // a box's centre,
+    dvec3 axes[3];          // its unit axes (the mesh's own: geometry/shapes.cpp)
+    dvec3 half_sizes{0.0};  // and its half size along each
 };
 
 // The texels of glsl/common/shadows.glsl's layout: the nodes (two texels
