@@ -115,10 +115,8 @@ struct LightWalk {
     vec3 lobe_axis;      // V's mirror direction
     int occluder_from;   // a shadowed sky: samples occluder_from .. n - 1 are of what the objects block
     int occluder_mask;   // ... drawn about the objects of these bits (common/sky_occluders.glsl)
-    float occluder_ratio; // ... their scale: the exact part of what spheres and boxes block (occluder_exact_ratio)
-#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
-    OccluderBits occluder_bits;  // ... and which are blocked, where that walk kept them
-#endif
+    int occluder_exact;   // ... of them, the spheres and boxes whose part is exact (occluder_exact_ratio)
+    float occluder_ratio; // ... and the scale of the samples that meet them
     float lobe_exponent; // the model's lobe about it that samples are drawn from (generated/models.glsl: lobe_exponents)
     bool two_points;     // the preview (n = 1): a point where the highlight is beside the centre (preview_point)
 };
@@ -239,12 +237,8 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
     walk.lobe_axis = 2.0 * dot(N, V) * N - V;
     walk.occluder_from = 0;
     walk.occluder_mask = 0;
+    walk.occluder_exact = 0;
     walk.occluder_ratio = 1.0;
-#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
-    walk.occluder_bits.low = uvec4(0u);
-    walk.occluder_bits.high = uvec4(0u);
-    walk.occluder_bits.kept = false;
-#endif
     walk.lobe_exponent = lobe;
     walk.two_points = false;
 #ifdef HAS_AREA_LIGHTS
@@ -343,7 +337,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         walk.n += bit_count(walk.occluder_mask) * sky_occluder_samples(n);
         if (walk.occluder_mask != 0)
             walk.occluder_ratio = occluder_exact_ratio(sky_occluder_samples(n), walk.occluder_mask, walk.rotation, P,
-                                                       N, u_light_vector[i].xyz, walk.occluder_bits);
+                                                       N, u_light_vector[i].xyz, walk.occluder_exact);
     }
 #endif
 #endif
@@ -364,15 +358,14 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
         vec3 up = u_light_vector[i].xyz;
         float weight;
         LightSample s;
-        int j = walk.k - walk.occluder_from;
-        s.L = occluder_sample(j, sky_occluder_samples(u_area_samples), walk.occluder_mask,
+        s.L = occluder_sample(walk.k - walk.occluder_from, sky_occluder_samples(u_area_samples), walk.occluder_mask,
                               walk.rotation, P, N, up, weight);
         s.spot = 1.0;
         s.area = true;
-        bool blocked = walk.occluder_bits.kept ? occluder_bit(walk.occluder_bits, j)
-                                               : weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0 &&
-                                                     occluder_blocks(walk.occluder_mask, P, N, s.L);
-        s.scale = blocked ? -u_light_scale[i] * (weight * walk.occluder_ratio) : vec3(0.0);
+        float blocked = weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0
+                            ? occluder_blocks(walk.occluder_mask, walk.occluder_exact, walk.occluder_ratio, P, N, s.L)
+                            : 0.0;
+        s.scale = -u_light_scale[i] * (weight * blocked);
         return s;
     }
 #endif

@@ -151,14 +151,15 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
 // ---- The exact part: spheres and boxes ------------------------------------------------
 // The samples above estimate what the objects block; its largest part has a
 // closed form where the object is a sphere or a box (a cube, a plane): the
-// projected solid angle of its silhouette. The blocked samples are scaled so
-// that their sum of N . L equals that exact part plus their own estimate of the
-// rest (the other objects, and where two exact shapes overlap, counted twice
-// by the closed forms and taken off again by the samples), as the emitters'
-// samples are by E / E_s (common/lights.glsl): the Lambert term of the sky's
-// shadow by spheres and boxes is then exact, and every other term's noise
-// shrinks with the same ratio. Both closed forms and every ray test below
-// start at o, the shadow ray's own origin (P + eps N, common/shadows.glsl).
+// projected solid angle of its silhouette. The samples that meet such a shape
+// are scaled so that their sum of N . L equals that exact part, as the
+// emitters' samples are by E / E_s (common/lights.glsl): the Lambert term of
+// what spheres and boxes take from the sky is then exact where their
+// silhouettes do not overlap (an overlap, which the closed forms count twice,
+// leaves noise there), and every other term's noise shrinks with the same
+// ratio; the samples blocked by other objects are as before. Both closed forms
+// and every test below start at o, the shadow ray's own origin (P + eps N,
+// common/shadows.glsl).
 
 // Whether the ray o + t w, t > 0, meets object k's exact shape (a sphere or a
 // box; false for any other object). A box's slab test meets the same faces as
@@ -184,12 +185,40 @@ bool occluder_shape_meets(int k, vec3 o, vec3 w) {
     return enter <= leave;
 }
 
+// The projected solid angle about N of the rect with corners q0..q3 (from the
+// point, in order) above up's and N's horizons: Sutherland-Hodgman against
+// up . x > 0 (at most five corners), then against N . x > 0 (at most six), then
+// Lambert's formula (as rect_projected_solid_angle, common/area_lights.glsl).
+// Clipped as a polygon, not as arcs of great circles (lobe_integral_in_hemispheres):
+// where an edge's plane nearly holds N's horizon, the arcs' ends are ill-conditioned.
+float face_projected_solid_angle(vec3 q0, vec3 q1, vec3 q2, vec3 q3, vec3 up, vec3 N) {
+    vec3 v[4] = vec3[4](q0, q1, q2, q3);
+    vec3 above_up[5];
+    int count = 0;
+    for (int j = 0; j < 4; ++j) {
+        vec3 a = v[j], b = v[(j + 1) % 4];
+        float ha = dot(up, a), hb = dot(up, b);
+        if (ha > 0.0) above_up[count++] = a;
+        if ((ha > 0.0) != (hb > 0.0)) above_up[count++] = a + (ha / (ha - hb)) * (b - a);
+    }
+    vec3 above_both[6];
+    int kept = 0;
+    for (int j = 0; j < count; ++j) {
+        vec3 a = above_up[j], b = above_up[j + 1 < count ? j + 1 : 0];
+        float ha = dot(N, a), hb = dot(N, b);
+        if (ha > 0.0) above_both[kept++] = a;
+        if ((ha > 0.0) != (hb > 0.0)) above_both[kept++] = a + (ha / (ha - hb)) * (b - a);
+    }
+    float sum = 0.0;
+    for (int j = 0; j < kept; ++j) sum += lambert_edge(above_both[j], above_both[j + 1 < kept ? j + 1 : 0], N);
+    return 0.5 * abs(sum);
+}
+
 // The projected solid angle about N of what object k blocks above N's and up's
 // horizons, seen from o: a sphere's silhouette (a cone, as a disk: the circle
 // where the tangents from o touch it), where its rim is wholly above up's
 // horizon or that horizon is N's; a box's faces that face o (a convex box's front faces cover its
-// silhouette once), each a rect clipped to both horizons (Arvo's moment of
-// order 1 about N, common/lobe_moment.glsl). -1 where neither applies.
+// silhouette once), each a rect clipped to both horizons. -1 where neither applies.
 float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
     float shape = u_sky_occluder_half[k].w;
     if (shape == kOccluderSphere) {
@@ -208,7 +237,6 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
         complete_frame(axis, T, B);
         return disk_projected_solid_angle(c, rim * T, rim * B, N);
     }
-#ifdef HAS_LOBE_CLOSED_FORM
     if (shape == kOccluderBox) {
         vec3 centre = u_sky_occluder_frame[4 * k + 3].xyz - o;
         float sum = 0.0;
@@ -221,47 +249,25 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
             vec3 c = centre + side * n.w * n.xyz;       // the face's centre from o
             if (dot(side * n.xyz, c) >= 0.0) continue;  // o behind or in its plane
             vec3 e0 = u.w * u.xyz, e1 = v.w * v.xyz;
-            vec3 q0 = c - e0 - e1, q1 = c + e0 - e1, q2 = c + e0 + e1, q3 = c - e0 + e1;
-            float winding = dot(cross(q0, q1), c) >= 0.0 ? 1.0 : -1.0;
-            vec3 m[kLobeHemispheres];
-            m[0] = winding * normalize(cross(q0, q1)), m[1] = winding * normalize(cross(q1, q2));
-            m[2] = winding * normalize(cross(q2, q3)), m[3] = winding * normalize(cross(q3, q0));
-            m[4] = up, m[5] = N;
-            sum += lobe_integral_in_hemispheres(m, N, 1);
+            sum += face_projected_solid_angle(c - e0 - e1, c + e0 - e1, c + e0 + e1, c - e0 + e1, up, N);
         }
         return sum;
     }
-#endif
     return -1.0;
 }
 
-// Which of the first kOccluderKeptBits blocked samples are blocked, kept from
-// the walk of occluder_exact_ratio so that no sample traces its ray twice.
-const int kOccluderKeptBits = 256;  // 8 techniques of the render's 32 samples
-
-struct OccluderBits {
-    uvec4 low, high;  // bit j of sample j (words 0-3, 4-7)
-    bool kept;        // the bits hold the answer (else each sample finds it: occluder_blocks)
-};
-
-bool occluder_bit(OccluderBits bits, int j) {
-    int word = j >> 5;
-    uint value = word < 4 ? bits.low[word] : bits.high[word - 4];
-    return ((value >> uint(j & 31)) & 1u) != 0u;
-}
-
-// The factor for the blocked samples (occluder_sample, `per` a technique of
-// `mask`): (the exact part + the samples' estimate of the rest) / the samples'
-// estimate of the whole, each a sum of N . L; 1 where no object of `mask` has
-// a closed form here. Walks the samples ahead of the model, a ray for each not
-// already blocked by an exact shape, and keeps which are blocked in `bits`.
-float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out OccluderBits bits) {
-    bits.low = uvec4(0u);
-    bits.high = uvec4(0u);
-    bits.kept = false;
+// The factor for the blocked samples that meet an exact shape of `mask`
+// (occluder_sample, `per` a technique of `mask`): the exact part (the sum of
+// the shapes' closed forms) over the samples' estimate of it (the sum of
+// weight x N . L x the number of exact shapes a sample meets: their overlaps
+// counted as often as the closed forms count them); 1 where no object of
+// `mask` has a closed form here. Walks the samples ahead of the model, with
+// no ray: the factor depends only on the exact shapes, so a shadow ray that
+// other hardware's rounding turns cannot move it.
+float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out int exact_mask) {
     float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));  // as common/shadows.glsl: occluded
     vec3 o = P + eps * N;
-    int exact_mask = 0;
+    exact_mask = 0;
     float exact = 0.0;
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
         if (((mask >> k) & 1) == 0) continue;
@@ -271,41 +277,29 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
         exact_mask |= 1 << k;
     }
     if (exact_mask == 0) return 1.0;
-    float sampled = 0.0, rest = 0.0;
+    float sampled = 0.0;
     int count = bit_count(mask) * per;
-    bits.kept = count <= kOccluderKeptBits;
     for (int j = 0; j < count; ++j) {
         float weight;
         vec3 L = occluder_sample(j, per, mask, rotation, P, N, up, weight);
         float c = dot(N, L);
         if (!(weight > 0.0 && c > 0.0 && dot(up, L) > 0.0)) continue;
-        int exact_hits = 0;
-        bool blocked = false;
-        for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
-            if (((mask >> k) & 1) == 0 || !occluder_shape_meets(k, o, L)) continue;
-            blocked = true;
-            exact_hits += (exact_mask >> k) & 1;
-        }
-        if (!blocked) blocked = occluded(P, N, L, -1.0);
-        if (blocked) {
-            sampled += weight * c;
-            uint bit = 1u << uint(j & 31);
-            int word = j >> 5;
-            if (word < 4) bits.low[word] |= bit;
-            else if (word < 8) bits.high[word - 4] |= bit;
-        }
-        rest += weight * c * (float(blocked) - float(exact_hits));
+        for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
+            if (((exact_mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) sampled += weight * c;
     }
-    float target = exact + rest;
-    return sampled > 0.0 && target > 0.0 ? target / sampled : 1.0;
+    return sampled > 0.0 ? exact / sampled : 1.0;
 }
 
-// Whether a sample of the blocked part is blocked: by an exact shape of `mask`
-// (no ray needed), else by what a ray meets.
-bool occluder_blocks(int mask, vec3 P, vec3 N, vec3 L) {
+// A sample of the blocked part: 0 where nothing blocks it, `ratio` where an
+// exact shape of `exact_mask` does (no ray needed), 1 where another object does.
+float occluder_blocks(int mask, int exact_mask, float ratio, vec3 P, vec3 N, vec3 L) {
     float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
     vec3 o = P + eps * N;
-    for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
-        if (((mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) return true;
-    return occluded(P, N, L, -1.0);
+    bool other = false;
+    for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
+        if (((mask >> k) & 1) == 0 || !occluder_shape_meets(k, o, L)) continue;
+        if (((exact_mask >> k) & 1) != 0) return ratio;
+        other = true;
+    }
+    return other || occluded(P, N, L, -1.0) ? 1.0 : 0.0;
 }
