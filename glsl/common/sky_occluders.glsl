@@ -155,9 +155,8 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
 // are scaled so that their sum of N . L equals that exact part, as the
 // emitters' samples are by E / E_s (common/lights.glsl): the Lambert term of
 // what spheres and boxes take from the sky is then exact where their
-// silhouettes do not overlap (an overlap, which the closed forms count twice,
-// leaves noise there), and every other term's noise shrinks with the same
-// ratio; the samples blocked by other objects are as before. Both closed forms
+// silhouettes do not overlap (where they do, the samples' noise remains), and
+// every other term's noise shrinks with the same ratio; the samples blocked by other objects are as before. Both closed forms
 // and every test below start at o, the shadow ray's own origin (P + eps N,
 // common/shadows.glsl).
 
@@ -257,10 +256,11 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
 }
 
 // The factor for the blocked samples that meet an exact shape of `mask`
-// (occluder_sample, `per` a technique of `mask`): the exact part (the sum of
-// the shapes' closed forms) over the samples' estimate of it (the sum of
-// weight x N . L x the number of exact shapes a sample meets: their overlaps
-// counted as often as the closed forms count them); 1 where no object of
+// (occluder_sample, `per` a technique of `mask`): the exact part over the
+// samples' estimate of it (their sum of weight x N . L). The closed forms'
+// sum counts twice where two silhouettes overlap; the samples' estimate of
+// that excess (those that meet more than one shape) is taken off it, so the
+// overlap is as noisy as before and the rest exact. 1 where no object of
 // `mask` has a closed form here. Walks the samples ahead of the model, with
 // no ray: the factor depends only on the exact shapes, so a shadow ray that
 // other hardware's rounding turns cannot move it.
@@ -277,17 +277,21 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
         exact_mask |= 1 << k;
     }
     if (exact_mask == 0) return 1.0;
-    float sampled = 0.0;
+    float sampled = 0.0, twice = 0.0;
     int count = bit_count(mask) * per;
     for (int j = 0; j < count; ++j) {
         float weight;
         vec3 L = occluder_sample(j, per, mask, rotation, P, N, up, weight);
         float c = dot(N, L);
         if (!(weight > 0.0 && c > 0.0 && dot(up, L) > 0.0)) continue;
+        int hits = 0;
         for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
-            if (((exact_mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) sampled += weight * c;
+            if (((exact_mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) ++hits;
+        if (hits == 0) continue;
+        sampled += weight * c;
+        twice += weight * c * float(hits - 1);
     }
-    return sampled > 0.0 ? exact / sampled : 1.0;
+    return sampled > 0.0 && exact > twice ? (exact - twice) / sampled : 1.0;
 }
 
 // A sample of the blocked part: 0 where nothing blocks it, `ratio` where an
