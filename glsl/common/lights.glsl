@@ -363,9 +363,21 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
         s.spot = 1.0;
         s.area = true;
         float blocked = weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0
-                            ? occluder_blocks(walk.occluder_mask, walk.occluder_exact, walk.occluder_ratio, P, N, s.L)
+                            ? occluder_blocks(walk.occluder_mask, walk.occluder_exact, P, N, s.L)
                             : 0.0;
-        s.scale = -u_light_scale[i] * (weight * blocked);
+        // Met by an exact shape: the exact part's factor on the sample's share of the
+        // cosine (all of it without a lobe): a highlight's lobe, which the cones sample
+        // poorly, is not scaled by a factor the cosine alone set (that drew a metal's
+        // top under a wall below zero).
+        float factor = 1.0;
+        if (blocked > 1.5) {
+            float p = walk.exact_pair.x > 0.0 ? cosine_share(max(dot(N, s.L), 0.0),
+                                                             lobe_value(s.L, N, walk.lobe_axis, walk.exact_pair.w),
+                                                             walk.exact_pair.z)
+                                              : 1.0;
+            factor = 1.0 + (walk.occluder_ratio - 1.0) * p;
+        }
+        s.scale = blocked > 0.0 ? -u_light_scale[i] * (weight * factor) : vec3(0.0);
         return s;
     }
 #endif

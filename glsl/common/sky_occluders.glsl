@@ -155,10 +155,11 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
 // are scaled so that their sum of N . L equals that exact part, as the
 // emitters' samples are by E / E_s (common/lights.glsl): the Lambert term of
 // what spheres and boxes take from the sky is then exact where their
-// silhouettes do not overlap (where they do, the samples' noise remains), and
-// every other term's noise shrinks with the same ratio; the samples blocked by other objects are as before. Both closed forms
-// and every test below start at o, the shadow ray's own origin (P + eps N,
-// common/shadows.glsl).
+// silhouettes do not overlap (where they do, the samples' noise remains); a
+// model with a highlight takes the factor on each sample's share of the cosine
+// (common/lights.glsl: light_walk_sample), and the samples blocked by other
+// objects are as before. Both closed forms and every test below start at o,
+// the shadow ray's own origin (P + eps N, common/shadows.glsl).
 
 // Whether the ray o + t w, t > 0, meets object k's exact shape (a sphere or a
 // box; false for any other object). A box's slab test meets the same faces as
@@ -294,15 +295,15 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
     return sampled > 0.0 && exact > twice ? (exact - twice) / sampled : 1.0;
 }
 
-// A sample of the blocked part: 0 where nothing blocks it, `ratio` where an
-// exact shape of `exact_mask` does (no ray needed), 1 where another object does.
-float occluder_blocks(int mask, int exact_mask, float ratio, vec3 P, vec3 N, vec3 L) {
+// A sample of the blocked part: 0 where nothing blocks it, 2 where an exact
+// shape of `exact_mask` does (no ray needed), 1 where another object does.
+float occluder_blocks(int mask, int exact_mask, vec3 P, vec3 N, vec3 L) {
     float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
     vec3 o = P + eps * N;
     bool other = false;
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
         if (((mask >> k) & 1) == 0 || !occluder_shape_meets(k, o, L)) continue;
-        if (((exact_mask >> k) & 1) != 0) return ratio;
+        if (((exact_mask >> k) & 1) != 0) return 2.0;
         other = true;
     }
     return other || occluded(P, N, L, -1.0) ? 1.0 : 0.0;
