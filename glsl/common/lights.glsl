@@ -213,8 +213,12 @@ float cosine_share(float c, float l, float lambda) {
 // microfacet lobe, a metal's, whose exponent the whole e only approximates)
 // converges as before, with less noise the closer its lobe is to the pair:
 // control variates with two closed forms.
+float pair_share(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
+    return cosine_share(max(dot(N, L), 0.0), lobe_value(L, N, D, exact_pair.w), exact_pair.z);
+}
+
 float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
-    float p = cosine_share(max(dot(N, L), 0.0), lobe_value(L, N, D, exact_pair.w), exact_pair.z);
+    float p = pair_share(exact_pair, L, N, D);
     return exact_pair.x * p + exact_pair.y * (1.0 - p);
 }
 #endif
@@ -362,22 +366,19 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
                               walk.rotation, P, N, up, weight);
         s.spot = 1.0;
         s.area = true;
-        float blocked = weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0
-                            ? occluder_blocks(walk.occluder_mask, walk.occluder_exact, P, N, s.L)
-                            : 0.0;
+        int blocker = weight > 0.0 && dot(N, s.L) > 0.0 && dot(up, s.L) > 0.0
+                          ? occluder_blocker(walk.occluder_mask, walk.occluder_exact, P, N, s.L)
+                          : kBlockedByNothing;
         // Met by an exact shape: the exact part's factor on the sample's share of the
         // cosine (all of it without a lobe): a highlight's lobe, which the cones sample
         // poorly, is not scaled by a factor the cosine alone set (that drew a metal's
         // top under a wall below zero).
         float factor = 1.0;
-        if (blocked > 1.5) {
-            float p = walk.exact_pair.x > 0.0 ? cosine_share(max(dot(N, s.L), 0.0),
-                                                             lobe_value(s.L, N, walk.lobe_axis, walk.exact_pair.w),
-                                                             walk.exact_pair.z)
-                                              : 1.0;
+        if (blocker == kBlockedByExactShape) {
+            float p = walk.exact_pair.x > 0.0 ? pair_share(walk.exact_pair, s.L, N, walk.lobe_axis) : 1.0;
             factor = 1.0 + (walk.occluder_ratio - 1.0) * p;
         }
-        s.scale = blocked > 0.0 ? -u_light_scale[i] * (weight * factor) : vec3(0.0);
+        s.scale = blocker != kBlockedByNothing ? -u_light_scale[i] * (weight * factor) : vec3(0.0);
         return s;
     }
 #endif

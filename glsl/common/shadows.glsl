@@ -76,12 +76,17 @@ bool primitive_blocks(int p, vec3 o, vec3 d, float t_max) {
     return ray_meets_triangle(o, d, a.xyz, occluder_texel(at + 1).xyz, occluder_texel(at + 2).xyz, t_max);
 }
 
+// Where a shadow ray from P (unit normal N) starts: P + eps N (above).
+vec3 shadow_ray_origin(vec3 P, vec3 N) {
+    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
+    return P + eps * N;
+}
+
 // Whether anything blocks the way from P (unit normal N) along unit L for
 // `distance` (< 0: to infinity).
 bool occluded(vec3 P, vec3 N, vec3 L, float distance) {
     if (u_occluder_primitives == 0) return false;
-    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
-    vec3 o = P + eps * N;
+    vec3 o = shadow_ray_origin(P, N);
     float t_max = distance < 0.0 ? 3.4e38 : distance;
     vec3 safe = mix(L, sign(L) * 1e-30 + L, lessThan(abs(L), vec3(1e-30)));
     vec3 inv = 1.0 / safe;

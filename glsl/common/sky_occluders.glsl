@@ -266,8 +266,7 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
 // no ray: the factor depends only on the exact shapes, so a shadow ray that
 // other hardware's rounding turns cannot move it.
 float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out int exact_mask) {
-    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));  // as common/shadows.glsl: occluded
-    vec3 o = P + eps * N;
+    vec3 o = shadow_ray_origin(P, N);
     exact_mask = 0;
     float exact = 0.0;
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
@@ -295,16 +294,19 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
     return sampled > 0.0 && exact > twice ? (exact - twice) / sampled : 1.0;
 }
 
-// A sample of the blocked part: 0 where nothing blocks it, 2 where an exact
-// shape of `exact_mask` does (no ray needed), 1 where another object does.
-float occluder_blocks(int mask, int exact_mask, vec3 P, vec3 N, vec3 L) {
-    float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
-    vec3 o = P + eps * N;
+// What blocks a sample of the blocked part: nothing, an exact shape of
+// `exact_mask` (no ray needed), or another object.
+const int kBlockedByNothing = 0;
+const int kBlockedByOther = 1;
+const int kBlockedByExactShape = 2;
+
+int occluder_blocker(int mask, int exact_mask, vec3 P, vec3 N, vec3 L) {
+    vec3 o = shadow_ray_origin(P, N);
     bool other = false;
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
         if (((mask >> k) & 1) == 0 || !occluder_shape_meets(k, o, L)) continue;
-        if (((exact_mask >> k) & 1) != 0) return 2.0;
+        if (((exact_mask >> k) & 1) != 0) return kBlockedByExactShape;
         other = true;
     }
-    return other || occluded(P, N, L, -1.0) ? 1.0 : 0.0;
+    return other || occluded(P, N, L, -1.0) ? kBlockedByOther : kBlockedByNothing;
 }
