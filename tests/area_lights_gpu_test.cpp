@@ -9,10 +9,10 @@
 //     wrong pdf or a lost sample shows here);
 //   - rects and disks, shadowed or not: docs/spec.md's target, >= 99.5 % of
 //     pixels on the same display level and none more than one off;
-//   - the sky: none more than one level off, >= 99 % on the same level
-//     unshadowed; its shadow (what the objects block, its Lambert part exact
-//     for spheres and boxes) >= 98.5 % and mean |diff| <= 2.5e-4 (not yet at
-//     the target for every family: metal 98.75 %).
+//   - the sky: the same target unshadowed, raw error <= 5e-3; its shadow (what
+//     the objects block, its Lambert part exact for spheres and boxes) raw
+//     <= 1e-2 (the target in soft shadows), >= 99.3 % on the same level and
+//     mean |diff| <= 1e-4 (not yet 99.5 % for every family: metal 99.43 %).
 // docs/lights.md has the measured errors of each case.
 #include "gpu_compare.h"
 
@@ -35,14 +35,18 @@ constexpr int kMaxLevelDiff = 1;
 constexpr double kBias = 3e-4;
 constexpr double kMeanDiff = 1e-3;
 constexpr double kSameLevelShare = 0.995;     // docs/spec.md's target
-constexpr double kSkySameLevelShare = 0.99;   // unshadowed sky: metal 99.40 %, the rest >= 99.8 %
+// The sky, raw: docs/spec.md's target (5e-3, 1e-2 in soft shadows); unshadowed 1.7e-3-2.8e-3 where
+// the lobe is sampled (metal, microfacet, principled; twice the strata a side), 4e-5 where the pair
+// makes it exact.
+constexpr double kSkyMaxDiff = 5e-3;
+constexpr double kSkyShadowMaxDiff = 1e-2;
 // The sky's shadow: what the objects block drawn about them, its Lambert part exact for the
-// sphere and the cube (glsl/common/sky_occluders.glsl): 98.75-99.48 % on the same level, mean
-// |diff| 6.7e-5-1.6e-4 (sampled alone: 93.4-94.1 %, 6.3e-4-7.1e-4; drawn from the whole sky: 81 %,
-// 2e-3). Part of what is left is the reference's own error (its shadow tolerance, 1e-4: against
-// one 100 x tighter the sphere alone is 99.99 % on the same level, mean |diff| 1.4e-6).
-constexpr double kSkyShadowMeanDiff = 2.5e-4;
-constexpr double kSkyShadowSameLevelShare = 0.985;
+// sphere and the cube (glsl/common/sky_occluders.glsl): 99.43-99.72 % on the same level, mean
+// |diff| 3.7e-5-6.8e-5, max 0.0042-0.0086 (sampled alone: 93.4-94.1 %, 6.3e-4-7.1e-4; drawn from
+// the whole sky: 81 %, 2e-3). Part of what is left is the reference's own error (its shadow
+// tolerance, 1e-4: against one 100 x tighter, 99.47-99.76 %, mean signed +2e-6 against -1.3e-5).
+constexpr double kSkyShadowMeanDiff = 1e-4;
+constexpr double kSkyShadowSameLevelShare = 0.993;
 
 struct LightCase {
     std::string name;
@@ -107,12 +111,13 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
     EXPECT_LE(std::abs(c.mean_signed_diff), kBias);
     const bool sky = kLights[l].name == "sky";
+    if (sky) EXPECT_LE(c.max_abs_diff, shadow ? kSkyShadowMaxDiff : kSkyMaxDiff);
     if (sky && shadow) {
         EXPECT_LE(c.mean_abs_diff, kSkyShadowMeanDiff);
         EXPECT_GE(c.same_level_share, kSkyShadowSameLevelShare);
     } else {
         EXPECT_LE(c.mean_abs_diff, kMeanDiff);
-        EXPECT_GE(c.same_level_share, sky ? kSkySameLevelShare : kSameLevelShare);
+        EXPECT_GE(c.same_level_share, kSameLevelShare);
     }
 }
 

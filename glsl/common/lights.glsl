@@ -111,10 +111,11 @@ struct LightWalk {
     vec4 exact_pair;     // area lights, with the lobe's closed form: (alpha, beta, lambda, e) of pair_factor; else 0
     bool traced;         // area lights: each sample's own shadow ray decides whether it is seen (a penumbra)
     int from_emitter;    // area lights: samples 0 .. from_emitter - 1 drawn from the emitter, the rest from the lobe
-    int lobe_side;       // area lights: the lobe's samples are lobe_side x lobe_side strata
+    int side;            // area lights: the emitter's samples and the lobe's are each side x side strata
     vec3 lobe_axis;      // V's mirror direction
     int occluder_from;   // a shadowed sky: samples occluder_from .. n - 1 are of what the objects block
     int occluder_mask;   // ... drawn about the objects of these bits (common/sky_occluders.glsl)
+    int occluder_per;    // ... so many about each object
     int occluder_exact;   // ... of them, the spheres and boxes whose part is exact (occluder_exact_ratio)
     float occluder_ratio; // ... and the scale of the samples that meet them
     float lobe_exponent; // the model's lobe about it that samples are drawn from (generated/models.glsl: lobe_exponents)
@@ -132,7 +133,7 @@ const float kLobeMinExponent = 1.0;
 // heuristic of the two ways of drawing directions (Veach 1997, multiple
 // importance sampling), 1 / (n_e p_e + n_l p_l); 0 off the emitter.
 AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weight) {
-    int n = u_area_samples;
+    int n = walk.side;
     int from_lobe = (walk.occluder_mask != 0 ? walk.occluder_from : walk.n) - walk.from_emitter;
     AreaSample s;
     if (walk.two_points) {
@@ -145,7 +146,7 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
     if (walk.k < walk.from_emitter) {
         s = area_sample(i, walk.type, walk.k, n, walk.rotation, P, N);
     } else {
-        vec2 u = stratum_point(walk.k - walk.from_emitter, walk.lobe_side, walk.rotation.yx);
+        vec2 u = stratum_point(walk.k - walk.from_emitter, walk.side, walk.rotation.yx);
         s = area_sample_towards(i, walk.type, P, N, phong_lobe_direction(u, walk.lobe_axis, walk.lobe_exponent));
     }
     float lobe_pdf = from_lobe > 0 ? phong_lobe_pdf(s.L, walk.lobe_axis, walk.lobe_exponent) : 0.0;
@@ -223,6 +224,26 @@ float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
 }
 #endif
 
+#ifdef HAS_AREA_LIGHTS
+// The strata along each side of light i's squares of samples: u_area_samples, the sky's
+// twice as many where the model has a lobe the pair's closed forms do not make exact (a
+// metal's, a microfacet lobe's): the whole sky reaches all of such a lobe, and its noise
+// was the unshadowed sky's error (docs/lights.md, "eighth"). Not where each sample would
+// trace its own ray (a shadowed sky over more objects than are drawn about): four times
+// the rays. At most kMaxSkySide: llvmpipe leaves every loop of a pixel after 65 535
+// iterations in all (docs/lights.md, "fourth").
+const int kMaxSkySide = 16;
+int area_side(int i, int type, vec3 lobes) {
+    bool inexact_lobe = lobes.x >= kLobeMinExponent && lobes.z == 0.0;
+    bool untraced = true;
+#ifdef HAS_SHADOWS
+    untraced = u_light_shadow[i] == 0 || u_sky_occluder_count > 0;
+#endif
+    bool twice = type == LIGHT_SKY && inexact_lobe && untraced && u_area_samples > 1;
+    return twice ? min(2 * u_area_samples, kMaxSkySide) : u_area_samples;
+}
+#endif
+
 // `lobes`: the Phong exponents of the model's highlight about V's mirror direction (0: none),
 // the one its samples are drawn from and the one its closed form controls (ModelSpec::glsl_lobe,
 // glsl_control_lobe), and 1 where the highlight is exactly that lobe (glsl_lobe_exact).
@@ -237,10 +258,11 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
     walk.exact_pair = vec4(0.0);
     walk.traced = false;
     walk.from_emitter = 1;
-    walk.lobe_side = 1;
+    walk.side = 1;
     walk.lobe_axis = 2.0 * dot(N, V) * N - V;
     walk.occluder_from = 0;
     walk.occluder_mask = 0;
+    walk.occluder_per = 0;
     walk.occluder_exact = 0;
     walk.occluder_ratio = 1.0;
     walk.lobe_exponent = lobe;
@@ -251,14 +273,14 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         walk.n = 0;
         return walk;
     }
-    int n = u_area_samples;
+    int n = area_side(i, walk.type, lobes);
     walk.from_emitter = n * n;
     // One sample: the emitter's centre (the explorer's fast path), not a random point.
     walk.rotation = n > 1 ? strata_rotation(i) : vec2(0.0);
     // As many lobe samples as the emitter's, the sky's too (a quarter as many left a shadowed sky
     // that traced them 3 levels off in places).
-    walk.lobe_side = n;
-    walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? walk.lobe_side * walk.lobe_side : 0);
+    walk.side = n;
+    walk.n = walk.from_emitter + ((n > 1 && lobe >= kLobeMinExponent) ? n * n : 0);
 #ifdef HAS_SHADOWS
     if (u_light_shadow[i] != 0) {
         float seen = emitter_seen(i, walk.type, walk.rotation, P, N);
@@ -336,12 +358,20 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
     // (common/sky_occluders.glsl), where they are few enough to be drawn about.
     if (walk.type == LIGHT_SKY && walk.traced && u_sky_occluder_count > 0 && n > 1) {
         walk.traced = false;
-        walk.occluder_mask = occluder_mask(P, N, u_light_vector[i].xyz);
+        vec3 up = u_light_vector[i].xyz;
+        walk.occluder_mask = occluder_mask(P, N, up);
         walk.occluder_from = walk.n;
-        walk.n += bit_count(walk.occluder_mask) * sky_occluder_samples(n);
+        float exact_part = occluder_exact_part(walk.occluder_mask, P, N, up, walk.occluder_exact);
+        // Four times the samples about each object for a highlight's lobe (which the
+        // closed forms leave to them) where every object drawn about has a closed form:
+        // a sample that meets one traces no ray (a mesh's would, and near llvmpipe's loop limit).
+        bool all_exact = walk.occluder_exact == walk.occluder_mask;
+        int dense = sky_occluder_samples(min(2 * u_area_samples, kMaxSkySide));
+        walk.occluder_per = lobe >= kLobeMinExponent && all_exact ? dense : sky_occluder_samples(u_area_samples);
+        walk.n += bit_count(walk.occluder_mask) * walk.occluder_per;
         if (walk.occluder_mask != 0)
-            walk.occluder_ratio = occluder_exact_ratio(sky_occluder_samples(n), walk.occluder_mask, walk.rotation, P,
-                                                       N, u_light_vector[i].xyz, walk.occluder_exact);
+            walk.occluder_ratio = occluder_exact_ratio(walk.occluder_per, dense, walk.occluder_mask, walk.rotation, P,
+                                                       N, up, walk.occluder_exact, exact_part);
     }
 #endif
 #endif
@@ -362,7 +392,7 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
         vec3 up = u_light_vector[i].xyz;
         float weight;
         LightSample s;
-        s.L = occluder_sample(walk.k - walk.occluder_from, sky_occluder_samples(u_area_samples), walk.occluder_mask,
+        s.L = occluder_sample(walk.k - walk.occluder_from, walk.occluder_per, walk.occluder_mask,
                               walk.rotation, P, N, up, weight);
         s.spot = 1.0;
         s.area = true;

@@ -13,7 +13,8 @@
 // by all of a technique's samples that its silhouette covers (a sphere: every
 // one). Unbiased as long as every blocked direction lies in some technique's
 // domain: an object is left out only where it cannot block the sky above P
-// (a plane through P, a box wholly below N's or the sky's horizon).
+// (a plane through P, a box wholly below N's or the sky's horizon, a sphere or a
+// box wholly below N's: the one P lies on).
 // renderer/passes/occluders.h uploads the bounding spheres and boxes of at
 // most MAX_SKY_OCCLUDERS objects; with more, u_sky_occluder_count is 0 and the
 // sky's samples trace their own rays (common/lights.glsl). The reference
@@ -52,6 +53,22 @@ struct OccluderCone {
     float one_minus;  // 1 - z, kept where z is near 1 (a small, distant object)
 };
 
+// Whether object k's exact shape (a sphere, a box) lies wholly on or below the
+// plane through o with normal N: the shape that P lies on, N its outward normal (a
+// convex shape never blocks a direction above its own tangent plane), seen from the
+// shadow ray's origin o = P + eps N, so that rounding on its surface stays below.
+bool exact_shape_below(int k, vec3 o, vec3 N) {
+    float shape = u_sky_occluder_half[k].w;
+    if (shape == kOccluderSphere) {
+        vec4 sphere = u_sky_occluder_sphere[k];
+        return dot(N, sphere.xyz - o) + sphere.w <= 0.0;
+    }
+    if (shape != kOccluderBox) return false;
+    float top = dot(N, u_sky_occluder_frame[4 * k + 3].xyz - o);
+    for (int a = 0; a < 3; ++a) top += abs(dot(N, u_sky_occluder_frame[4 * k + a].xyz)) * u_sky_occluder_frame[4 * k + a].w;
+    return top <= 0.0;
+}
+
 OccluderCone occluder_cone(int k, vec3 P, vec3 N, vec3 up) {
     OccluderCone cone;
     cone.axis = N;
@@ -60,9 +77,11 @@ OccluderCone occluder_cone(int k, vec3 P, vec3 N, vec3 up) {
     vec4 box = u_sky_occluder_centre[k];
     vec3 half_size = u_sky_occluder_half[k].xyz;
     vec3 to_box = box.xyz - P;
-    // Its box wholly below a horizon: its corner furthest up is not above it.
+    // Its box wholly below a horizon: its corner furthest up is not above it; or its
+    // exact shape below N's (the object P lies on, a sphere or a box).
     if (dot(N, to_box) + dot(abs(N), half_size) <= 0.0 || dot(up, to_box) + dot(abs(up), half_size) <= 0.0)
         return cone;
+    if (exact_shape_below(k, shadow_ray_origin(P, N), N)) return cone;
     // A plane through P blocks only directions along it.
     float eps = 1e-4 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
     if (box.w > 0.5 && abs(dot(u_sky_occluder_normal[k].xyz, to_box)) <= eps) return cone;
@@ -265,7 +284,7 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
 // `mask` has a closed form here. Walks the samples ahead of the model, with
 // no ray: the factor depends only on the exact shapes, so a shadow ray that
 // other hardware's rounding turns cannot move it.
-float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out int exact_mask) {
+float occluder_exact_part(int mask, vec3 P, vec3 N, vec3 up, out int exact_mask) {
     vec3 o = shadow_ray_origin(P, N);
     exact_mask = 0;
     float exact = 0.0;
@@ -276,8 +295,15 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
         exact += projected;
         exact_mask |= 1 << k;
     }
-    if (exact_mask == 0) return 1.0;
-    float sampled = 0.0, twice = 0.0;
+    return exact;
+}
+
+// Of `per` samples a technique of `mask`: the sum of weight x N . L over those that
+// meet an exact shape of `exact_mask`, and of the same times the number of shapes
+// each meets beyond the first (the overlap's excess).
+vec2 exact_shape_sums(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, int exact_mask) {
+    vec3 o = shadow_ray_origin(P, N);
+    vec2 sums = vec2(0.0);
     int count = bit_count(mask) * per;
     for (int j = 0; j < count; ++j) {
         float weight;
@@ -287,11 +313,22 @@ float occluder_exact_ratio(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec
         int hits = 0;
         for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
             if (((exact_mask >> k) & 1) != 0 && occluder_shape_meets(k, o, L)) ++hits;
-        if (hits == 0) continue;
-        sampled += weight * c;
-        twice += weight * c * float(hits - 1);
+        if (hits > 0) sums += weight * c * vec2(1.0, float(hits - 1));
     }
-    return sampled > 0.0 && exact > twice ? (exact - twice) / sampled : 1.0;
+    return sums;
+}
+
+// The overlap's excess is estimated from overlap_per samples a technique (more than the
+// walk's `per` where two exact shapes may overlap: it walks no model, and its noise was most
+// of a floor's error under a sphere beside a cube); the walk's own sum sets the factor.
+float occluder_exact_ratio(int per, int overlap_per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up,
+                           int exact_mask, float exact) {
+    if (exact_mask == 0) return 1.0;
+    vec2 sums = exact_shape_sums(per, mask, rotation, P, N, up, exact_mask);
+    float twice = sums.y;
+    if (overlap_per != per && bit_count(exact_mask) > 1)
+        twice = exact_shape_sums(overlap_per, mask, rotation, P, N, up, exact_mask).y;
+    return sums.x > 0.0 && exact > twice ? (exact - twice) / sums.x : 1.0;
 }
 
 // What blocks a sample of the blocked part: nothing, an exact shape of

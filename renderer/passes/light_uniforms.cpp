@@ -59,7 +59,10 @@ LightUniforms pack_lights(const std::vector<Light>& lights, const dvec3& global_
         const std::size_t side = std::size_t(std::min(sampling.shadow, 3));
         const std::size_t probe = light.type == LightType::sky ? 0 : side * side;
         const std::size_t rays = !light.shadow ? 0 : !area || sampling.light <= 1 ? 1 : probe + samples;
-        u.work += samples + 10 * rays;
+        // The sky takes twice the strata a side, untraced, under a lobe no closed form makes
+        // exact (glsl/common/lights.glsl: area_side); counted so whatever the materials.
+        const std::size_t untraced = light.type == LightType::sky && sampling.light > 1 ? 3 * samples : 0;
+        u.work += samples + untraced + 10 * rays;
         float lobes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (std::size_t j = 0; j < light.lobes.size() && j < 4; ++j) {
             lobes[2 * j] = float(light.lobes[j].w);
