@@ -275,15 +275,8 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
     return -1.0;
 }
 
-// The factor for the blocked samples that meet an exact shape of `mask`
-// (occluder_sample, `per` a technique of `mask`): the exact part over the
-// samples' estimate of it (their sum of weight x N . L). The closed forms'
-// sum counts twice where two silhouettes overlap; the samples' estimate of
-// that excess (those that meet more than one shape) is taken off it, so the
-// overlap is as noisy as before and the rest exact. 1 where no object of
-// `mask` has a closed form here. Walks the samples ahead of the model, with
-// no ray: the factor depends only on the exact shapes, so a shadow ray that
-// other hardware's rounding turns cannot move it.
+// The exact part of what the objects of `mask` block above P: the sum of their
+// silhouettes' closed forms, and (exact_mask) the objects that have one here.
 float occluder_exact_part(int mask, vec3 P, vec3 N, vec3 up, out int exact_mask) {
     vec3 o = shadow_ray_origin(P, N);
     exact_mask = 0;
@@ -318,9 +311,17 @@ vec2 exact_shape_sums(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up,
     return sums;
 }
 
-// The overlap's excess is estimated from overlap_per samples a technique (more than the
-// walk's `per` where two exact shapes may overlap: it walks no model, and its noise was most
-// of a floor's error under a sphere beside a cube); the walk's own sum sets the factor.
+// The factor for the blocked samples that meet an exact shape of `mask`
+// (occluder_sample, `per` a technique of `mask`): the exact part over the
+// samples' estimate of it (their sum of weight x N . L). The closed forms'
+// sum counts twice where two silhouettes overlap; an estimate of that excess
+// (samples that meet more than one shape) is taken off it, so only the overlap
+// is noisy; it is drawn from overlap_per samples a technique, more than the
+// walk's `per` (it walks no model, and its noise was most of a floor's error
+// under a sphere beside a cube). 1 where no object of `mask` has a closed form
+// here. Walks the samples ahead of the model, with no ray: the factor depends
+// only on the exact shapes, so a shadow ray that other hardware's rounding
+// turns cannot move it.
 float occluder_exact_ratio(int per, int overlap_per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up,
                            int exact_mask, float exact) {
     if (exact_mask == 0) return 1.0;
