@@ -7,12 +7,14 @@
 //   - no NaN or Inf;
 //   - unbiased: the mean of gpu - ref within 3e-4 (a missed occluder, a
 //     wrong pdf or a lost sample shows here);
-//   - rects and disks, shadowed or not: docs/spec.md's target, >= 99.5 % of
-//     pixels on the same display level and none more than one off;
-//   - the sky: the same target unshadowed, raw error <= 5e-3; its shadow (what
-//     the objects block, its Lambert part exact for spheres and boxes) raw
-//     <= 1e-2 (the target in soft shadows), >= 99.3 % on the same level and
-//     mean |diff| <= 1e-4 (not yet 99.5 % for every family: metal 99.43 %).
+//   - every light's raw error within docs/spec.md's target: <= 5e-3, <= 1e-2
+//     with a shadow (its largest errors are in the soft shadows);
+//   - rects and disks, shadowed or not, and the unshadowed sky: docs/spec.md's
+//     target, >= 99.5 % of pixels on the same display level and none more than
+//     one off;
+//   - the sky's shadow (what the objects block, its Lambert part exact for
+//     spheres and boxes): none more than one off, >= 99.3 % on the same level
+//     and mean |diff| <= 1e-4 (not yet 99.5 % for every family: metal 99.43 %).
 // docs/lights.md has the measured errors of each case.
 #include "gpu_compare.h"
 
@@ -35,11 +37,10 @@ constexpr int kMaxLevelDiff = 1;
 constexpr double kBias = 3e-4;
 constexpr double kMeanDiff = 1e-3;
 constexpr double kSameLevelShare = 0.995;     // docs/spec.md's target
-// The sky, raw: docs/spec.md's target (5e-3, 1e-2 in soft shadows); unshadowed 1.7e-3-2.8e-3 where
-// the lobe is sampled (metal, microfacet, principled; twice the strata a side), 4e-5 where the pair
-// makes it exact.
-constexpr double kSkyMaxDiff = 5e-3;
-constexpr double kSkyShadowMaxDiff = 1e-2;
+// Raw, docs/spec.md's target: unshadowed 1.3e-5-4.2e-3 (disk metal), shadowed 0.0036-0.0098
+// (disk principled; the sky's 0.0042-0.0086).
+constexpr double kMaxDiff = 5e-3;
+constexpr double kShadowMaxDiff = 1e-2;
 // The sky's shadow: what the objects block drawn about them, its Lambert part exact for the
 // sphere and the cube (glsl/common/sky_occluders.glsl): 99.43-99.72 % on the same level, mean
 // |diff| 3.7e-5-6.8e-5, max 0.0042-0.0086 (sampled alone: 93.4-94.1 %, 6.3e-4-7.1e-4; drawn from
@@ -111,7 +112,7 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
     EXPECT_LE(std::abs(c.mean_signed_diff), kBias);
     const bool sky = kLights[l].name == "sky";
-    if (sky) EXPECT_LE(c.max_abs_diff, shadow ? kSkyShadowMaxDiff : kSkyMaxDiff);
+    EXPECT_LE(c.max_abs_diff, shadow ? kShadowMaxDiff : kMaxDiff);
     if (sky && shadow) {
         EXPECT_LE(c.mean_abs_diff, kSkyShadowMeanDiff);
         EXPECT_GE(c.same_level_share, kSkyShadowSameLevelShare);
@@ -119,6 +120,44 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
         EXPECT_LE(c.mean_abs_diff, kMeanDiff);
         EXPECT_GE(c.same_level_share, kSameLevelShare);
     }
+}
+
+// The shadowed sky over eight objects (as many as are drawn about: three spheres, two cubes,
+// a cylinder, a torus, the floor) of three families. Every sample of what they block walks
+// every object, and llvmpipe leaves all loops of a pixel after 65 535 iterations without a
+// word: a lost walk leaves light that should have been taken away, pixels too bright. A
+// denser estimate of the silhouettes' overlap over all of them did that (95.7 % on the same
+// level, 4 levels off, mean diff +1.9e-4; measured 97.6 %, 1, -1.3e-5).
+TEST(SkyShadowOnTheGpu, EightObjectsStayWithinTheLoopLimit) {
+    const nlohmann::json highlight = kMaterials[0].material, metal = kMaterials[1].material;
+    const nlohmann::json doc = {
+        {"display", {{"width", 64}, {"height", 40}, {"bits", 5}}},
+        {"background", {0.05, 0.05, 0.08}},
+        {"camera", {{"projection", "perspective"}, {"position", {0, 2.6, 7.5}}, {"target", {0, 0.5, 0}},
+                    {"up", {0, 1, 0}}, {"fov_y_deg", 38}}},
+        {"lights", {{{"type", "sky"}, {"intensity", 0.8}, {"color", {0.7, 0.8, 1.0}}, {"shadow", true}}}},
+        {"objects",
+         {{{"shape", "plane"}, {"center", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"size", 12},
+           {"material", {{"model", "lambert"}, {"kd", {0.6, 0.6, 0.6}}}}},
+          {{"shape", "sphere"}, {"center", {-2.6, 0.5, 0}}, {"radius", 0.5}, {"material", highlight}},
+          {{"shape", "sphere"}, {"center", {-1.2, 0.4, 1.0}}, {"radius", 0.4}, {"material", metal}},
+          {{"shape", "sphere"}, {"center", {2.4, 0.6, -0.8}}, {"radius", 0.6}, {"material", highlight}},
+          {{"shape", "cube"}, {"center", {-0.2, 0.45, -0.5}}, {"size", 0.9}, {"rotation_deg", {0, 30, 0}},
+           {"material", highlight}},
+          {{"shape", "cube"}, {"center", {1.0, 0.3, 1.0}}, {"size", 0.6}, {"rotation_deg", {0, 10, 0}},
+           {"material", metal}},
+          {{"shape", "cylinder"}, {"center", {0.9, 0.6, -1.2}}, {"axis", {0, 1, 0}}, {"radius", 0.4},
+           {"height", 1.2}, {"material", metal}},
+          {{"shape", "torus"}, {"center", {2.6, 0.22, 1.0}}, {"axis", {0, 1, 0}}, {"major_radius", 0.5},
+           {"minor_radius", 0.2}, {"material", highlight}}}}};
+    const test::Comparison c =
+        test::compare_gpu_with_reference(scene_from_json(doc, "eight_objects.json", LoadContext::trusted()));
+    std::cout << "sky over eight objects: " << c.describe() << "\n";
+    SCOPED_TRACE(c.describe());
+    EXPECT_EQ(c.nonfinite_values, 0);
+    EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
+    EXPECT_LE(std::abs(c.mean_signed_diff), 5e-5);
+    EXPECT_GE(c.same_level_share, 0.97);
 }
 
 // A shadowed directional light with no area light in the scene (the programs

@@ -230,17 +230,20 @@ float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
 // metal's, a microfacet lobe's): the whole sky reaches all of such a lobe, and its noise
 // was the unshadowed sky's error (docs/lights.md, "eighth"). Not where each sample would
 // trace its own ray (a shadowed sky over more objects than are drawn about): four times
-// the rays. At most kMaxSkySide: llvmpipe leaves every loop of a pixel after 65 535
-// iterations in all (docs/lights.md, "fourth").
+// the rays. Only up to kMaxSkySide: llvmpipe leaves every loop of a pixel after 65 535
+// iterations in all (docs/lights.md, "fourth"; at 12 a side, 24 doubled or 16, the sky
+// fill's metal cylinder reached it).
 const int kMaxSkySide = 16;
+const int kMaxDenseOccluders = 2;
 int area_side(int i, int type, vec3 lobes) {
     bool inexact_lobe = lobes.x >= kLobeMinExponent && lobes.z == 0.0;
     bool untraced = true;
 #ifdef HAS_SHADOWS
     untraced = u_light_shadow[i] == 0 || u_sky_occluder_count > 0;
 #endif
-    bool twice = type == LIGHT_SKY && inexact_lobe && untraced && u_area_samples > 1;
-    return twice ? min(2 * u_area_samples, kMaxSkySide) : u_area_samples;
+    bool twice = type == LIGHT_SKY && inexact_lobe && untraced && u_area_samples > 1 &&
+                 2 * u_area_samples <= kMaxSkySide;
+    return twice ? 2 * u_area_samples : u_area_samples;
 }
 #endif
 
@@ -363,11 +366,17 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         walk.occluder_from = walk.n;
         float exact_part = occluder_exact_part(walk.occluder_mask, P, N, up, walk.occluder_exact);
         // Four times the samples about each object for a highlight's lobe (which the
-        // closed forms leave to them) where every object drawn about has a closed form:
-        // a sample that meets one traces no ray (a mesh's would, and near llvmpipe's loop limit).
-        bool all_exact = walk.occluder_exact == walk.occluder_mask;
-        int dense = sky_occluder_samples(min(2 * u_area_samples, kMaxSkySide));
-        walk.occluder_per = lobe >= kLobeMinExponent && all_exact ? dense : sky_occluder_samples(u_area_samples);
+        // closed forms leave to them), and for the estimate of two exact silhouettes'
+        // overlap, where at most kMaxDenseOccluders objects are drawn about, each a
+        // sphere or a box: a sample that meets one traces no ray. Every sample walks
+        // every object drawn about (its density), and llvmpipe leaves all loops of a
+        // pixel after 65 535 iterations: with more objects, or a mesh's rays, a scene of
+        // eight objects lost its light (docs/lights.md, "eighth").
+        bool dense_fits = walk.occluder_exact == walk.occluder_mask &&
+                          bit_count(walk.occluder_mask) <= kMaxDenseOccluders && 2 * u_area_samples <= kMaxSkySide;
+        int per = sky_occluder_samples(u_area_samples);
+        int dense = dense_fits ? sky_occluder_samples(2 * u_area_samples) : per;
+        walk.occluder_per = lobe >= kLobeMinExponent ? dense : per;
         walk.n += bit_count(walk.occluder_mask) * walk.occluder_per;
         if (walk.occluder_mask != 0)
             walk.occluder_ratio = occluder_exact_ratio(walk.occluder_per, dense, walk.occluder_mask, walk.rotation, P,
