@@ -3,7 +3,8 @@
 // integrates in closed form (glsl/common/sky_occluders.glsl) must be exactly
 // the shapes the shadow rays meet, the same triangles the mesh pass draws
 // (geometry/shapes.cpp): a sphere its own bounding sphere, a cube's and a
-// plane's box the corners of their meshes. Anything else has no closed form.
+// plane's box the corners of their meshes, a capped cylinder its mesh's prism.
+// Anything else (an open cylinder, a torus, a model) has no closed form.
 #include "geometry/mesh.h"
 #include "passes/occluders.h"
 #include "scene/load.h"
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace m3055 {
@@ -82,10 +84,50 @@ TEST(SkyOccluders, APlaneIsABoxWithNoThickness) {
     expect_box_is_mesh(packed.sky[0], geometry::make_mesh(scene.objects[0]));
 }
 
-TEST(SkyOccluders, CurvedMeshesHaveNoClosedForm) {
+// A capped cylinder is the prism of its mesh: every rim corner
+// centre +- h a + r (cos(2 pi k / n) t + sin(2 pi k / n) b) a vertex, and every vertex such a
+// corner or a cap's hub (centre +- h a), whatever its axis and segments.
+TEST(SkyOccluders, ACappedCylinderIsItsMeshsPrism) {
+    const nlohmann::json cases[] = {{{"axis", {0, 1, 0}}, {"segments", 64}},
+                                    {{"axis", {0.3, 1.0, 0.2}}, {"segments", 7}},
+                                    {{"axis", {1, 0, 0}}, {"segments", 512}}};
+    for (const nlohmann::json& c : cases) {
+        SCOPED_TRACE(c.dump());
+        const Scene scene = scene_of({{{"shape", "cylinder"}, {"center", {0.4, 0.7, -1}}, {"axis", c["axis"]},
+                                       {"radius", 0.5}, {"height", 1.4}, {"segments", c["segments"]},
+                                       {"material", kMaterial}}});
+        const OccluderTexels packed = pack_occluders(scene);
+        ASSERT_EQ(packed.sky.size(), 1u);
+        const SkyOccluder& prism = packed.sky[0];
+        ASSERT_EQ(prism.shape, SkyOccluderShape::prism);
+        ASSERT_EQ(prism.segments, c["segments"].get<int>());
+        EXPECT_EQ(frame_texel_w(prism, 0), 0.7f);
+        EXPECT_EQ(frame_texel_w(prism, 1), 0.5f);
+        EXPECT_EQ(frame_texel_w(prism, 2), float(prism.segments));
+        std::vector<dvec3> corners;
+        for (int rim = -1; rim <= 1; rim += 2) {
+            const dvec3 hub = prism.centre + double(rim) * prism.half_sizes[0] * prism.axes[0];
+            corners.push_back(hub);
+            for (int k = 0; k < prism.segments; ++k) {
+                const double angle = 2 * 3.14159265358979323846 * k / prism.segments;
+                corners.push_back(hub + prism.half_sizes[1] * (std::cos(angle) * prism.axes[1] +
+                                                               std::sin(angle) * prism.axes[2]));
+            }
+        }
+        const geometry::Mesh mesh = geometry::make_mesh(scene.objects[0]);
+        auto near_one_of = [](const dvec3& p, const std::vector<dvec3>& points) {
+            return std::any_of(points.begin(), points.end(),
+                               [&](const dvec3& q) { return glm::length(p - q) < 1e-12; });
+        };
+        for (const dvec3& v : mesh.positions) EXPECT_TRUE(near_one_of(v, corners)) << v.x << " " << v.y << " " << v.z;
+        for (const dvec3& q : corners) EXPECT_TRUE(near_one_of(q, mesh.positions)) << q.x << " " << q.y << " " << q.z;
+    }
+}
+
+TEST(SkyOccluders, AnOpenCylinderAndATorusHaveNoClosedForm) {
     const Scene scene = scene_of(
         {{{"shape", "cylinder"}, {"center", {0, 0.7, 0}}, {"axis", {0, 1, 0}}, {"radius", 0.5}, {"height", 1.4},
-          {"material", kMaterial}},
+          {"capped", false}, {"material", kMaterial}},
          {{"shape", "torus"}, {"center", {2, 0.3, 0}}, {"axis", {0, 1, 0}}, {"major_radius", 0.6},
           {"minor_radius", 0.2}, {"material", kMaterial}}});
     const OccluderTexels packed = pack_occluders(scene);

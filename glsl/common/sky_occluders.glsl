@@ -34,6 +34,10 @@ uniform vec4 u_sky_occluder_normal[MAX_SKY_OCCLUDERS];    // a plane's unit norm
 uniform vec4 u_sky_occluder_frame[4 * MAX_SKY_OCCLUDERS];
 const float kOccluderSphere = 1.0;  // renderer/passes/occluders.h: SkyOccluderShape
 const float kOccluderBox = 2.0;
+// A capped cylinder's prism (its mesh: geometry/shapes.cpp, make_cylinder): frame[0] its
+// axis (w: half height), frame[1] and frame[2] the radial axes (w: radius; segments n),
+// frame[3] its centre; corner k of a rim at angle 2 pi k / n from frame[1] towards frame[2].
+const float kOccluderPrism = 3.0;
 
 // Samples of each technique, for the sky's n x n: half as many (a power of two
 // for n = 2, 4, 8, 16), so that four objects take as many rays as the n x n
@@ -167,10 +171,10 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
     return w;
 }
 
-// ---- The exact part: spheres and boxes ------------------------------------------------
+// ---- The exact part: spheres, boxes, prisms ---------------------------------------------
 // The samples above estimate what the objects block; its largest part has a
-// closed form where the object is a sphere or a box (a cube, a plane): the
-// projected solid angle of its silhouette. The samples that meet such a shape
+// closed form where the object is a sphere, a box (a cube, a plane) or a
+// capped cylinder's prism: the projected solid angle of its silhouette. The samples that meet such a shape
 // are scaled so that their sum of N . L equals that exact part, as the
 // emitters' samples are by E / E_s (common/lights.glsl): the Lambert term of
 // what spheres and boxes take from the sky is then exact where their
@@ -180,13 +184,62 @@ vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, ve
 // objects are as before. Both closed forms and every test below start at o,
 // the shadow ray's own origin (P + eps N, common/shadows.glsl).
 
-// Whether the ray o + t w, t > 0, meets object k's exact shape (a sphere or a
-// box; false for any other object). A box's slab test meets the same faces as
-// its triangles do (common/shadows.glsl).
+// Where the ray rel + t w (rel from a point on the unit axis a) is within `radius` of
+// that axis: [t0, t1], empty (t0 > t1) where never.
+vec2 cylinder_interval(vec3 rel, vec3 w, vec3 a, float radius) {
+    vec3 rp = rel - dot(rel, a) * a, wp = w - dot(w, a) * a;
+    float qa = dot(wp, wp), qb = dot(rp, wp), qc = dot(rp, rp) - radius * radius;
+    if (qa < 1e-20) return qc <= 0.0 ? vec2(-3.4e38, 3.4e38) : vec2(1.0, 0.0);
+    float disc = qb * qb - qa * qc;
+    if (disc < 0.0) return vec2(1.0, 0.0);
+    float root = sqrt(disc);
+    return vec2((-qb - root) / qa, (-qb + root) / qa);
+}
+
+// Whether the ray o + t w, t > 0, meets prism k: inside both rims' planes, then the
+// circumscribed cylinder (radius R) and the inscribed one (R cos(pi / n)) decide all
+// but the rays between them, which take the prism's n faces one by one.
+bool prism_meets(int k, vec3 o, vec3 w) {
+    vec4 a = u_sky_occluder_frame[4 * k], t = u_sky_occluder_frame[4 * k + 1], b = u_sky_occluder_frame[4 * k + 2];
+    vec3 rel = o - u_sky_occluder_frame[4 * k + 3].xyz;
+    float s = dot(a.xyz, rel), v = dot(a.xyz, w), enter = 0.0, leave = 3.4e38;
+    if (abs(v) < 1e-30) {
+        if (abs(s) > a.w) return false;
+    } else {
+        float t0 = (-a.w - s) / v, t1 = (a.w - s) / v;
+        enter = max(enter, min(t0, t1));
+        leave = min(leave, max(t0, t1));
+    }
+    if (enter > leave) return false;
+    vec2 outer = cylinder_interval(rel, w, a.xyz, t.w);
+    if (max(enter, outer.x) > min(leave, outer.y)) return false;
+    int n = int(b.w + 0.5);
+    float inradius = t.w * cos(PI / float(n));
+    vec2 inner = cylinder_interval(rel, w, a.xyz, inradius);
+    if (max(enter, inner.x) <= min(leave, inner.y)) return true;
+    for (int f = 0; f < n; ++f) {
+        float phi = 2.0 * PI * (float(f) + 0.5) / float(n);
+        vec3 normal = cos(phi) * t.xyz + sin(phi) * b.xyz;  // face f's, between corners f and f + 1
+        float sf = dot(normal, rel) - inradius, vf = dot(normal, w);
+        if (abs(vf) < 1e-30) {
+            if (sf > 0.0) return false;
+            continue;
+        }
+        if (vf > 0.0) leave = min(leave, -sf / vf);
+        else enter = max(enter, -sf / vf);
+        if (enter > leave) return false;
+    }
+    return true;
+}
+
+// Whether the ray o + t w, t > 0, meets object k's exact shape (a sphere, a box
+// or a prism; false for any other object). A box's slab test and a prism's faces
+// meet the same faces as their triangles do (common/shadows.glsl).
 bool occluder_shape_meets(int k, vec3 o, vec3 w) {
     float shape = u_sky_occluder_half[k].w;
     if (shape == kOccluderSphere)
         return ray_meets_sphere(o, w, u_sky_occluder_sphere[k].xyz, u_sky_occluder_sphere[k].w, 3.4e38);
+    if (shape == kOccluderPrism) return prism_meets(k, o, w);
     if (shape != kOccluderBox) return false;
     vec3 rel = o - u_sky_occluder_frame[4 * k + 3].xyz;
     float enter = 0.0, leave = 3.4e38;
@@ -233,6 +286,59 @@ float face_projected_solid_angle(vec3 q0, vec3 q1, vec3 q2, vec3 q3, vec3 up, ve
     return 0.5 * abs(sum);
 }
 
+// Whether a prism's side face f (between corners f and f + 1, `angle_step` apart) faces the
+// point its centre is at `to_centre` from: the point outside the face's plane.
+bool prism_face_toward(int f, float angle_step, vec3 t, vec3 b, vec3 to_centre, float inradius) {
+    float phi = angle_step * (float(f) + 0.5);
+    return -dot(cos(phi) * t + sin(phi) * b, to_centre) > inradius;
+}
+
+// The projected solid angle about N of prism k seen from o, wholly above N's and up's
+// horizons (to the shadow ray's offset: a floor's point beside a cylinder standing on it
+// has the bottom rim on its horizon), -1 elsewhere, and where o is within its radius of
+// the axis (on it: its own samples decide, as for any object). Lambert's formula over the
+// outline of the faces that face o (a convex prism's cover its silhouette once): each
+// side face's bottom and top edges (the near rims), its side edges where the next face
+// turns away (the outline's two sides), and where a cap faces o, the cap's edges beside
+// the side faces that turn away (the far rim), all taken round each face the same way.
+float prism_projected(int k, vec3 o, vec3 N, vec3 up) {
+    vec4 a = u_sky_occluder_frame[4 * k], t = u_sky_occluder_frame[4 * k + 1], b = u_sky_occluder_frame[4 * k + 2];
+    vec3 to_centre = u_sky_occluder_frame[4 * k + 3].xyz - o;
+    float h = -dot(to_centre, a.xyz);  // o's height along the axis
+    if (length(-to_centre - h * a.xyz) <= 1.001 * t.w) return -1.0;
+    float tol = 4e-4 * max(1.0, max(abs(o.x), max(abs(o.y), abs(o.z))));
+    for (int side = 0; side < 2; ++side) {
+        vec3 n = side == 0 ? N : up;
+        float na = dot(n, a.xyz);
+        if (dot(n, to_centre) - a.w * abs(na) - t.w * sqrt(max(1.0 - na * na, 0.0)) < -tol) return -1.0;
+    }
+    int n = int(b.w + 0.5);
+    float inradius = t.w * cos(PI / float(n)), angle_step = 2.0 * PI / float(n);
+    bool top = h > a.w, bottom = h < -a.w;  // a cap faces o
+    vec3 top_axis = to_centre + a.w * a.xyz, bottom_axis = to_centre - a.w * a.xyz;
+    bool previous = prism_face_toward(n - 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
+    bool current = prism_face_toward(0, angle_step, t.xyz, b.xyz, to_centre, inradius);
+    float sum = 0.0;
+    for (int f = 0; f < n; ++f) {
+        bool next = prism_face_toward(f + 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
+        vec3 r0 = t.w * (cos(angle_step * float(f)) * t.xyz + sin(angle_step * float(f)) * b.xyz);
+        vec3 r1 = t.w * (cos(angle_step * float(f + 1)) * t.xyz + sin(angle_step * float(f + 1)) * b.xyz);
+        vec3 b0 = bottom_axis + r0, b1 = bottom_axis + r1, t0 = top_axis + r0, t1 = top_axis + r1;
+        if (current) {
+            if (!bottom) sum += lambert_edge(b0, b1, N);
+            if (!top) sum += lambert_edge(t1, t0, N);
+            if (!next) sum += lambert_edge(b1, t1, N);
+            if (!previous) sum += lambert_edge(t0, b0, N);
+        } else {
+            if (top) sum += lambert_edge(t0, t1, N);
+            if (bottom) sum += lambert_edge(b1, b0, N);
+        }
+        previous = current;
+        current = next;
+    }
+    return 0.5 * abs(sum);
+}
+
 // The projected solid angle about N of what object k blocks above N's and up's
 // horizons, seen from o: a sphere's silhouette (a cone, as a disk: the circle
 // where the tangents from o touch it), where its rim is wholly above up's
@@ -272,6 +378,7 @@ float occluder_shape_projected(int k, vec3 o, vec3 N, vec3 up) {
         }
         return sum;
     }
+    if (shape == kOccluderPrism) return prism_projected(k, o, N, up);
     return -1.0;
 }
 

@@ -3,6 +3,7 @@
 #include "geometry/box_tree.h"
 #include "geometry/mesh.h"
 #include "passes/render_targets.h"
+#include "scene/shape_limits.h"
 
 #include <glm/common.hpp>
 
@@ -59,6 +60,10 @@ std::string geometry_key(const Scene& scene) {
 
 }  // namespace
 
+float frame_texel_w(const SkyOccluder& o, int a) {
+    return o.shape == SkyOccluderShape::prism && a == 2 ? float(o.segments) : float(o.half_sizes[a]);
+}
+
 OccluderTexels pack_occluders(const Scene& scene) {
     std::vector<Primitive> primitives;
     std::vector<dvec3> lo, hi;
@@ -110,6 +115,14 @@ OccluderTexels pack_occluders(const Scene& scene) {
             o.axes[0] = frame.t, o.axes[1] = frame.b, o.axes[2] = frame.a;
             o.half_sizes = dvec3(object.size / 2, object.size / 2, 0.0);
             o.shape = SkyOccluderShape::box;
+            o.centre = object.center;
+        } else if (object.shape == Shape::cylinder && object.capped) {
+            // make_cylinder's prism: its corners at radial(frame, 2 pi k / n) on both rims.
+            const geometry::AxisFrame frame = geometry::axis_frame(object.axis);
+            o.axes[0] = frame.a, o.axes[1] = frame.t, o.axes[2] = frame.b;
+            o.half_sizes = dvec3(object.height / 2, object.radius, object.radius);
+            o.segments = segments_of(object);
+            o.shape = SkyOccluderShape::prism;
             o.centre = object.center;
         }
         sky.push_back(o);
@@ -196,9 +209,9 @@ void OccluderTexture::set_uniforms(unsigned program) const {
             {float(o.normal.x), float(o.normal.y), float(o.normal.z), 0.0f}};
         std::vector<float>* arrays[4] = {&sphere, &centre, &half, &normal};
         for (int a = 0; a < 4; ++a) std::copy(values[a], values[a] + 4, arrays[a]->begin() + 4 * k);
-        for (int a = 0; a < 4; ++a) {  // a box's three axes (w: the half size along it), then its centre
+        for (int a = 0; a < 4; ++a) {  // a box's or prism's three axes (frame_texel_w), then its centre
             const dvec3 v = a < 3 ? o.axes[a] : o.centre;
-            const float texel[4] = {float(v.x), float(v.y), float(v.z), a < 3 ? float(o.half_sizes[a]) : 0.0f};
+            const float texel[4] = {float(v.x), float(v.y), float(v.z), a < 3 ? frame_texel_w(o, a) : 0.0f};
             std::copy(texel, texel + 4, frame.begin() + 4 * (4 * k + std::size_t(a)));
         }
     }

@@ -24,10 +24,12 @@ inline constexpr int kOccluderMaxDepth = 64;  // never reached: every split halv
 // (glsl/common/sky_occluders.glsl): each one's bounding sphere and box, and a
 // plane's normal; and the shapes whose silhouettes have closed forms (a sphere:
 // its bounding sphere is the sphere; a cube or a plane: a box, its unit axes
-// and half sizes, a plane's 0 along its normal). At most kMaxSkyOccluders
-// objects (the GLSL's MAX_SKY_OCCLUDERS).
+// and half sizes, a plane's 0 along its normal; a capped cylinder: the prism of
+// its mesh, its axis, radial axes, half height, radius and segments). At most
+// kMaxSkyOccluders objects (the GLSL's MAX_SKY_OCCLUDERS).
 inline constexpr std::size_t kMaxSkyOccluders = 8;
-enum class SkyOccluderShape { other = 0, sphere = 1, box = 2 };  // the GLSL's kOccluderSphere, kOccluderBox
+// The GLSL's kOccluderSphere, kOccluderBox, kOccluderPrism.
+enum class SkyOccluderShape { other = 0, sphere = 1, box = 2, prism = 3 };
 struct SkyOccluder {
     dvec3 sphere_centre;
     double radius = 0.0;
@@ -38,7 +40,15 @@ struct SkyOccluder {
     dvec3 centre;           // a box's centre,
     dvec3 axes[3];          // its unit axes (the mesh's own: geometry/shapes.cpp)
     dvec3 half_sizes{0.0};  // and its half size along each
+    // A cylinder's prism: centre, axes[0] its axis, axes[1] and axes[2] the radial axes its
+    // corners are drawn from (corner k at angle 2 pi k / segments from axes[1] towards axes[2]);
+    // half_sizes (half height, radius, radius): what the GPU is given (frame_texel_w).
+    int segments = 0;
 };
+
+// The w of frame texel a (0-2) that the GLSL reads: a box's half size along axis a; a
+// prism's half height, radius, and segments.
+float frame_texel_w(const SkyOccluder& o, int a);
 
 // The texels of glsl/common/shadows.glsl's layout: the nodes (two texels
 // each), then the primitives from texel `primitives_at` (three each).
