@@ -6,10 +6,12 @@
 #include "progress.h"
 
 #include "analysis/nonfinite.h"
+#include "analysis/reference_images.h"
 #include "capture/capture.h"
 #include "gl/program.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
+#include "reference/reference.h"
 #include "scene/load.h"
 
 #include <atomic>
@@ -23,6 +25,7 @@ void add_render_command(CLI::App& app) {
         std::string scene, out, raw, backend = "auto", view_transform;
         std::vector<std::string> sets;
         double scene_timeout = 0;
+        bool reference = false;
     };
     auto options = std::make_shared<Options>();
     CLI::App* command = app.add_subcommand("render", "Render a scene headless to PNG (and PFM)");
@@ -37,6 +40,10 @@ void add_render_command(CLI::App& app) {
                         "shows levels of the linear value) or srgb (sRGB's encoding, as other tools show colour); "
                         "as the scene's display.view_transform")
         ->check(CLI::IsMember({"none", "srgb"}));
+    command->add_flag("--reference", options->reference,
+                      "Draw the double-precision CPU reference instead of the GPU's image: the exact answer the "
+                      "GPU is tested against (docs/reference.md); the same levels and PFM, seconds to minutes for "
+                      "area lights and shadows; no GL context, and --backend and --scene-timeout do not apply");
     command->add_option("--scene-timeout", options->scene_timeout,
                         "Give up on a scene not drawn within SECONDS of starting to load it (default 0: no limit)")
         ->check(CLI::NonNegativeNumber);
@@ -62,6 +69,17 @@ void add_render_command(CLI::App& app) {
             Scene scene = load_scene_file(options->scene, LoadContext::trusted(), overrides);
             if (!options->view_transform.empty())
                 scene.display.view_transform = options->view_transform == "srgb" ? ViewTransform::srgb : ViewTransform::none;
+            if (options->reference) {
+                // .brdf files' models have no C++ twin: their pixels would be NaN.
+                if (may_render_nonfinite(scene))
+                    throw std::runtime_error(text::quote_name(options->scene) +
+                                             ": a .brdf file's material has no CPU reference (docs/reference.md); "
+                                             "nothing written");
+                const ref::ReferenceImage image = ref::render_reference(scene);
+                write_capture_files(options->out, reference_display(image, scene.display), options->raw,
+                                    reference_raw(image), [&] { written = true; });
+                exit_now(kExitOk);
+            }
             const auto loaded = std::chrono::steady_clock::now();
             Capture capture(make_headless_context(parse_backend(options->backend)));
             // The budget covers loading and drawing, not making the GL context.

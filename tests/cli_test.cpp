@@ -153,6 +153,76 @@ TEST_P(IndependentReference, PngAndRawMatchTheReferenceImages) {
 INSTANTIATE_TEST_SUITE_P(Cli, IndependentReference,
                          ::testing::Values("spec_example", "metal_two_lobes", "translucent_over_opaque"));
 
+// Levels of two PNGs of one display: (pixels one level off, pixels more than one off).
+std::pair<long, long> levels_off(const Rgb8Image& a, const Rgb8Image& b, int bits) {
+    const int max_level = (1 << bits) - 1;
+    long one_off = 0, worse = 0;
+    for (std::size_t p = 0; p < a.pixels.size() / 3; ++p) {
+        int max_step = 0;
+        for (int c = 0; c < 3; ++c) {
+            const long got = std::lround(a.pixels[3 * p + c] * max_level / 255.0);
+            const long want = std::lround(b.pixels[3 * p + c] * max_level / 255.0);
+            max_step = std::max(max_step, int(std::labs(got - want)));
+        }
+        one_off += max_step == 1;
+        worse += max_step > 1;
+    }
+    return {one_off, worse};
+}
+
+// `render --reference` writes the CPU reference's own image: against the independent
+// double-precision images, its PFM to float's rounding and its PNG the same levels.
+TEST_P(IndependentReference, TheReferenceOptionWritesTheReferenceImages) {
+    TempDir out;
+    const Rendered r = render_ok(reference_file(GetParam() + ".json"), out.path(), GetParam(), {"--reference"});
+    const Rgb8Image want_png = read_png(reference_file(GetParam() + ".png"));
+    const RgbFloatImage want_raw = read_pfm(reference_file(GetParam() + ".pfm"));
+    ASSERT_EQ(r.png.width, want_png.width);
+    ASSERT_EQ(r.png.height, want_png.height);
+    ASSERT_EQ(r.raw.pixels.size(), want_raw.pixels.size());
+    const auto [one_off, worse] = levels_off(r.png, want_png, 5);
+    EXPECT_EQ(worse, 0);
+    EXPECT_EQ(one_off, 0);
+    double max_diff = 0.0;
+    for (std::size_t i = 0; i < want_raw.pixels.size(); ++i)
+        max_diff = std::max(max_diff, std::fabs(double(r.raw.pixels[i]) - double(want_raw.pixels[i])));
+    EXPECT_LE(max_diff, 1e-6);
+}
+
+// A dithered display: the reference's levels take the quantize pass's Bayer threshold at
+// the same pixels (rows counted from the bottom, as GL's), so the GPU's PNG and the
+// reference's differ only where a value is within the GPU's error of a threshold (rows
+// counted from the top would move a third of the gradients' pixels a level).
+TEST(ReferenceOption, DitheredLevelsAreTheQuantizePasss) {
+    TempDir out;
+    const std::vector<std::string> dither = {"--set", "display.dither=true"};
+    std::vector<std::string> reference = dither;
+    reference.push_back("--reference");
+    const Rendered gpu = render_ok(spec_example(), out.path(), "gpu", dither);
+    const Rendered ref = render_ok(spec_example(), out.path(), "ref", reference);
+    ASSERT_EQ(gpu.png.pixels.size(), ref.png.pixels.size());
+    const auto [one_off, worse] = levels_off(gpu.png, ref.png, 5);
+    EXPECT_EQ(worse, 0);
+    EXPECT_LE(double(one_off) / (512.0 * 320.0), kMaxOneLevelOffShare) << one_off << " pixels one level off";
+}
+
+// A .brdf file's model has no C++ twin: the reference is refused in one line, nothing written.
+TEST(ReferenceOption, ABrdfMaterialIsRefusedAndNothingWritten) {
+    TempDir out;
+    const std::string scene = out.file("brdf.json");
+    test::write_text(scene, R"({"display": {"width": 16, "height": 10, "bits": 5},
+        "camera": {"projection": "perspective", "position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
+                   "fov_y_deg": 30},
+        "lights": [{"type": "directional", "direction": [0, 1, 1], "intensity": 1}],
+        "objects": [{"shape": "sphere", "center": [0, 0, 0], "radius": 1,
+                     "material": {"model": "brdf", "file": ")" + test::source_path("tests/data/brdf/lambert.brdf") + R"("}}]})");
+    const RunResult run = run_m3055({"render", "--scene", scene, "--out", out.file("o.png"), "--reference"});
+    EXPECT_EQ(run.exit_code, 1) << describe(run);
+    EXPECT_TRUE(is_one_line(run.err)) << run.err;
+    EXPECT_NE(run.err.find("no CPU reference"), std::string::npos) << run.err;
+    EXPECT_EQ(files_in(out.path()), (std::vector<std::string>{"brdf.json"}));
+}
+
 TEST(RenderCommand, EglAndOsmesaBackendsWriteByteIdenticalPngs) {
     TempDir out;
     const Rendered egl = render_ok(spec_example(), out.path(), "egl", {"--backend", "egl"});
