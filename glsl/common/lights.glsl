@@ -234,17 +234,25 @@ float pair_factor(vec4 exact_pair, vec3 L, vec3 N, vec3 D) {
 // iterations in all (docs/lights.md, "fourth"; at 12 a side, 24 doubled or 16, the sky
 // fill's metal cylinder reached it).
 const int kMaxSkySide = 16;
-const int kMaxDenseOccluders = 2;
+bool doubled_sky_side_fits() {
+    return 2 * u_area_samples <= kMaxSkySide;
+}
+
 int area_side(int i, int type, vec3 lobes) {
     bool inexact_lobe = lobes.x >= kLobeMinExponent && lobes.z == 0.0;
     bool untraced = true;
 #ifdef HAS_SHADOWS
     untraced = u_light_shadow[i] == 0 || u_sky_occluder_count > 0;
 #endif
-    bool twice = type == LIGHT_SKY && inexact_lobe && untraced && u_area_samples > 1 &&
-                 2 * u_area_samples <= kMaxSkySide;
+    bool twice = type == LIGHT_SKY && inexact_lobe && untraced && u_area_samples > 1 && doubled_sky_side_fits();
     return twice ? 2 * u_area_samples : u_area_samples;
 }
+#endif
+
+#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
+// The most objects drawn about (each a sphere or a box) for which a shadowed sky's blocked
+// part takes four times the samples: every sample walks every object (docs/lights.md, "eighth").
+const int kMaxDenseOccluders = 2;
 #endif
 
 // `lobes`: the Phong exponents of the model's highlight about V's mirror direction (0: none),
@@ -373,7 +381,7 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         // pixel after 65 535 iterations: with more objects, or a mesh's rays, a scene of
         // eight objects lost its light (docs/lights.md, "eighth").
         bool dense_fits = walk.occluder_exact == walk.occluder_mask &&
-                          bit_count(walk.occluder_mask) <= kMaxDenseOccluders && 2 * u_area_samples <= kMaxSkySide;
+                          bit_count(walk.occluder_mask) <= kMaxDenseOccluders && doubled_sky_side_fits();
         int per = sky_occluder_samples(u_area_samples);
         int dense = dense_fits ? sky_occluder_samples(2 * u_area_samples) : per;
         walk.occluder_per = lobe >= kLobeMinExponent ? dense : per;

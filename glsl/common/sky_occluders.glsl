@@ -397,9 +397,9 @@ float prism_projected(int k, vec3 o, vec3 N, vec3 up) {
     bool previous = prism_face_toward(n - 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
     bool current = prism_face_toward(0, angle_step, t.xyz, b.xyz, to_centre, inradius);
     float sum = 0.0;
+    vec3 r0 = t.w * t.xyz;  // corner 0's radius; each next corner's carried round
     for (int f = 0; f < n; ++f) {
         bool next = prism_face_toward(f + 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
-        vec3 r0 = t.w * (cos(angle_step * float(f)) * t.xyz + sin(angle_step * float(f)) * b.xyz);
         vec3 r1 = t.w * (cos(angle_step * float(f + 1)) * t.xyz + sin(angle_step * float(f + 1)) * b.xyz);
         vec3 b0 = bottom_axis + r0, b1 = bottom_axis + r1, t0 = top_axis + r0, t1 = top_axis + r1;
         if (current) {
@@ -413,6 +413,7 @@ float prism_projected(int k, vec3 o, vec3 N, vec3 up) {
         }
         previous = current;
         current = next;
+        r0 = r1;
     }
     return 0.5 * abs(sum);
 }
