@@ -17,6 +17,9 @@
 #include <atomic>
 #include <chrono>
 #include <iostream>
+#include <optional>
+
+#include <unistd.h>
 
 namespace m3055 {
 
@@ -75,7 +78,14 @@ void add_render_command(CLI::App& app) {
                     throw std::runtime_error(text::quote_name(options->scene) +
                                              ": a .brdf file's material has no CPU reference (docs/reference.md); "
                                              "nothing written");
-                const ref::ReferenceImage image = ref::render_reference(scene);
+                // On a terminal, a line that counts the rows (a 512 x 320 scene with area
+                // lights and shadows takes minutes); nothing in a log.
+                std::optional<Progress> rows;
+                if (isatty(STDERR_FILENO) == 1) rows.emplace(std::size_t(scene.display.height), true);
+                const ref::ReferenceImage image = ref::render_reference(scene, ref::AreaQuadrature{}, nullptr, [&] {
+                    if (rows) rows->step("", "");
+                });
+                if (rows) rows->finish();
                 write_capture_files(options->out, reference_display(image, scene.display), options->raw,
                                     reference_raw(image), [&] { written = true; });
                 exit_now(kExitOk);

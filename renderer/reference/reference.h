@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace m3055::ref {
@@ -201,6 +202,10 @@ struct ReferenceImage {
 ReferenceImage render_reference(const Scene& scene);
 // The same with the quadrature's tolerances chosen, and what it did (`stats`: optional).
 ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadrature, AreaStats* stats = nullptr);
+// The same, calling `row_done` after each row is drawn (from the thread that drew
+// it, one call at a time): a long render's progress (`m3055 render --reference`).
+ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadrature, AreaStats* stats,
+                                const std::function<void()>& row_done);
 
 // True when pixel (x, y) and its 8 neighbours (inside the image) share one coverage.
 bool is_interior(const ReferenceImage& image, int x, int y);

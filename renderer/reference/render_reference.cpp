@@ -17,6 +17,7 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 namespace m3055::ref {
@@ -115,6 +116,11 @@ dvec3 shade_pixel(const Scene& scene, const Ray& ray, const std::vector<Hit>& hi
 ReferenceImage render_reference(const Scene& scene) { return render_reference(scene, AreaQuadrature{}); }
 
 ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadrature, AreaStats* stats) {
+    return render_reference(scene, quadrature, stats, {});
+}
+
+ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadrature, AreaStats* stats,
+                                const std::function<void()>& row_done) {
     ReferenceImage image;
     image.width = scene.display.width;
     image.height = scene.display.height;
@@ -126,6 +132,7 @@ ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadra
     std::vector<AreaStats> thread_stats(static_cast<std::size_t>(threads));
     std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
     std::atomic<int> next_row{0};
+    std::mutex row_done_lock;
     const auto work = [&](int k) {
         try {
             const LightingOptions options{&bvh, quadrature, stats ? &thread_stats[std::size_t(k)] : nullptr};
@@ -139,6 +146,10 @@ ReferenceImage render_reference(const Scene& scene, const AreaQuadrature& quadra
                     image.rgb[3 * i + 1] = c.g;
                     image.rgb[3 * i + 2] = c.b;
                     image.coverage[i] = coverage_signature(hits);
+                }
+                if (row_done) {
+                    const std::lock_guard<std::mutex> lock(row_done_lock);
+                    row_done();
                 }
             }
         } catch (...) {
