@@ -286,6 +286,18 @@ TEST(RenderReference, LightExactlyBehindTheObjectLeavesOnlyTheAmbientTerm) {
     }
 }
 
+// The per-row callback (a progress display) is called once a row and changes nothing drawn.
+TEST(RenderReference, TheRowCallbackCountsEveryRowAndChangesNoPixel) {
+    Scene scene;
+    scene.display = {48, 32, 5, false};
+    scene.objects.push_back({Shape::sphere, {0, 0, 0}, 1.0, every_model().front()});
+    scene.lights = {directional({1, 1, 1})};
+    int rows = 0;
+    const ReferenceImage counted = render_reference(scene, AreaQuadrature{}, nullptr, [&] { ++rows; });
+    EXPECT_EQ(rows, 32);
+    EXPECT_EQ(counted.rgb, render_reference(scene).rgb);
+}
+
 TEST(HighlightModel, ExponentZeroLightsEveryPointFacingTheLight) {
     // (R.V)^0 = 1 wherever N.L > 0, even where R.V <= 0.
     const Material mat = highlight({0.8, 0.2, 0.2}, 0.5, 0.5, 0.0);
