@@ -7,6 +7,7 @@
 
 #include "analysis/nonfinite.h"
 #include "analysis/reference_images.h"
+#include "brdf_file/brdf_model.h"
 #include "capture/capture.h"
 #include "gl/program.h"
 #include "io/message_text.h"
@@ -35,21 +36,26 @@ void add_render_command(CLI::App& app) {
     command->add_option("--scene", options->scene, "Scene JSON file (docs/spec.md#7-scene-files)")->required();
     command->add_option("--out", options->out, "Output PNG (8-bit RGB, quantized to display.bits)")->required();
     command->add_option("--raw", options->raw, "Also write the unquantized linear colour as PFM");
-    command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
-        ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
+    CLI::Option* backend =
+        command->add_option("--backend", options->backend, "GL context: auto (EGL, then OSMesa), egl or osmesa")
+            ->check(CLI::IsMember({"auto", "egl", "osmesa"}));
     command->add_option("--set", options->sets, "Override a scene value: path=value, e.g. objects[0].material.m=40");
     command->add_option("--view-transform", options->view_transform,
                         "What the display does before its levels: none (the scene's own, by default: the M3055 "
                         "shows levels of the linear value) or srgb (sRGB's encoding, as other tools show colour); "
                         "as the scene's display.view_transform")
         ->check(CLI::IsMember({"none", "srgb"}));
-    command->add_flag("--reference", options->reference,
-                      "Draw the double-precision CPU reference instead of the GPU's image: the exact answer the "
-                      "GPU is tested against (docs/reference.md); the same levels and PFM, seconds to minutes for "
-                      "area lights and shadows; no GL context, and --backend and --scene-timeout do not apply");
-    command->add_option("--scene-timeout", options->scene_timeout,
-                        "Give up on a scene not drawn within SECONDS of starting to load it (default 0: no limit)")
-        ->check(CLI::NonNegativeNumber);
+    CLI::Option* reference =
+        command->add_flag("--reference", options->reference,
+                          "Draw the double-precision CPU reference instead of the GPU's image: the exact answer the "
+                          "GPU is tested against (docs/reference.md); the same levels and PFM, seconds to minutes "
+                          "for area lights and shadows (on a terminal a line counts its rows); no GL context");
+    CLI::Option* timeout =
+        command->add_option("--scene-timeout", options->scene_timeout,
+                            "Give up on a scene not drawn within SECONDS of starting to load it (default 0: no limit)")
+            ->check(CLI::NonNegativeNumber);
+    // The reference has no GL context to choose and no time budget.
+    reference->excludes(backend)->excludes(timeout);
     command->callback([options]() {
         // SIGINT, SIGTERM, SIGHUP: temporaries removed, one line, ended by the signal.
         std::atomic<bool> written{false};
@@ -74,10 +80,11 @@ void add_render_command(CLI::App& app) {
                 scene.display.view_transform = options->view_transform == "srgb" ? ViewTransform::srgb : ViewTransform::none;
             if (options->reference) {
                 // .brdf files' models have no C++ twin: their pixels would be NaN.
-                if (may_render_nonfinite(scene))
-                    throw std::runtime_error(text::quote_name(options->scene) +
-                                             ": a .brdf file's material has no CPU reference (docs/reference.md); "
-                                             "nothing written");
+                for (std::size_t k = 0; k < scene.objects.size(); ++k)
+                    if (find_brdf_model(scene.objects[k].material.model()))
+                        throw std::runtime_error(text::quote_name(options->scene) + ": objects[" + std::to_string(k) +
+                                                 "].material: a .brdf file's model has no CPU reference "
+                                                 "(docs/reference.md); nothing written");
                 // On a terminal, a line that counts the rows (a 512 x 320 scene with area
                 // lights and shadows takes minutes); nothing in a log.
                 std::optional<Progress> rows;

@@ -206,6 +206,20 @@ TEST(ReferenceOption, DitheredLevelsAreTheQuantizePasss) {
     EXPECT_LE(double(one_off) / (512.0 * 320.0), kMaxOneLevelOffShare) << one_off << " pixels one level off";
 }
 
+// The reference has no GL context to choose and no time budget: either option is a usage error.
+TEST(ReferenceOption, TakesNeitherABackendNorATimeout) {
+    TempDir out;
+    for (const std::vector<std::string>& extra :
+         {std::vector<std::string>{"--backend", "egl"}, std::vector<std::string>{"--scene-timeout", "5"}}) {
+        std::vector<std::string> args = {"render", "--scene", spec_example(), "--out", out.file("o.png"), "--reference"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const RunResult run = run_m3055(args);
+        EXPECT_EQ(run.exit_code, 2) << describe(run);
+        EXPECT_TRUE(is_one_line(run.err)) << run.err;
+    }
+    EXPECT_TRUE(files_in(out.path()).empty());
+}
+
 // A .brdf file's model has no C++ twin: the reference is refused in one line, nothing written.
 TEST(ReferenceOption, ABrdfMaterialIsRefusedAndNothingWritten) {
     TempDir out;
@@ -219,7 +233,8 @@ TEST(ReferenceOption, ABrdfMaterialIsRefusedAndNothingWritten) {
     const RunResult run = run_m3055({"render", "--scene", scene, "--out", out.file("o.png"), "--reference"});
     EXPECT_EQ(run.exit_code, 1) << describe(run);
     EXPECT_TRUE(is_one_line(run.err)) << run.err;
-    EXPECT_NE(run.err.find("no CPU reference"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("objects[0].material: a .brdf file's model has no CPU reference"), std::string::npos)
+        << run.err;
     EXPECT_EQ(files_in(out.path()), (std::vector<std::string>{"brdf.json"}));
 }
 
