@@ -371,51 +371,110 @@ bool prism_face_toward(int f, float angle_step, vec3 t, vec3 b, vec3 to_centre, 
     return -dot(cos(phi) * t + sin(phi) * b, to_centre) > inradius;
 }
 
-// The projected solid angle about N of prism k seen from o, wholly above N's and up's
-// horizons (to the shadow ray's offset: a floor's point beside a cylinder standing on it
-// has the bottom rim on its horizon), -1 elsewhere, and where o is within its radius of
-// the axis (on it: its own samples decide, as for any object). Lambert's formula over the
-// outline of the faces that face o (a convex prism's cover its silhouette once): each
-// side face's bottom and top edges (the near rims), its side edges where the next face
-// turns away (the outline's two sides), and where a cap faces o, the cap's edges beside
-// the side faces that turn away (the far rim), all taken round each face the same way.
+// Lambert's formula over a convex polygon clipped to the hemispheres above up's and
+// N's horizons, its edges given one at a time in any order (each directed round the
+// polygon the same way): Sutherland-Hodgman edge by edge, against up . x > 0, then
+// against N . x > 0. Each edge's part above both adds its term; where the outline
+// leaves a horizon and where it comes back are kept, and the chord between them along
+// the horizon closes the clipped polygon (up's chord itself clipped against N's).
+struct ClippedOutline {
+    float sum;                 // the terms so far
+    vec3 exit_up, entry_up;    // where the outline crosses up's horizon, going out and coming back
+    vec3 exit_N, entry_N;      // ... N's, of the outline clipped to up's hemisphere
+    int crossed;               // bits: 1 exit_up, 2 entry_up, 4 exit_N, 8 entry_N
+};
+
+ClippedOutline clipped_outline() {
+    ClippedOutline c;
+    c.sum = 0.0;
+    c.exit_up = c.entry_up = c.exit_N = c.entry_N = vec3(0.0);
+    c.crossed = 0;
+    return c;
+}
+
+// Edge a -> b, already above up's horizon, clipped against N's.
+void outline_edge_above_up(inout ClippedOutline c, vec3 a, vec3 b, vec3 N) {
+    float ha = dot(N, a), hb = dot(N, b);
+    if ((ha > 0.0) != (hb > 0.0)) {
+        vec3 x = a + (ha / (ha - hb)) * (b - a);
+        if (ha > 0.0) {
+            c.exit_N = x;
+            c.crossed |= 4;
+            b = x;
+        } else {
+            c.entry_N = x;
+            c.crossed |= 8;
+            a = x;
+        }
+    } else if (!(ha > 0.0)) {
+        return;
+    }
+    c.sum += lambert_edge(a, b, N);
+}
+
+void outline_edge(inout ClippedOutline c, vec3 a, vec3 b, vec3 N, vec3 up) {
+    float ha = dot(up, a), hb = dot(up, b);
+    if ((ha > 0.0) != (hb > 0.0)) {
+        vec3 x = a + (ha / (ha - hb)) * (b - a);
+        if (ha > 0.0) {
+            c.exit_up = x;
+            c.crossed |= 1;
+            b = x;
+        } else {
+            c.entry_up = x;
+            c.crossed |= 2;
+            a = x;
+        }
+    } else if (!(ha > 0.0)) {
+        return;
+    }
+    outline_edge_above_up(c, a, b, N);
+}
+
+float outline_projected_solid_angle(ClippedOutline c, vec3 N) {
+    if ((c.crossed & 3) == 3) outline_edge_above_up(c, c.exit_up, c.entry_up, N);
+    if ((c.crossed & 12) == 12) c.sum += lambert_edge(c.exit_N, c.entry_N, N);
+    return 0.5 * abs(c.sum);
+}
+
+// The projected solid angle about N of prism k seen from o, above N's and up's horizons,
+// -1 where o is within its radius of the axis (on it: the lune of the face it lies on, or
+// its own samples, decide). Lambert's formula over the outline of the faces that face o (a
+// convex prism's cover its silhouette once), clipped to both horizons: each side face's
+// bottom and top edges (the near rims), its side edges where the next face turns away (the
+// outline's two sides), and where a cap faces o, the cap's edges beside the side faces that
+// turn away (the far rim), all taken round each face the same way.
 float prism_projected(int k, vec3 o, vec3 N, vec3 up) {
     vec4 a = u_sky_occluder_frame[4 * k], t = u_sky_occluder_frame[4 * k + 1], b = u_sky_occluder_frame[4 * k + 2];
     vec3 to_centre = u_sky_occluder_frame[4 * k + 3].xyz - o;
     float h = -dot(to_centre, a.xyz);  // o's height along the axis
     if (length(-to_centre - h * a.xyz) <= 1.001 * t.w) return -1.0;
-    float tol = 4e-4 * max(1.0, max(abs(o.x), max(abs(o.y), abs(o.z))));
-    for (int side = 0; side < 2; ++side) {
-        vec3 n = side == 0 ? N : up;
-        float na = dot(n, a.xyz);
-        if (dot(n, to_centre) - a.w * abs(na) - t.w * sqrt(max(1.0 - na * na, 0.0)) < -tol) return -1.0;
-    }
     int n = int(b.w + 0.5);
     float inradius = t.w * cos(PI / float(n)), angle_step = 2.0 * PI / float(n);
     bool top = h > a.w, bottom = h < -a.w;  // a cap faces o
     vec3 top_axis = to_centre + a.w * a.xyz, bottom_axis = to_centre - a.w * a.xyz;
     bool previous = prism_face_toward(n - 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
     bool current = prism_face_toward(0, angle_step, t.xyz, b.xyz, to_centre, inradius);
-    float sum = 0.0;
+    ClippedOutline outline = clipped_outline();
     vec3 r0 = t.w * t.xyz;  // corner 0's radius; each next corner's carried round
     for (int f = 0; f < n; ++f) {
         bool next = prism_face_toward(f + 1, angle_step, t.xyz, b.xyz, to_centre, inradius);
         vec3 r1 = t.w * (cos(angle_step * float(f + 1)) * t.xyz + sin(angle_step * float(f + 1)) * b.xyz);
         vec3 b0 = bottom_axis + r0, b1 = bottom_axis + r1, t0 = top_axis + r0, t1 = top_axis + r1;
         if (current) {
-            if (!bottom) sum += lambert_edge(b0, b1, N);
-            if (!top) sum += lambert_edge(t1, t0, N);
-            if (!next) sum += lambert_edge(b1, t1, N);
-            if (!previous) sum += lambert_edge(t0, b0, N);
+            if (!bottom) outline_edge(outline, b0, b1, N, up);
+            if (!top) outline_edge(outline, t1, t0, N, up);
+            if (!next) outline_edge(outline, b1, t1, N, up);
+            if (!previous) outline_edge(outline, t0, b0, N, up);
         } else {
-            if (top) sum += lambert_edge(t0, t1, N);
-            if (bottom) sum += lambert_edge(b1, b0, N);
+            if (top) outline_edge(outline, t0, t1, N, up);
+            if (bottom) outline_edge(outline, b1, b0, N, up);
         }
         previous = current;
         current = next;
         r0 = r1;
     }
-    return 0.5 * abs(sum);
+    return outline_projected_solid_angle(outline, N);
 }
 
 // The projected solid angle about N of what object k blocks above N's and up's
