@@ -46,7 +46,8 @@ nlohmann::json to_json(const Comparison& c) {
 std::string summary_line(const Comparison& c) {
     char text[200];
     std::snprintf(text, sizeof text, "%s: %.2f %% of pixels on the same level, %llu pixels off (max %d levels)",
-                  to_string(c.verdict), 100.0 * c.same_share(), (unsigned long long)(c.pixels - c.same_pixels),
+                  to_string(c.verdict), percent_to_two_places(c.same_pixels, c.pixels),
+                  (unsigned long long)(c.pixels - c.same_pixels),
                   c.max_levels);
     return text;
 }

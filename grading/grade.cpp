@@ -32,7 +32,8 @@ Check image_check(const Assignment& assignment, const Comparison& c, const NonFi
     check.earned = check.ok ? check.points : image_points_earned(assignment, off);
     char line[200];
     std::snprintf(line, sizeof line, "%.2f %% of pixels on the reference's level, %.2f %% more than %d off (allowed %.6g %%), max %d",
-                  100.0 * c.same_share(), off, c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
+                  percent_to_two_places(c.same_pixels, c.pixels), percent_to_two_places(c.over_fail, c.pixels),
+                  c.thresholds.fail.levels, c.thresholds.fail.percent, c.max_levels);
     const std::string region = assignment.image_objects_only && c.pixels > 0
                                    ? "the objects' " + std::to_string(c.pixels) + " pixels: "
                                    : std::string();

@@ -179,4 +179,12 @@ Comparison compare_levels(const LevelImage& a, const LevelImage& b, const Thresh
     return result;
 }
 
+double percent_to_two_places(std::uint64_t part, std::uint64_t whole) {
+    if (whole == 0) return 100.0;
+    const double percent = 100.0 * double(part) / double(whole);
+    if (part > 0 && percent < 0.01) return 0.01;
+    if (part < whole && percent > 99.99) return 99.99;
+    return percent;
+}
+
 }  // namespace m3055::grading

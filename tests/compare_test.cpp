@@ -87,6 +87,17 @@ TEST(LevelCompare, ThresholdsAtTheirEdges) {
     EXPECT_EQ(compare_levels(a, b, {{1, 0.0}, Threshold{0, 0.0}}).verdict, Verdict::fail);  // fail wins
 }
 
+// A line that prints a share to two decimals never says 100.00 % while pixels are off,
+// nor 0.00 % while some are not.
+TEST(LevelCompare, PercentsToTwoPlacesNeverRoundToAllOrNone) {
+    EXPECT_EQ(percent_to_two_places(163838, 163840), 99.99);  // 99.9988 %
+    EXPECT_EQ(percent_to_two_places(163840, 163840), 100.0);
+    EXPECT_EQ(percent_to_two_places(2, 163840), 0.01);  // 0.0012 %
+    EXPECT_EQ(percent_to_two_places(0, 163840), 0.0);
+    EXPECT_DOUBLE_EQ(percent_to_two_places(1, 4), 25.0);
+    EXPECT_EQ(percent_to_two_places(0, 0), 100.0);
+}
+
 TEST(LevelCompare, SizesDifferIsAnErrorNamingBoth) {
     try {
         compare_levels(flat(512, 320, 0), flat(256, 160, 0));
