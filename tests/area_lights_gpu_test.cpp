@@ -216,6 +216,31 @@ TEST(SkyShadowOnTheGpu, ANeighboursPrismIsClippedToBothHorizons) {
     EXPECT_GE(c.same_level_share, kSameLevelShare);
 }
 
+// Two cylinders sunk into the floor, one tilted: from the floor's points (up's horizon is
+// N's) each crosses the horizon, and its outline's chord along it closes the clipped
+// polygon (one plane's test drops it, the other's takes its crossings again). Measured
+// 99.8 % on the same level, max |diff| 0.0024, mean 4.9e-5 (where only a prism wholly above
+// both horizons had its closed form: 84.3 %, 2 levels off, 0.043, 2.4e-3).
+TEST(SkyShadowOnTheGpu, CylindersSunkIntoTheFloorAreClippedToItsHorizon) {
+    const nlohmann::json camera = {{"projection", "perspective"}, {"position", {0, 1.6, 4.5}}, {"target", {0, 0.6, 0}},
+                                   {"up", {0, 1, 0}}, {"fov_y_deg", 30}};
+    const nlohmann::json lambert = {{"model", "lambert"}, {"kd", {0.6, 0.6, 0.6}}};
+    const nlohmann::json objects = {
+        {{"shape", "plane"}, {"center", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"size", 8}, {"material", lambert}},
+        {{"shape", "cylinder"}, {"center", {-0.75, 0.2, 0}}, {"axis", {0, 1, 0}}, {"radius", 0.5}, {"height", 1.2},
+         {"material", lambert}},
+        {{"shape", "cylinder"}, {"center", {0.75, 0.5, 0}}, {"axis", {0.4, 1, 0.2}}, {"radius", 0.5}, {"height", 1.2},
+         {"material", lambert}}};
+    const test::Comparison c = test::compare_gpu_with_reference(shadowed_sky_scene(camera, objects, "sunk.json"));
+    std::cout << "sky over sunk cylinders: " << c.describe() << "\n";
+    SCOPED_TRACE(c.describe());
+    EXPECT_EQ(c.nonfinite_values, 0);
+    EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
+    EXPECT_LE(c.max_abs_diff, kMaxDiff);
+    EXPECT_LE(c.mean_abs_diff, 1e-4);
+    EXPECT_GE(c.same_level_share, kSameLevelShare);
+}
+
 // A cylinder of few sides, close up, under the shadowed sky: its smooth normals lean up to
 // 180 / n degrees from their faces, so each face blocks the lune of the sky above N's
 // horizon and below the face's plane (glsl/common/sky_occluders.glsl: prism_own_face),
