@@ -212,26 +212,49 @@ int bit_count(int mask) {
     return count;
 }
 
-// Sample j of the blocked part, `per` samples a technique of `mask`: its
-// direction, and the balance heuristic's weight 1 / sum_k per p_k(w).
-vec3 occluder_sample(int j, int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, out float weight) {
-    int technique = j / per, seen = 0, k_of = 0;
+// The blocked part's techniques: one an object of `mask` and, where lobe.w > 0, the
+// highlight's lobe ((lobe.xyz . w)+)^lobe.w (common/area_lights.glsl:
+// phong_lobe_direction), which the cones, uniform in solid angle, meet only now and
+// then where an object stands in V's mirror direction: a principled floor at the
+// foot of four objects, its grazing Fresnel lobe drawn from their cones alone, was up
+// to 0.076 off, above and below, and in places below zero.
+int occluder_techniques(int mask, vec4 lobe) {
+    return bit_count(mask) + (lobe.w > 0.0 ? 1 : 0);
+}
+
+// Sample j of the blocked part, `per` samples a technique (occluder_techniques):
+// its direction, and the balance heuristic's weight 1 / sum_k per p_k(w).
+vec3 occluder_sample(int j, int per, int mask, vec4 lobe, vec2 rotation, vec3 P, vec3 N, vec3 up,
+                     out float weight) {
+    int technique = j / per, seen = 0, k_of = -1;
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k) {
         if (((mask >> k) & 1) == 0) continue;
         if (seen == technique) k_of = k;
         ++seen;
     }
     // Each technique's strata shifted on their own (the same pixel, another hash).
-    vec2 shift = fract(rotation + vec2(0.618034, 0.754878) * float(k_of + 1));
-    OccluderCone own = occluder_cone(k_of, P, N, up);
-    vec3 w = occluder_direction(own, net_point(j - technique * per, per, shift));
-    // The drawing technique's own density whatever its cone test says of w: a
-    // direction drawn at a narrow cone's rim can fail the test by rounding (SwiftShader
-    // did), and weighed by a wide technique's density alone it was a firefly.
-    float density = own.z == kOccluderLune ? float(per) * occluder_density(own) : float(per) / (2.0 * PI * own.one_minus);
+    vec2 shift = fract(rotation + vec2(0.618034, 0.754878) * float((k_of < 0 ? MAX_SKY_OCCLUDERS : k_of) + 1));
+    vec2 u = net_point(j - technique * per, per, shift);
+    vec3 w;
+    float density = 0.0;
+    if (k_of < 0) {
+        w = phong_lobe_direction(u, lobe.xyz, lobe.w);
+    } else {
+        OccluderCone own = occluder_cone(k_of, P, N, up);
+        w = occluder_direction(own, u);
+        // The drawing technique's own density whatever its cone test says of w: a
+        // direction drawn at a narrow cone's rim can fail the test by rounding (SwiftShader
+        // did), and weighed by a wide technique's density alone it was a firefly.
+        density = float(per) * occluder_density(own);
+    }
     for (int k = 0; k < MAX_SKY_OCCLUDERS; ++k)
         if (k != k_of && ((mask >> k) & 1) != 0) density += float(per) * occluder_pdf(occluder_cone(k, P, N, up), w);
-    weight = density > 0.0 ? 1.0 / density : 0.0;
+    // The lobe's samples count only inside some object's cone: every direction an
+    // object of `mask` blocks lies in its cone, and one at a cone's rim that meets the
+    // object by rounding would be weighed by the lobe's thin tail alone.
+    bool in_a_cone = density > 0.0;
+    if (lobe.w > 0.0) density += float(per) * phong_lobe_pdf(w, lobe.xyz, lobe.w);
+    weight = in_a_cone ? 1.0 / density : 0.0;
     return w;
 }
 
@@ -545,16 +568,16 @@ float occluder_exact_part(int mask, vec3 P, vec3 N, vec3 up, out int exact_mask)
     return exact;
 }
 
-// Of `per` samples a technique of `mask`: the sum of weight x N . L over those that
+// Of `per` samples a technique (occluder_techniques): the sum of weight x N . L over those that
 // meet an exact shape of `exact_mask`, and of the same times the number of shapes
 // each meets beyond the first (the overlap's excess).
-vec2 exact_shape_sums(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up, int exact_mask) {
+vec2 exact_shape_sums(int per, int mask, vec4 lobe, vec2 rotation, vec3 P, vec3 N, vec3 up, int exact_mask) {
     vec3 o = shadow_ray_origin(P, N);
     vec2 sums = vec2(0.0);
-    int count = bit_count(mask) * per;
+    int count = occluder_techniques(mask, lobe) * per;
     for (int j = 0; j < count; ++j) {
         float weight;
-        vec3 L = occluder_sample(j, per, mask, rotation, P, N, up, weight);
+        vec3 L = occluder_sample(j, per, mask, lobe, rotation, P, N, up, weight);
         float c = dot(N, L);
         if (!(weight > 0.0 && c > 0.0 && dot(up, L) > 0.0)) continue;
         int hits = 0;
@@ -576,13 +599,13 @@ vec2 exact_shape_sums(int per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up,
 // here. Walks the samples ahead of the model, with no ray: the factor depends
 // only on the exact shapes, so a shadow ray that other hardware's rounding
 // turns cannot move it.
-float occluder_exact_ratio(int per, int overlap_per, int mask, vec2 rotation, vec3 P, vec3 N, vec3 up,
+float occluder_exact_ratio(int per, int overlap_per, int mask, vec4 lobe, vec2 rotation, vec3 P, vec3 N, vec3 up,
                            int exact_mask, float exact) {
     if (exact_mask == 0) return 1.0;
-    vec2 sums = exact_shape_sums(per, mask, rotation, P, N, up, exact_mask);
+    vec2 sums = exact_shape_sums(per, mask, lobe, rotation, P, N, up, exact_mask);
     float twice = sums.y;
     if (overlap_per != per && bit_count(exact_mask) > 1)
-        twice = exact_shape_sums(overlap_per, mask, rotation, P, N, up, exact_mask).y;
+        twice = exact_shape_sums(overlap_per, mask, lobe, rotation, P, N, up, exact_mask).y;
     return sums.x > 0.0 && exact > twice ? (exact - twice) / sums.x : 1.0;
 }
 
