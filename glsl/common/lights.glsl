@@ -148,9 +148,10 @@ AreaSample walk_direction(int i, LightWalk walk, vec3 P, vec3 N, out float weigh
         s = area_sample(i, walk.type, walk.k, n, walk.rotation, P, N);
     } else {
         vec2 u = stratum_point(walk.k - walk.from_emitter, walk.side, walk.rotation.yx);
-        s = area_sample_towards(i, walk.type, P, N, phong_lobe_direction(u, walk.lobe_axis, walk.lobe_exponent));
+        vec3 w = lobe_technique_direction(u, walk.lobe_axis, walk.lobe_exponent, walk.type);
+        s = area_sample_towards(i, walk.type, P, N, w);
     }
-    float lobe_pdf = from_lobe > 0 ? phong_lobe_pdf(s.L, walk.lobe_axis, walk.lobe_exponent) : 0.0;
+    float lobe_pdf = from_lobe > 0 ? lobe_technique_pdf(s.L, walk.lobe_axis, walk.lobe_exponent, walk.type) : 0.0;
     weight = s.pdf > 0.0 ? 1.0 / (float(walk.from_emitter) * s.pdf + float(from_lobe) * lobe_pdf) : 0.0;
     return s;
 }

@@ -214,7 +214,7 @@ int bit_count(int mask) {
 
 // The blocked part's techniques: one an object of `mask` and, where lobe.w > 0, the
 // highlight's lobe ((lobe.xyz . w)+)^lobe.w (common/area_lights.glsl:
-// phong_lobe_direction), which the cones, uniform in solid angle, meet only now and
+// lobe_technique_direction), which the cones, uniform in solid angle, meet only now and
 // then where an object stands in V's mirror direction: a principled floor at the
 // foot of four objects, its grazing Fresnel lobe drawn from their cones alone, was up
 // to 0.076 off, above and below, and in places below zero.
@@ -238,7 +238,7 @@ vec3 occluder_sample(int j, int per, int mask, vec4 lobe, vec2 rotation, vec3 P,
     vec3 w;
     float density = 0.0;
     if (k_of < 0) {
-        w = phong_lobe_direction(u, lobe.xyz, lobe.w);
+        w = lobe_technique_direction(u, lobe.xyz, lobe.w, LIGHT_SKY);
     } else {
         OccluderCone own = occluder_cone(k_of, P, N, up);
         w = occluder_direction(own, u);
@@ -253,7 +253,7 @@ vec3 occluder_sample(int j, int per, int mask, vec4 lobe, vec2 rotation, vec3 P,
     // object of `mask` blocks lies in its cone, and one at a cone's rim that meets the
     // object by rounding would be weighed by the lobe's thin tail alone.
     bool in_a_cone = density > 0.0;
-    if (lobe.w > 0.0) density += float(per) * phong_lobe_pdf(w, lobe.xyz, lobe.w);
+    if (lobe.w > 0.0) density += float(per) * lobe_technique_pdf(w, lobe.xyz, lobe.w, LIGHT_SKY);
     weight = in_a_cone ? 1.0 / density : 0.0;
     return w;
 }
