@@ -315,11 +315,13 @@ TEST(SkyShadowOnTheGpu, AFloorsLobeAtTheFootOfFourObjectsIsDrawnFromTheLobe) {
 // pixels: max |diff| 3.4 and 0.49, mean 0.019 and 0.0081, 64.7 and 79.3 % on the same level).
 // Now the sky's sharp lobes are drawn as GGX lobes (glsl/common/area_lights.glsl:
 // lobe_technique_direction). Measured (interior pixels): max 0.0098 and 0.016, mean 6.0e-4
-// and 7.0e-4, 98.0 and 97.8 %, 1 level at most.
-TEST(SkyOnTheGpu, AGlossyPrincipledFloorHasNoFireflies) {
+// and 7.0e-4, 98.0 and 97.8 %, 1 level at most. Roughness 1 has no lobe to draw from (e =
+// 0.5 < 1) and takes the doubled side: its retro-reflection's noise with 8 x 8 samples was
+// 94.0 % on the same level (all pixels, mean 1.8e-3); measured 98.3 %, 5.3e-4.
+TEST(SkyOnTheGpu, APrincipledFloorOfAnyRoughnessConverges) {
     const nlohmann::json camera = {{"projection", "perspective"}, {"position", {0, 2.4, 7.5}}, {"target", {0, 0.55, 0}},
                                    {"up", {0, 1, 0}}, {"fov_y_deg", 32}};
-    for (const double roughness : {0.0, 0.1}) {
+    for (const double roughness : {0.0, 0.1, 1.0}) {
         const nlohmann::json glossy = {{"model", "principled"}, {"base_color", {0.5, 0.5, 0.5}}, {"roughness", roughness}};
         const nlohmann::json doc = {
             {"display", {{"width", 64}, {"height", 40}, {"bits", 5}}},
@@ -331,7 +333,7 @@ TEST(SkyOnTheGpu, AGlossyPrincipledFloorHasNoFireflies) {
               {{"shape", "sphere"}, {"center", {0, 0.7, 0}}, {"radius", 0.7}, {"material", glossy}}}}};
         const test::Comparison c =
             test::compare_gpu_with_reference(scene_from_json(doc, "glossy.json", LoadContext::trusted()));
-        std::cout << "sky on a glossy floor, roughness " << roughness << ": " << c.describe() << "\n";
+        std::cout << "sky on a principled floor, roughness " << roughness << ": " << c.describe() << "\n";
         SCOPED_TRACE(c.describe());
         EXPECT_EQ(c.nonfinite_values, 0);
         EXPECT_LE(c.max_level_diff, kMaxLevelDiff);
