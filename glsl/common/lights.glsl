@@ -385,17 +385,23 @@ LightWalk light_walk(int i, vec3 P, vec3 N, vec3 V, vec3 lobes) {
         // sphere or a box: a sample that meets one traces no ray. Every sample walks
         // every object drawn about (its density), and llvmpipe leaves all loops of a
         // pixel after 65 535 iterations: with more objects, or a mesh's rays, a scene of
-        // eight objects lost its light (docs/lights.md, "eighth").
-        bool dense_fits = walk.occluder_exact == walk.occluder_mask &&
+        // eight objects lost its light (docs/lights.md, "eighth"). Not for a sharp lobe,
+        // which draws its own samples below: the two together passed that limit on a
+        // mirror sphere beside a cube, which lost what the cube blocks (0.48 where it is 0,
+        // "fifteenth").
+        bool dense_fits = walk.occluder_exact == walk.occluder_mask && lobe <= kSharpLobeFrom &&
                           bit_count(walk.occluder_mask) <= kMaxDenseOccluders && doubled_sky_side_fits();
         int per = sky_occluder_samples(u_area_samples);
         int dense = dense_fits ? sky_occluder_samples(2 * u_area_samples) : per;
         walk.occluder_per = lobe >= kLobeMinExponent ? dense : per;
-        // With more objects than that, as many samples again from the highlight's lobe,
-        // whose cones then meet it too seldom (docs/lights.md, "thirteenth"; with fewer,
-        // the lobe's samples moved the matrix by a few hundredths of a percent for a
-        // fifth more time: "eleventh").
-        if (lobe >= kLobeMinExponent && bit_count(walk.occluder_mask) > kMaxDenseOccluders)
+        // With more objects than that, or a sharp lobe, as many samples again from the
+        // highlight's lobe, which the cones meet too seldom ("thirteenth"; "fifteenth": a
+        // glossy floor lost two objects' mirror images to the cones' samples, and one that
+        // met the lobe's peak drew a pixel at -5.5). With fewer objects and a broad lobe,
+        // its samples moved the matrix by a few hundredths of a percent for a fifth more
+        // time ("eleventh").
+        bool many = bit_count(walk.occluder_mask) > kMaxDenseOccluders;
+        if (lobe >= kLobeMinExponent && walk.occluder_mask != 0 && (many || lobe > kSharpLobeFrom))
             walk.occluder_lobe = vec4(walk.lobe_axis, lobe);
         walk.n += occluder_techniques(walk.occluder_mask, walk.occluder_lobe) * walk.occluder_per;
         if (walk.occluder_mask != 0)
@@ -414,6 +420,22 @@ float light_distance(int i, vec3 P) {
 }
 #endif
 
+#if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
+// A blocked sample's share of the cosine, what the exact part's factor scales: the
+// pair's share where it holds; else, for a model with a lobe, the cosine's share of
+// the cosine's and the lobe technique's densities, c / (c + pi p_lobe); 1 without a
+// lobe. (A sharp lobe without the pair, all of it scaled by the cosine's factor: a
+// glossy floor under five objects 92.9 % on the same level, a mirror image of a cube
+// at -0.059; with the densities' share 94.2 %, -0.0064: docs/lights.md, "fifteenth".)
+float blocked_cosine_share(LightWalk walk, vec3 L, vec3 N) {
+    if (walk.exact_pair.x > 0.0) return pair_share(walk.exact_pair, L, N, walk.lobe_axis);
+    if (walk.lobe_exponent < kLobeMinExponent) return 1.0;
+    float c = max(dot(N, L), 0.0);
+    float lobe = PI * lobe_technique_pdf(L, walk.lobe_axis, walk.lobe_exponent, LIGHT_SKY);
+    return c + lobe > 0.0 ? c / (c + lobe) : 1.0;
+}
+#endif
+
 LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
 #if defined(HAS_AREA_LIGHTS) && defined(HAS_SHADOWS)
     if (walk.occluder_mask != 0 && walk.k >= walk.occluder_from) {
@@ -429,14 +451,11 @@ LightSample light_walk_sample(int i, LightWalk walk, vec3 P, vec3 N) {
                           ? occluder_blocker(walk.occluder_mask, walk.occluder_exact, P, N, s.L)
                           : kBlockedByNothing;
         // Met by an exact shape: the exact part's factor on the sample's share of the
-        // cosine (all of it without a lobe): a highlight's lobe, which the cones sample
-        // poorly, is not scaled by a factor the cosine alone set (that drew a metal's
-        // top under a wall below zero).
+        // cosine: a highlight's lobe, which the cones sample poorly, is not scaled by a
+        // factor the cosine alone set (that drew a metal's top under a wall below zero).
         float factor = 1.0;
-        if (blocker == kBlockedByExactShape) {
-            float p = walk.exact_pair.x > 0.0 ? pair_share(walk.exact_pair, s.L, N, walk.lobe_axis) : 1.0;
-            factor = 1.0 + (walk.occluder_ratio - 1.0) * p;
-        }
+        if (blocker == kBlockedByExactShape)
+            factor = 1.0 + (walk.occluder_ratio - 1.0) * blocked_cosine_share(walk, s.L, N);
         s.scale = blocker != kBlockedByNothing ? -u_light_scale[i] * (weight * factor) : vec3(0.0);
         return s;
     }
