@@ -122,15 +122,21 @@ TEST_P(AreaLightOnTheGpu, MatchesTheReference) {
     }
 }
 
-// A 64 x 40 scene of `objects` under the shadowed sky of the matrix, seen by `camera`.
-Scene shadowed_sky_scene(const nlohmann::json& camera, const nlohmann::json& objects, const std::string& name) {
-    const nlohmann::json doc = {
-        {"display", {{"width", 64}, {"height", 40}, {"bits", 5}}},
-        {"background", {0.05, 0.05, 0.08}},
-        {"camera", camera},
-        {"lights", {{{"type", "sky"}, {"intensity", 0.8}, {"color", {0.7, 0.8, 1.0}}, {"shadow", true}}}},
-        {"objects", objects}};
+// A 64 x 40 scene of `objects` under `sky`, seen by `camera`.
+Scene sky_scene(const nlohmann::json& camera, const nlohmann::json& objects, const nlohmann::json& sky,
+                const std::string& name) {
+    const nlohmann::json doc = {{"display", {{"width", 64}, {"height", 40}, {"bits", 5}}},
+                                {"background", {0.05, 0.05, 0.08}},
+                                {"camera", camera},
+                                {"lights", {sky}},
+                                {"objects", objects}};
     return scene_from_json(doc, name, LoadContext::trusted());
+}
+
+// The same under the shadowed sky of the matrix.
+Scene shadowed_sky_scene(const nlohmann::json& camera, const nlohmann::json& objects, const std::string& name) {
+    const nlohmann::json sky = {{"type", "sky"}, {"intensity", 0.8}, {"color", {0.7, 0.8, 1.0}}, {"shadow", true}};
+    return sky_scene(camera, objects, sky, name);
 }
 
 // A floor under a metal cylinder (capped: its mesh a prism, whose silhouette has a closed
@@ -348,16 +354,11 @@ TEST(SkyOnTheGpu, APrincipledFloorOfAnyRoughnessConverges) {
                                    {"up", {0, 1, 0}}, {"fov_y_deg", 32}};
     for (const double roughness : {0.0, 0.1, 1.0}) {
         const nlohmann::json glossy = {{"model", "principled"}, {"base_color", {0.5, 0.5, 0.5}}, {"roughness", roughness}};
-        const nlohmann::json doc = {
-            {"display", {{"width", 64}, {"height", 40}, {"bits", 5}}},
-            {"background", {0.05, 0.05, 0.08}},
-            {"camera", camera},
-            {"lights", {{{"type", "sky"}, {"intensity", 1.0}}}},
-            {"objects",
-             {{{"shape", "plane"}, {"center", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"size", 14}, {"material", glossy}},
-              {{"shape", "sphere"}, {"center", {0, 0.7, 0}}, {"radius", 0.7}, {"material", glossy}}}}};
-        const test::Comparison c =
-            test::compare_gpu_with_reference(scene_from_json(doc, "glossy.json", LoadContext::trusted()));
+        const nlohmann::json objects = {
+            {{"shape", "plane"}, {"center", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"size", 14}, {"material", glossy}},
+            {{"shape", "sphere"}, {"center", {0, 0.7, 0}}, {"radius", 0.7}, {"material", glossy}}};
+        const nlohmann::json sky = {{"type", "sky"}, {"intensity", 1.0}};
+        const test::Comparison c = test::compare_gpu_with_reference(sky_scene(camera, objects, sky, "glossy.json"));
         std::cout << "sky on a principled floor, roughness " << roughness << ": " << c.describe() << "\n";
         SCOPED_TRACE(c.describe());
         EXPECT_EQ(c.nonfinite_values, 0);
