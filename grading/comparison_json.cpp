@@ -44,11 +44,15 @@ nlohmann::json to_json(const Comparison& c) {
 }
 
 std::string summary_line(const Comparison& c) {
-    char text[200];
-    std::snprintf(text, sizeof text, "%s: %.2f %% of pixels on the same level, %llu pixels off (max %d levels)",
-                  to_string(c.verdict), percent_to_two_places(c.same_pixels, c.pixels),
-                  (unsigned long long)(c.pixels - c.same_pixels),
-                  c.max_levels);
+    char text[240];
+    int n = std::snprintf(text, sizeof text, "%s: %.2f %% of pixels on the same level, %llu on another (max %d level%s)",
+                          to_string(c.verdict), percent_to_two_places(c.same_pixels, c.pixels),
+                          (unsigned long long)(c.pixels - c.same_pixels), c.max_levels, c.max_levels == 1 ? "" : "s");
+    // With --fail-levels N > 0 a pixel fails only beyond N levels: say how many do, so that
+    // the line's count is never read as the failing one.
+    if (c.thresholds.fail.levels > 0 && n > 0 && n < int(sizeof text))
+        std::snprintf(text + n, sizeof text - n, ", %llu more than %d level%s off", (unsigned long long)c.over_fail,
+                      c.thresholds.fail.levels, c.thresholds.fail.levels == 1 ? "" : "s");
     return text;
 }
 

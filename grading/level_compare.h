@@ -84,8 +84,8 @@ struct Comparison {
 };
 
 // 100 part / whole for a line that prints it to two decimals: never "100.00" unless part is
-// whole, nor "0.00" unless it is 0 ("fail: 100.00 % of pixels on the same level, 2 pixels
-// off" read as a contradiction). 100 when whole is 0.
+// whole, nor "0.00" unless it is 0 ("fail: 100.00 % of pixels on the same level, 2 on
+// another" read as a contradiction). 100 when whole is 0.
 double percent_to_two_places(std::uint64_t part, std::uint64_t whole);
 
 // Thrown for images that cannot be compared; what() is one line naming both

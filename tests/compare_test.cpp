@@ -365,6 +365,26 @@ TEST(CompareFolders, EveryPairThatDoesNotPassThenOneSummaryLine) {
               "3 PNGs in both folders: 1 pass, 0 warn, 1 fail, 1 could not be compared; 1 only in A, 1 only in B");
 }
 
+// The summary line's "on another" counts every pixel not on the same level; with
+// --fail-levels N > 0 it also says how many are beyond N, the ones that fail.
+TEST(CompareCommand, TheSummaryLineSaysWhichPixelsFail) {
+    Files f;  // one pixel of 128 two levels off
+    const auto last_line = [](const std::string& out) {
+        const std::size_t end = out.find_last_not_of('\n');
+        return out.substr(out.rfind('\n', end) + 1, end - out.rfind('\n', end));
+    };
+    EXPECT_EQ(last_line(test::run_m3055({"compare", f.png_a, f.png_b}).out),
+              "fail: 99.22 % of pixels on the same level, 1 on another (max 2 levels)");
+    EXPECT_EQ(last_line(test::run_m3055({"compare", f.png_a, f.png_b, "--fail-levels", "1"}).out),
+              "fail: 99.22 % of pixels on the same level, 1 on another (max 2 levels), 1 more than 1 level off");
+    EXPECT_EQ(last_line(test::run_m3055({"compare", f.png_a, f.png_b, "--fail-levels", "2"}).out),
+              "pass: 99.22 % of pixels on the same level, 1 on another (max 2 levels), 0 more than 2 levels off");
+    // "Over 99.5 % on the same level, none more than one off" in one command.
+    const auto target = test::run_m3055(
+        {"compare", f.png_a, f.png_b, "--fail-levels", "1", "--warn-levels", "0", "--warn-percent", "0.5"});
+    EXPECT_EQ(target.exit_code, 1);
+}
+
 TEST(CompareFolders, ExitStatusFollowsThePairsAndTheThresholds) {
     Folders f(false);
     EXPECT_EQ(test::run_m3055({"compare", f.a, f.b}).exit_code, 1);
