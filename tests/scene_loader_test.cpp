@@ -598,7 +598,11 @@ Scene with_overrides(const std::vector<std::string>& texts) {
     std::vector<Override> overrides;
     for (const auto& text : texts) overrides.push_back(parse_override(text));
     apply_overrides(doc, overrides, "scene.json");
-    return scene_from_json(doc, "scene.json", LoadContext::trusted());
+    try {  // as load_scene_file does
+        return scene_from_json(doc, "scene.json", LoadContext::trusted());
+    } catch (const SceneError& error) {
+        throw blame_override(error, overrides, "scene.json");
+    }
 }
 
 std::string override_error(const std::vector<std::string>& texts) {
@@ -634,12 +638,35 @@ TEST(SceneLoader, OverridesApplyInOrderWithTheirValuesParsedAsJson) {
     EXPECT_EQ(scene.objects[0].radius, 3.0);
 }
 
+TEST(SceneLoader, AKeyATypoAwayFromAnAllowedOneIsSuggested) {
+    EXPECT_EQ(error_after([](json& d) { d["lights"][0]["intensty"] = 1; }),
+              "scene.json: lights[0].intensty: unknown key (did you mean \"intensity\"?)");
+    EXPECT_EQ(error_after([](json& d) { d["camera"]["psoition"] = {0, 0, 1}; }),
+              "scene.json: camera.psoition: unknown key (did you mean \"position\"?)");
+    // Too far from any key, or as near to two: no guess.
+    EXPECT_EQ(error_after([](json& d) { d["lamps"] = 1; }), "scene.json: lamps: unknown key");
+    EXPECT_EQ(error_after([](json& d) { d["objects"][0]["material"]["foo"] = 1; }),
+              "scene.json: objects[0].material.foo: unknown key");
+}
+
 TEST(SceneLoader, OverrideErrors) {
+    // A value the loader refuses is blamed on the --set that gave it, in the file's message.
     EXPECT_EQ(override_error({"objects[0].material.m=-3"}),
-              "scene.json: objects[0].material.m: must be in [0, 10000], got -3");
-    EXPECT_EQ(override_error({"objects[0].material.m=lots"}),
-              "scene.json: objects[0].material.m: must be a number, got \"lots\"");
-    EXPECT_EQ(override_error({"objects[0].material.foo=1"}), "scene.json: objects[0].material.foo: unknown key");
+              "scene.json: --set objects[0].material.m: objects[0].material.m: must be in [0, 10000], got -3");
+    EXPECT_EQ(override_error({"objects[0].material.m=lots", "camera.fov_y_deg=40"}),
+              "scene.json: --set objects[0].material.m: objects[0].material.m: must be a number, got \"lots\"");
+    EXPECT_EQ(override_error({"objects[0].material.foo=1"}),
+              "scene.json: --set objects[0].material.foo: objects[0].material.foo: unknown key");
+    // A field inside a value set whole; and the last of two that set the same value.
+    EXPECT_EQ(override_error({"lights[0]={\"type\": \"sky\", \"intensity\": -1}"}),
+              "scene.json: --set lights[0]: lights[0].intensity: must be in [0, 10], got -1");
+    EXPECT_EQ(override_error({"objects[0].material.m=3", "objects[0].material.m=-3"}),
+              "scene.json: --set objects[0].material.m: objects[0].material.m: must be in [0, 10000], got -3");
+    // A problem in a field no override set is the file's alone ("m" set, "model" wrong).
+    const std::vector<Override> m_set = {{"objects[0].material.m", "3"}};
+    for (const std::string message : {"scene.json: objects[0].material.model: unknown model \"x\"",
+                                      "scene.json: camera.fov_y_deg: must be a number", "other.json: objects[0].material.m: x"})
+        EXPECT_EQ(blame_override(SceneError(message), m_set, "scene.json").what(), message);
     EXPECT_EQ(override_error({"a.b.c=1"}), "scene.json: --set a.b.c: no such key \"a\"");
     EXPECT_EQ(override_error({"camera.b.c=1"}), "scene.json: --set camera.b.c: no such key \"b\"");
     EXPECT_EQ(override_error({"objects[3].radius=1"}),

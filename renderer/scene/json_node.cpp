@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <vector>
 
 namespace m3055::scene_json {
 
@@ -103,13 +104,51 @@ Node Node::required(const std::string& key) const {
     return child(key);
 }
 
+namespace {
+
+// Edits (insert, delete, substitute, swap two neighbours) that turn a into b: the
+// optimal string alignment distance, for "did you mean".
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// "unknown key", and the one allowed key a typo away from it when there is one: one edit
+// for keys of up to 4 characters, two for longer ones ("intensty" -> "intensity").
+std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
+    constexpr std::size_t kLongestKeyCompared = 64;  // a long key is no typo, and costs length² to compare
+    if (key.size() > kLongestKeyCompared) return "unknown key";
+    const std::size_t most = key.size() <= 4 ? 1 : 2;
+    std::string best;
+    std::size_t best_distance = most + 1, ties = 0;
+    for (const std::string& candidate : allowed) {
+        const std::size_t distance = edit_distance(key, candidate);
+        if (distance < best_distance) {
+            best = candidate, best_distance = distance, ties = 1;
+        } else if (distance == best_distance) {
+            ++ties;
+        }
+    }
+    return best_distance <= most && ties == 1 ? "unknown key (did you mean \"" + best + "\"?)" : "unknown key";
+}
+
+}  // namespace
+
 void Node::check_keys(const std::vector<std::string>& allowed,
                       const std::function<std::string(const std::string&)>& misplaced) const {
     for (const auto& item : value().items()) {
         const std::string& key = item.key();
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
         std::string problem = misplaced ? misplaced(key) : std::string();
-        child(key).fail(problem.empty() ? "unknown key" : problem);
+        child(key).fail(problem.empty() ? unknown_key_problem(key, allowed) : problem);
     }
 }
 

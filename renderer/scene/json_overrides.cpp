@@ -101,7 +101,34 @@ json parse_value(const Override& item, const std::string& source) {
     }
 }
 
+// The path as the loader's messages write it ("lights.0.m" -> "lights[0].m"); empty when
+// malformed (apply_overrides has said so).
+std::string message_path(const std::string& path) {
+    std::string joined;
+    try {
+        for (const Step& step : parse_path(path, ""))
+            joined = step.is_index ? scene_json::join_index(joined, step.index) : scene_json::join_key(joined, step.key);
+    } catch (const SceneError&) {
+        return "";
+    }
+    return joined;
+}
+
 }  // namespace
+
+SceneError blame_override(const SceneError& error, const std::vector<Override>& overrides, const std::string& source) {
+    const std::string message = error.what(), prefix = source + ": ";
+    if (message.rfind(prefix, 0) != 0) return error;
+    // The last override wins where two set the same value, so it is the one to blame.
+    for (auto item = overrides.rbegin(); item != overrides.rend(); ++item) {
+        const std::string path = message_path(item->path);
+        if (path.empty() || message.compare(prefix.size(), path.size(), path) != 0) continue;
+        const char next = message.size() > prefix.size() + path.size() ? message[prefix.size() + path.size()] : ':';
+        if (next == ':' || next == '.' || next == '[')  // the value set, or a field inside it
+            return SceneError(prefix + "--set " + one_line(item->path) + ": " + message.substr(prefix.size()));
+    }
+    return error;
+}
 
 Override parse_override(const std::string& text) {
     const std::size_t equals = text.find('=');

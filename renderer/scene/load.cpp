@@ -152,8 +152,13 @@ Scene load_scene_file(const std::string& path, const LoadContext& context, const
         throw SceneError(error.what());
     }
     apply_overrides(doc, overrides, source);
-    // The files the scene names are relative to its folder.
-    return read_scene(doc, source, {context, std::filesystem::path(path).parent_path().string()});
+    try {
+        // The files the scene names are relative to its folder.
+        return read_scene(doc, source, {context, std::filesystem::path(path).parent_path().string()});
+    } catch (const SceneError& error) {
+        if (overrides.empty()) throw;
+        throw blame_override(error, overrides, source);
+    }
 }
 
 }  // namespace m3055

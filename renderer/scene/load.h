@@ -35,6 +35,11 @@ Override parse_override(const std::string& text);
 void apply_overrides(nlohmann::json& doc, const std::vector<Override>& overrides,
                      const std::string& source);
 
+// The loader's `error` about a document with `overrides` applied, blamed on the
+// override that set the field it names ("F: --set lights[0].intensity: lights[0].intensity:
+// must be a number, got \"abc\""); `error` itself when no override set that field.
+SceneError blame_override(const SceneError& error, const std::vector<Override>& overrides, const std::string& source);
+
 // Validates a JSON document and builds the Scene. `source` is the file name used
 // as the prefix of error messages; the files the scene names are relative to
 // `context.folder` and read as `context` allows (scene/load_context.h).
