@@ -151,17 +151,28 @@ void diff_colour(int off, std::uint8_t rgb[3]) {
 
 Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     check_comparable(a, b);
+    // An image narrower than the legend is enlarged by a whole factor (each pixel a block,
+    // up to 8 x 8), so that a 64 x 40 difference is not a speck beside its legend.
+    constexpr int kMostEnlarged = 8;
+    const int scale = a.width > 0 ? std::clamp(legend_width() / a.width, 1, kMostEnlarged) : 1;
     Rgb8Image image;
-    image.width = std::max(a.width, legend_width());
-    image.height = a.height + kLegendHeight;
+    image.width = std::max(a.width * scale, legend_width());
+    image.height = a.height * scale + kLegendHeight;
     image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 3, 0);
     const Dimmer dim{a.bits, a.bits >= 1 && a.bits <= kMaxTableBits ? dimmed_table(a.bits).data() : nullptr};
     const std::size_t in_row = std::size_t(a.width) * 3, out_row = std::size_t(image.width) * 3;
-    for (int y = 0; y < a.height; ++y)
+    std::vector<std::uint8_t> row(in_row);
+    for (int y = 0; y < a.height; ++y) {
         difference_row(a.levels.data() + std::size_t(y) * in_row, b.levels.data() + std::size_t(y) * in_row,
-                       image.pixels.data() + std::size_t(y) * out_row, a.width, dim);
+                       row.data(), a.width, dim);
+        std::uint8_t* out = image.pixels.data() + std::size_t(y) * std::size_t(scale) * out_row;
+        for (int x = 0; x < a.width; ++x)
+            for (int k = 0; k < scale; ++k) std::copy_n(&row[std::size_t(x) * 3], 3, out + (std::size_t(x) * scale + k) * 3);
+        for (int k = 1; k < scale; ++k) std::copy_n(out, out_row, out + std::size_t(k) * out_row);
+    }
     const Rgb8Image& band = legend_band(image.width);
-    std::copy(band.pixels.begin(), band.pixels.end(), image.pixels.begin() + std::ptrdiff_t(a.height) * std::ptrdiff_t(out_row));
+    std::copy(band.pixels.begin(), band.pixels.end(),
+              image.pixels.begin() + std::ptrdiff_t(a.height) * scale * std::ptrdiff_t(out_row));
     return image;
 }
 

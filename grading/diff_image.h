@@ -15,8 +15,9 @@ inline constexpr int kDiffClasses = 6;
 // The colour of a pixel `off` levels off (off >= 1); 0 gives the dimmed A.
 void diff_colour(int off, std::uint8_t rgb[3]);
 
-// The picture (A's size) with the legend band below it; the image is widened
-// with black to the legend's width when narrower. Throws CompareError when
+// The picture with the legend band below it: A's size, or a whole multiple of it (at
+// most 8) when A is narrower than the legend, and widened with black to the legend's
+// width when still narrower. Throws CompareError when
 // the sizes differ.
 Rgb8Image difference_image(const LevelImage& a, const LevelImage& b);
 

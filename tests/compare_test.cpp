@@ -174,10 +174,11 @@ TEST(LevelCompare, PfmLinearStatsAndRowOrder) {
 }
 
 TEST(DiffImage, ColoursByLevelsOffWithALegendBand) {
-    LevelImage b = flat(200, 10, 0);
+    LevelImage b = flat(512, 10, 0);  // wider than the legend: not enlarged
     b.levels[0] = 1;               // pixel (0,0) one level off
     b.levels[3 * 1 + 0] = 9;       // pixel (1,0) nine levels off
-    const Rgb8Image image = difference_image(flat(200, 10, 0), b);
+    const Rgb8Image image = difference_image(flat(512, 10, 0), b);
+    EXPECT_EQ(image.width, 512);
     EXPECT_EQ(image.height, 10 + kLegendHeight);
     std::uint8_t one[3], nine[3];
     diff_colour(1, one);
@@ -187,6 +188,24 @@ TEST(DiffImage, ColoursByLevelsOffWithALegendBand) {
     // Unchanged pixels are grey (the dimmed A), never a class colour.
     EXPECT_EQ(image.pixels[6], image.pixels[7]);
     EXPECT_EQ(image.pixels[7], image.pixels[8]);
+}
+
+// A 16 x 8 image is drawn a whole number of times larger, each pixel a square block.
+TEST(DiffImage, AnImageNarrowerThanTheLegendIsEnlargedByAWholeFactor) {
+    LevelImage b = flat(16, 8, 0);
+    b.levels[3 * 1] = 1;  // pixel (1,0) one level off
+    const Rgb8Image image = difference_image(flat(16, 8, 0), b);
+    const int scale = (image.height - kLegendHeight) / 8;
+    ASSERT_GT(scale, 1);
+    EXPECT_EQ((image.height - kLegendHeight) % 8, 0);
+    EXPECT_GE(image.width, 16 * scale);
+    std::uint8_t one[3];
+    diff_colour(1, one);
+    const auto at = [&](int x, int y) { return image.pixels.begin() + (std::ptrdiff_t(y) * image.width + x) * 3; };
+    for (int y = 0; y < scale; ++y)
+        for (int x = 0; x < 3 * scale; ++x)
+            EXPECT_EQ(std::equal(one, one + 3, at(x, y)), x >= scale && x < 2 * scale) << x << ", " << y;
+    EXPECT_FALSE(std::equal(one, one + 3, at(scale, scale)));  // the next row of pixels
 }
 
 // An unchanged pixel is A's luma dimmed, 20 + 60 * luma (from a table at low depths): every colour at 3 bits.
@@ -254,7 +273,7 @@ TEST(CompareCommand, JsonIsOneObjectAndDiffIsWritten) {
     EXPECT_EQ(result["max_levels"], 2);
     EXPECT_EQ(result["histogram"]["r"][2], 1);
     const Rgb8Image image = read_png(diff);
-    EXPECT_EQ(image.height, 8 + kLegendHeight);
+    EXPECT_EQ(image.height, 8 * 8 + kLegendHeight);  // 16 x 8, enlarged 8 times (narrower than the legend)
     // --diff may not overwrite an input.
     EXPECT_EQ(test::run_m3055({"compare", f.png_a, f.png_b, "--diff", f.png_a}).exit_code, 2);
 }
@@ -274,7 +293,7 @@ TEST(CompareCommand, MissingLegendFontIsOneLineAndTheDiffIsStillWritten) {
               std::string::npos)
         << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
-    EXPECT_EQ(read_png(diff).height, 8 + kLegendHeight);
+    EXPECT_EQ(read_png(diff).height, 8 * 8 + kLegendHeight);
 }
 
 // With the font, the legend's text is anti-aliased: grey levels between the
