@@ -101,6 +101,10 @@ Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& refere
     return compare_raw(raw, ref::render_reference(reference_scene), scene.display);
 }
 
+Comparison compare_gpu_with(const Scene& scene, const ref::ReferenceImage& reference, ShaderMode mode) {
+    return compare_raw(render_raw(scene, mode), reference, scene.display);
+}
+
 std::vector<Comparison> compare_gpu_modes_with_reference(const Scene& scene, const std::vector<ShaderMode>& modes) {
     const ref::ReferenceImage reference = ref::render_reference(scene);
     std::vector<Comparison> results;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "passes/shader_plan.h"
+#include "reference/reference.h"
 #include "scene/scene.h"
 
 #include <string>
@@ -33,6 +34,10 @@ Comparison compare_gpu_with_reference(const Scene& scene, ShaderMode mode = Shad
 // (same geometry and lights; e.g. a .brdf model against the built-in it copies).
 Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene,
                                          ShaderMode mode = ShaderMode::specialized);
+// `scene` on the GPU against its reference rendered before (ref::render_reference(scene)):
+// for a test that renders one scene several ways (the reference is most of the time).
+Comparison compare_gpu_with(const Scene& scene, const ref::ReferenceImage& reference,
+                            ShaderMode mode = ShaderMode::specialized);
 // `scene` rendered in each of `modes` against one reference (the reference is
 // most of a comparison's time: a spectral one sums every wavelength per pixel).
 std::vector<Comparison> compare_gpu_modes_with_reference(const Scene& scene, const std::vector<ShaderMode>& modes);
