@@ -284,6 +284,15 @@ AreaSample area_sample_towards(int i, int type, vec3 P, vec3 N, vec3 w) {
     return s;
 }
 
+// The unit direction at cos c and sin s from the unit D, turned 2 pi u about it (in
+// complete_frame's frame): where the lobe techniques below put their samples.
+vec3 direction_about(vec3 D, float c, float s, float u) {
+    float phi = 2.0 * PI * u;
+    vec3 T, B;
+    complete_frame(D, T, B);
+    return s * cos(phi) * T + s * sin(phi) * B + c * D;
+}
+
 // A Phong lobe ((D . w)+)^e about the unit D, as a density over directions
 // ((e + 1) / 2 pi (D . w)^e) and a sample of it from u (Phong's inversion:
 // cos = u^(1 / (e + 1))). The models' highlights resemble such lobes about
@@ -298,10 +307,7 @@ float phong_lobe_pdf(vec3 w, vec3 D, float e) {
 vec3 phong_lobe_direction(vec2 u, vec3 D, float e) {
     float c = pow(max(u.x, 1e-30), 1.0 / (e + 1.0));
     float s = sqrt(max(1.0 - c * c, 0.0));
-    float phi = 2.0 * PI * u.y;
-    vec3 T, B;
-    complete_frame(D, T, B);
-    return normalize(s * cos(phi) * T + s * sin(phi) * B + c * D);
+    return normalize(direction_about(D, c, s, u.y));
 }
 
 // The walk's lobe technique, about D with the model's Phong exponent e
@@ -333,10 +339,7 @@ vec3 sharp_lobe_direction(vec2 u, vec3 D, float e) {
     float y = log(max(u.x, 1e-30)) / (e + 1.0);  // log cos
     float x = y > -0.01 ? -y * (1.0 + y * (0.5 + y / 6.0)) : 1.0 - exp(y);  // 1 - cos
     float s = sqrt(max(x * (2.0 - x), 0.0));
-    float phi = 2.0 * PI * u.y;
-    vec3 T, B;
-    complete_frame(D, T, B);
-    return normalize(s * cos(phi) * T + s * sin(phi) * B + (1.0 - x) * D);
+    return normalize(direction_about(D, 1.0 - x, s, u.y));
 }
 
 // A GGX lobe about D (Walter et al. 2007), of the roughness whose Phong exponent is e
@@ -359,10 +362,7 @@ float ggx_lobe_pdf(vec3 w, vec3 D, float e) {
 vec3 ggx_lobe_direction(vec2 u, vec3 D, float e) {
     float tan2 = 0.5 / e * u.x / max(1.0 - u.x, 1e-30);
     float c = inversesqrt(1.0 + tan2), s = sqrt(tan2) * c;
-    float phi = 2.0 * PI * u.y;
-    vec3 T, B;
-    complete_frame(D, T, B);
-    vec3 h = s * cos(phi) * T + s * sin(phi) * B + c * D;
+    vec3 h = direction_about(D, c, s, u.y);
     return normalize(2.0 * dot(D, h) * h - D);
 }
 
