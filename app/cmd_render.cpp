@@ -4,6 +4,7 @@
 #include "headless_context.h"
 #include "interrupt.h"
 #include "progress.h"
+#include "slow_note.h"
 
 #include "analysis/nonfinite.h"
 #include "analysis/reference_images.h"
@@ -106,6 +107,10 @@ void add_render_command(CLI::App& app) {
             // The raw image is read back for the count only where a .brdf material can make NaN (as batch does).
             NonFinite* counted = may_render_nonfinite(scene) ? &nonfinite : nullptr;
             try {
+                const SlowNote note(std::chrono::seconds(3), "drawing",
+                                    "llvmpipe takes up to minutes for area lights and shadows, and a "
+                                    "minute for a new scene's shaders (compiled once, then cached)",
+                                    isatty(STDERR_FILENO) == 1);
                 capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, counted);
             } catch (const RenderTimeout&) {
                 throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +

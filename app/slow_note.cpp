@@ -1,0 +1,34 @@
+#include "slow_note.h"
+
+#include "progress.h"
+
+namespace m3055 {
+
+SlowNote::SlowNote(std::chrono::milliseconds after, std::string step, const std::string& why, bool interactive,
+                   std::FILE* stream)
+    : step_(std::move(step)), stream_(stream) {
+    if (!interactive) return;
+    timer_ = std::thread([this, after, what = step_ + ": " + why] {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (ended_.wait_for(lock, after, [this] { return done_; })) return;
+        std::fprintf(stream_, "%s...\n", error_line(what).c_str());
+        std::fflush(stream_);
+        printed_ = true;
+    });
+}
+
+SlowNote::~SlowNote() {
+    if (!timer_.joinable()) return;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        done_ = true;
+    }
+    ended_.notify_one();
+    timer_.join();
+    if (!printed_) return;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stream_, "%s took %.0f s\n", error_line(step_).c_str(), seconds);
+    std::fflush(stream_);
+}
+
+}  // namespace m3055
