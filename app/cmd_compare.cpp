@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "headless_context.h"
 #include "progress.h"
+#include "slow_note.h"
 
 #include "capture/capture.h"
 #include "gl/program.h"
@@ -15,6 +16,7 @@
 #include "grading/diff_image.h"
 #include "grading/folder_compare.h"
 #include "grading/image_input.h"
+#include "grading/level_compare.h"
 #include "io/message_text.h"
 #include "io/run_files.h"
 #include "scene/load.h"
@@ -24,6 +26,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+
+#include <unistd.h>
 
 namespace m3055 {
 
@@ -38,7 +42,8 @@ struct CompareOptions {
 };
 
 // Loads both inputs; a scene is rendered, and a PNG or PFM is read at the
-// scene's bits when the other input is a scene, else at --bits.
+// scene's bits when the other input is a scene, else at --bits. The sizes are
+// checked before a scene is rendered (a shadowed sky takes minutes).
 std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOptions& options) {
     std::optional<Scene> scenes[2];
     const std::string paths[2] = {options.a, options.b};
@@ -48,15 +53,22 @@ std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOpt
             scenes[i] = load_scene_file(paths[i], LoadContext::trusted());
             bits = scenes[i]->display.bits;
         }
-    std::unique_ptr<Capture> capture;
     grading::LevelImage images[2];
+    for (int i = 0; i < 2; ++i)
+        if (!scenes[i]) images[i] = grading::read_level_image(paths[i], bits);
+    const auto size = [&](int i) {
+        return scenes[i] ? std::pair{scenes[i]->display.width, scenes[i]->display.height}
+                         : std::pair{images[i].width, images[i].height};
+    };
+    grading::check_same_size(size(0).first, size(0).second, size(1).first, size(1).second);
+    std::unique_ptr<Capture> capture;
     for (int i = 0; i < 2; ++i) {
-        if (scenes[i]) {
-            if (!capture) capture = std::make_unique<Capture>(make_headless_context(parse_backend(options.backend)));
-            images[i] = grading::render_levels(capture->renderer(), *scenes[i]);
-        } else {
-            images[i] = grading::read_level_image(paths[i], bits);
-        }
+        if (!scenes[i]) continue;
+        if (!capture) capture = std::make_unique<Capture>(make_headless_context(parse_backend(options.backend)));
+        SlowNote note(std::chrono::seconds(3), "drawing " + text::quote_name(paths[i]), kSlowDrawingWhy,
+                      isatty(STDERR_FILENO) == 1);
+        images[i] = grading::render_levels(capture->renderer(), *scenes[i]);
+        note.finished();
     }
     return {std::move(images[0]), std::move(images[1])};
 }
@@ -72,13 +84,14 @@ void print_text(const grading::Comparison& c) {
             if (c.histogram[ch][k]) std::printf(" %zu:%llu", k, (unsigned long long)c.histogram[ch][k]);
         std::printf("\n");
     }
-    std::printf("largest: %d levels\n", c.max_levels);
+    std::printf("largest: %d level%s\n", c.max_levels, c.max_levels == 1 ? "" : "s");
     std::printf("over --fail-levels %d: %llu pixels (%.4f %%, allowed %s %%)\n", c.thresholds.fail.levels,
                 (unsigned long long)c.over_fail, 100.0 * double(c.over_fail) / double(c.pixels ? c.pixels : 1),
                 text::format_number(c.thresholds.fail.percent).c_str());
     if (c.thresholds.warn)
-        std::printf("over --warn-levels %d: %llu pixels (allowed %s %%)\n", c.thresholds.warn->levels,
-                    (unsigned long long)c.over_warn, text::format_number(c.thresholds.warn->percent).c_str());
+        std::printf("over --warn-levels %d: %llu pixels (%.4f %%, allowed %s %%)\n", c.thresholds.warn->levels,
+                    (unsigned long long)c.over_warn, 100.0 * double(c.over_warn) / double(c.pixels ? c.pixels : 1),
+                    text::format_number(c.thresholds.warn->percent).c_str());
     if (c.linear)
         std::printf("linear: max %.6g, mean %.6g, RMS %.6g, PSNR %.2f dB\n", c.linear->max_abs, c.linear->mean_abs,
                     c.linear->rms, c.linear->psnr_db);

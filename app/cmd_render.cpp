@@ -66,9 +66,15 @@ void add_render_command(CLI::App& app) {
             return error_line("interrupted by " + signal_name(signal) + ": " +
                               (written ? files + " already written" : "nothing written"));
         });
+        // A --set that is not PATH=VALUE is a mistake on the command line (exit 2).
+        std::vector<Override> overrides;
         try {
-            std::vector<Override> overrides;
             for (const auto& text : options->sets) overrides.push_back(parse_override(text));
+        } catch (const SceneError& error) {
+            std::cerr << error_text(error) << "\n";
+            throw CLI::RuntimeError(kExitUsage);
+        }
+        try {
             // Before anything is read or written: no output may be the scene or the other output.
             io::RunFiles files;
             files.add_input(0, "--scene", options->scene);
@@ -107,11 +113,9 @@ void add_render_command(CLI::App& app) {
             // The raw image is read back for the count only where a .brdf material can make NaN (as batch does).
             NonFinite* counted = may_render_nonfinite(scene) ? &nonfinite : nullptr;
             try {
-                const SlowNote note(std::chrono::seconds(3), "drawing",
-                                    "llvmpipe takes up to minutes for area lights and shadows, and a "
-                                    "minute for a new scene's shaders (compiled once, then cached)",
-                                    isatty(STDERR_FILENO) == 1);
+                SlowNote note(std::chrono::seconds(3), "drawing", kSlowDrawingWhy, isatty(STDERR_FILENO) == 1);
                 capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, counted);
+                note.finished();
             } catch (const RenderTimeout&) {
                 throw std::runtime_error(over_budget_message(options->scene, options->scene_timeout) +
                                          "; nothing written");

@@ -27,7 +27,7 @@ SlowNote::~SlowNote() {
     timer_.join();
     if (!printed_) return;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    std::fprintf(stream_, "%s took %.0f s\n", error_line(step_).c_str(), seconds);
+    std::fprintf(stream_, "%s %s %.0f s\n", error_line(step_).c_str(), finished_ ? "took" : "stopped after", seconds);
     std::fflush(stream_);
 }
 

@@ -224,6 +224,22 @@ TEST(ReferenceOption, TakesNeitherABackendNorATimeout) {
     EXPECT_TRUE(files_in(out.path()).empty());
 }
 
+// A --set that is not PATH=VALUE is a mistake on the command line (exit 2, as every usage
+// error); a value the scene refuses is the scene's (exit 1), blamed on the --set.
+TEST(RenderCommand, AMalformedSetIsAUsageErrorAndABadValueTheScenes) {
+    TempDir out;
+    const RunResult malformed = run_m3055({"render", "--scene", spec_example(), "--out", out.file("o.png"), "--set", "bogus"});
+    EXPECT_EQ(malformed.exit_code, 2) << describe(malformed);
+    EXPECT_EQ(malformed.err, "m3055: --set bogus: expected path=value\n");
+    const RunResult refused =
+        run_m3055({"render", "--scene", spec_example(), "--out", out.file("o.png"), "--set", "objects[0].material.m=-3"});
+    EXPECT_EQ(refused.exit_code, 1) << describe(refused);
+    EXPECT_NE(refused.err.find(": --set objects[0].material.m: objects[0].material.m: must be in [0, 10000], got -3"),
+              std::string::npos)
+        << refused.err;
+    EXPECT_TRUE(files_in(out.path()).empty());
+}
+
 // A .brdf file's model has no C++ twin: the reference is refused in one line, nothing written.
 TEST(ReferenceOption, ABrdfMaterialIsRefusedAndNothingWritten) {
     TempDir out;

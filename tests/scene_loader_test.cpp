@@ -662,6 +662,9 @@ TEST(SceneLoader, OverrideErrors) {
               "scene.json: --set lights[0]: lights[0].intensity: must be in [0, 10], got -1");
     EXPECT_EQ(override_error({"objects[0].material.m=3", "objects[0].material.m=-3"}),
               "scene.json: --set objects[0].material.m: objects[0].material.m: must be in [0, 10000], got -3");
+    // A field of the file that an override of its object's kind made wrong: noted.
+    EXPECT_EQ(override_error({"lights[0].type=sky"}),
+              "scene.json: lights[0].direction: only for directional lights (with --set lights[0].type)");
     // A problem in a field no override set is the file's alone ("m" set, "model" wrong).
     const std::vector<Override> m_set = {{"objects[0].material.m", "3"}};
     for (const std::string message : {"scene.json: objects[0].material.model: unknown model \"x\"",

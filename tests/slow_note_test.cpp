@@ -34,13 +34,23 @@ private:
 TEST(SlowNote, AStepThatOutlastsItIsNamedThenTimed) {
     Stream stream;
     {
-        const SlowNote note(10ms, "drawing", "why it takes long", true, stream.file());
+        SlowNote note(10ms, "drawing", "why it takes long", true, stream.file());
         std::this_thread::sleep_for(300ms);
+        note.finished();
     }
     const std::string text = stream.text();
     const std::string first = "m3055: drawing: why it takes long...\nm3055: drawing took ";
     EXPECT_EQ(text.substr(0, first.size()), first) << text;
     EXPECT_EQ(text.substr(text.size() - 3), " s\n") << text;  // whole seconds: 0 unless the machine is loaded
+}
+
+TEST(SlowNote, AStepThatFailsSaysItStopped) {
+    Stream stream;
+    {
+        const SlowNote note(10ms, "drawing", "why", true, stream.file());
+        std::this_thread::sleep_for(300ms);
+    }
+    EXPECT_NE(stream.text().find("m3055: drawing stopped after "), std::string::npos) << stream.text();
 }
 
 TEST(SlowNote, AStepThatEndsFirstPrintsNothing) {

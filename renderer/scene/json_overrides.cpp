@@ -127,6 +127,18 @@ SceneError blame_override(const SceneError& error, const std::vector<Override>& 
         if (next == ':' || next == '.' || next == '[')  // the value set, or a field inside it
             return SceneError(prefix + "--set " + one_line(item->path) + ": " + message.substr(prefix.size()));
     }
+    // A field the file holds that a --set of its object's kind (a light's type, a camera's
+    // projection, an object's shape, a material's model) made wrong: the file's, with the
+    // --set named ("camera.height: only for orthographic cameras (with --set camera.projection)").
+    for (auto item = overrides.rbegin(); item != overrides.rend(); ++item) {
+        const std::string path = message_path(item->path);
+        const std::size_t dot = path.rfind('.');
+        if (dot == std::string::npos) continue;
+        const std::string key = path.substr(dot + 1), owner = path.substr(0, dot + 1);
+        if (key != "type" && key != "projection" && key != "shape" && key != "model") continue;
+        if (message.compare(prefix.size(), owner.size(), owner) == 0)
+            return SceneError(message + " (with --set " + one_line(item->path) + ")");
+    }
     return error;
 }
 

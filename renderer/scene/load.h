@@ -37,7 +37,8 @@ void apply_overrides(nlohmann::json& doc, const std::vector<Override>& overrides
 
 // The loader's `error` about a document with `overrides` applied, blamed on the
 // override that set the field it names ("F: --set lights[0].intensity: lights[0].intensity:
-// must be a number, got \"abc\""); `error` itself when no override set that field.
+// must be a number, got \"abc\""), or noted where an override of its object's kind (type,
+// projection, shape, model) made a field of the file wrong; `error` itself otherwise.
 SceneError blame_override(const SceneError& error, const std::vector<Override>& overrides, const std::string& source);
 
 // Validates a JSON document and builds the Scene. `source` is the file name used
