@@ -193,8 +193,9 @@ TEST(LightLoader, EveryErrorIsOneLineNamingTheLightAndField) {
          "lights[0].shadow: must be true or false, got null"},
         {with(with(kDisk, "name", "key"), "color", {2, 0, 0}), "lights[0].color[0]: must be in [0, 1], got 2"},
         {with(with(kSky, "name", "sky"), "illuminant", "D65x"),
-         "lights[0].illuminant: must be \"A\", \"B\", \"C\", \"D50\", \"D55\", \"D65\", \"D93\", \"E\", "
-         "\"F1\", \"F2\", \"F3\", \"F4\", \"F5\", \"F6\", \"F7\", \"F8\", \"F9\", \"F10\", \"F11\" or \"F12\", got \"D65x\""},
+         "lights[0].illuminant: got \"D65x\": did you mean \"D65\"? (must be \"A\", \"B\", \"C\", \"D50\", \"D55\", "
+         "\"D65\", \"D93\", \"E\", \"F1\", \"F2\", \"F3\", \"F4\", \"F5\", \"F6\", \"F7\", \"F8\", \"F9\", \"F10\", \"F11\" or "
+         "\"F12\")"},
     };
     for (const LightError& c : cases) {
         SCOPED_TRACE(c.light.dump());

@@ -643,6 +643,12 @@ TEST(SceneLoader, AKeyATypoAwayFromAnAllowedOneIsSuggested) {
               "scene.json: lights[0].intensty: unknown key (did you mean \"intensity\"?)");
     EXPECT_EQ(error_after([](json& d) { d["camera"]["psoition"] = {0, 0, 1}; }),
               "scene.json: camera.psoition: unknown key (did you mean \"position\"?)");
+    // A value one typo from a choice, and a --set path's key one typo from the document's.
+    EXPECT_EQ(error_after([](json& d) { d["objects"][0]["material"]["model"] = "higlight"; })
+                  .rfind("scene.json: objects[0].material.model: got \"higlight\": did you mean \"highlight\"? (must be ", 0),
+              0u);
+    EXPECT_EQ(override_error({"objects[0].materal.m=3"}),
+              "scene.json: --set objects[0].materal.m: no such key \"materal\" (did you mean \"material\"?)");
     // Too far from any key, or as near to two: no guess.
     EXPECT_EQ(error_after([](json& d) { d["lamps"] = 1; }), "scene.json: lamps: unknown key");
     EXPECT_EQ(error_after([](json& d) { d["objects"][0]["material"]["foo"] = 1; }),

@@ -218,9 +218,13 @@ TEST(SpectralScene, BadSpectralFieldsAreOneLineNamingTheLight) {
               "s.json: lights[0].illuminant: this light gives both \"temperature_k\" and \"illuminant\"; give one colour");
     EXPECT_EQ(load_error(with({{"temperature_k", 999}})), "s.json: lights[0].temperature_k: must be in [1000, 40000], got 999");
     EXPECT_EQ(load_error(with({{"temperature_k", "warm"}})), "s.json: lights[0].temperature_k: must be a number, got \"warm\"");
-    const std::string bad_name = load_error(with({{"illuminant", "D66"}}));
+    const std::string bad_name = load_error(with({{"illuminant", "X66"}}));
     EXPECT_EQ(bad_name.rfind("s.json: lights[0].illuminant: must be \"A\", \"B\"", 0), 0u) << bad_name;
-    EXPECT_NE(bad_name.find("\"F12\", got \"D66\""), std::string::npos) << bad_name;
+    EXPECT_NE(bad_name.find("\"F12\", got \"X66\""), std::string::npos) << bad_name;
+    // A name one typo from a known one: that one first, then the list.
+    EXPECT_EQ(load_error(with({{"illuminant", "D66"}})).rfind(
+                  "s.json: lights[0].illuminant: got \"D66\": did you mean \"D65\"? (must be \"A\", \"B\"", 0),
+              0u);
 }
 
 TEST(SpectralScene, AMissingDataFileIsOneLineNamingIt) {

@@ -121,23 +121,31 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
     return d[a.size()][b.size()];
 }
 
-// "unknown key", and the one allowed key a typo away from it when there is one: one edit
-// for keys of up to 4 characters, two for longer ones ("intensty" -> "intensity").
-std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
-    constexpr std::size_t kLongestKeyCompared = 64;  // a long key is no typo, and costs length² to compare
-    if (key.size() > kLongestKeyCompared) return "unknown key";
-    const std::size_t most = key.size() <= 4 ? 1 : 2;
+}  // namespace
+
+std::string closest_name(const std::string& typed, const std::vector<std::string>& names) {
+    constexpr std::size_t kLongestCompared = 64;  // a long text is no typo, and costs length² to compare
+    if (typed.size() > kLongestCompared) return "";
+    const std::size_t most = typed.size() <= 4 ? 1 : 2;
     std::string best;
     std::size_t best_distance = most + 1, ties = 0;
-    for (const std::string& candidate : allowed) {
-        const std::size_t distance = edit_distance(key, candidate);
+    for (const std::string& candidate : names) {
+        const std::size_t distance = edit_distance(typed, candidate);
         if (distance < best_distance) {
             best = candidate, best_distance = distance, ties = 1;
         } else if (distance == best_distance) {
             ++ties;
         }
     }
-    return best_distance <= most && ties == 1 ? "unknown key (did you mean \"" + best + "\"?)" : "unknown key";
+    return best_distance <= most && ties == 1 ? best : "";
+}
+
+namespace {
+
+// "unknown key", and the allowed key a typo away from it when there is one.
+std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
+    const std::string near = closest_name(key, allowed);
+    return near.empty() ? "unknown key" : "unknown key (did you mean \"" + near + "\"?)";
 }
 
 }  // namespace
@@ -202,6 +210,9 @@ std::size_t Node::one_of(const std::vector<std::string>& names) const {
         if (i > 0) list += i + 1 == names.size() ? " or " : ", ";
         list += "\"" + names[i] + "\"";
     }
+    // A typo's likely meaning first: a long list is cut to fit the one line.
+    const std::string near = value().is_string() ? closest_name(value().get_ref<const std::string&>(), names) : "";
+    if (!near.empty()) fail("got " + describe(value()) + ": did you mean \"" + near + "\"? (must be " + list + ")");
     fail("must be " + list + ", got " + describe(value()));
 }
 

@@ -182,7 +182,13 @@ void apply_overrides(json& doc, const std::vector<Override>& overrides, const st
                     const bool mesh_material = (step.key == "materials" && under_object) ||
                                                (s >= 3 && steps[s - 1].key == "materials" && steps[s - 2].is_index &&
                                                 steps[s - 3].key == "objects");
-                    if (!mesh_material) fail(source, item.path, "no such key " + quoted(step.key));
+                    if (!mesh_material) {
+                        std::vector<std::string> keys;
+                        for (const auto& entry : here->items()) keys.push_back(entry.key());
+                        const std::string near = scene_json::closest_name(step.key, keys);
+                        fail(source, item.path,
+                             "no such key " + quoted(step.key) + (near.empty() ? "" : " (did you mean " + quoted(near) + "?)"));
+                    }
                     (*here)[step.key] = json::object();
                 }
                 here = &(*here)[step.key];
