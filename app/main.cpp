@@ -10,17 +10,40 @@
 //                                       not in a -DM3055_BUILD_EXPLORER=OFF build)
 #include "commands.h"
 
+#include "io/message_text.h"
+
 #include <iostream>
 
 namespace {
+
+// The parse error's text; for arguments no command or option took, those arguments in the
+// order typed (CLI11 lists them last first) and, for the first, the command or option a
+// typo away ("rendr": "render", "--fail-level": "--fail-levels").
+std::string what_went_wrong(const CLI::App& app, const CLI::ParseError& error) {
+    if (!dynamic_cast<const CLI::ExtrasError*>(&error)) return error.what();
+    const std::vector<CLI::App*> used = app.get_subcommands();
+    const CLI::App& where = used.empty() ? app : *used.back();
+    const std::vector<std::string> extras = where.remaining();
+    if (extras.empty()) return error.what();
+    std::string text = "not expected:";
+    for (const std::string& extra : extras) text += " " + m3055::text::quote_name(extra);
+    std::vector<std::string> names;
+    if (used.empty())
+        for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(sub->get_name());
+    for (const CLI::Option* option : where.get_options())
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    const std::string first = extras.front().substr(0, extras.front().find('='));
+    const std::string near = m3055::text::closest_name(first, names);
+    return near.empty() ? text : text + " (did you mean \"" + near + "\"?)";
+}
 
 // A command-line mistake as every message of m3055 is: one line starting
 // "m3055:", naming the subcommand and where its usage is.
 int usage_error(const CLI::App& app, const CLI::ParseError& error) {
     const std::vector<CLI::App*> used = app.get_subcommands();
     const std::string command = used.empty() ? "m3055" : "m3055 " + used.back()->get_name();
-    std::cerr << "m3055: " << (used.empty() ? "" : used.back()->get_name() + ": ") << error.what() << " (" << command
-              << " --help shows the usage)\n";
+    std::cerr << "m3055: " << (used.empty() ? "" : used.back()->get_name() + ": ") << what_went_wrong(app, error)
+              << " (" << command << " --help shows the usage)\n";
     return m3055::kExitUsage;
 }
 

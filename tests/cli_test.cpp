@@ -224,6 +224,20 @@ TEST(ReferenceOption, TakesNeitherABackendNorATimeout) {
     EXPECT_TRUE(files_in(out.path()).empty());
 }
 
+// Arguments no command or option takes: listed as typed, and the command or option a typo
+// away suggested.
+TEST(CommandLine, ATypoInACommandOrAnOptionSuggestsTheNearestName) {
+    const RunResult command = run_m3055({"rendr", "--scene", "s.json"});
+    EXPECT_EQ(command.exit_code, 2);
+    EXPECT_EQ(command.err, "m3055: not expected: rendr --scene s.json (did you mean \"render\"?) (m3055 --help shows "
+                           "the usage)\n");
+    const RunResult option = run_m3055({"compare", "a.png", "b.png", "--fail-level", "1"});
+    EXPECT_EQ(option.exit_code, 2);
+    EXPECT_EQ(option.err, "m3055: compare: not expected: --fail-level 1 (did you mean \"--fail-levels\"?) (m3055 compare "
+                          "--help shows the usage)\n");
+    EXPECT_EQ(run_m3055({"zzz"}).err, "m3055: not expected: zzz (m3055 --help shows the usage)\n");
+}
+
 // A --set that is not PATH=VALUE is a mistake on the command line (exit 2, as every usage
 // error); a value the scene refuses is the scene's (exit 1), blamed on the --set.
 TEST(RenderCommand, AMalformedSetIsAUsageErrorAndABadValueTheScenes) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace m3055::text {
 
@@ -58,5 +59,9 @@ std::string one_line(std::string_view text, std::size_t max = kMaxLineBytes);
 // could lie inside the range it is said to violate. Integers below 1e15 are
 // written in full ("1000000", not "1e+06"); "nan", "inf", "-inf"; no "-0".
 std::string format_number(double value);
+
+// The one name of `names` a typo away from `typed` (one edit up to 4 characters, two beyond:
+// "intensty" -> "intensity"), or "" when none is or two are equally near: "did you mean".
+std::string closest_name(const std::string& typed, const std::vector<std::string>& names);
 
 }  // namespace m3055::text

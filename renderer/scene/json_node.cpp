@@ -106,45 +106,9 @@ Node Node::required(const std::string& key) const {
 
 namespace {
 
-// Edits (insert, delete, substitute, swap two neighbours) that turn a into b: the
-// optimal string alignment distance, for "did you mean".
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i)
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    return d[a.size()][b.size()];
-}
-
-}  // namespace
-
-std::string closest_name(const std::string& typed, const std::vector<std::string>& names) {
-    constexpr std::size_t kLongestCompared = 64;  // a long text is no typo, and costs length² to compare
-    if (typed.size() > kLongestCompared) return "";
-    const std::size_t most = typed.size() <= 4 ? 1 : 2;
-    std::string best;
-    std::size_t best_distance = most + 1, ties = 0;
-    for (const std::string& candidate : names) {
-        const std::size_t distance = edit_distance(typed, candidate);
-        if (distance < best_distance) {
-            best = candidate, best_distance = distance, ties = 1;
-        } else if (distance == best_distance) {
-            ++ties;
-        }
-    }
-    return best_distance <= most && ties == 1 ? best : "";
-}
-
-namespace {
-
 // "unknown key", and the allowed key a typo away from it when there is one.
 std::string unknown_key_problem(const std::string& key, const std::vector<std::string>& allowed) {
-    const std::string near = closest_name(key, allowed);
+    const std::string near = text::closest_name(key, allowed);
     return near.empty() ? "unknown key" : "unknown key (did you mean \"" + near + "\"?)";
 }
 
@@ -211,7 +175,7 @@ std::size_t Node::one_of(const std::vector<std::string>& names) const {
         list += "\"" + names[i] + "\"";
     }
     // A typo's likely meaning first: a long list is cut to fit the one line.
-    const std::string near = value().is_string() ? closest_name(value().get_ref<const std::string&>(), names) : "";
+    const std::string near = value().is_string() ? text::closest_name(value().get_ref<const std::string&>(), names) : "";
     if (!near.empty()) fail("got " + describe(value()) + ": did you mean \"" + near + "\"? (must be " + list + ")");
     fail("must be " + list + ", got " + describe(value()));
 }

@@ -19,9 +19,6 @@ using nlohmann::json;
 // "a.b" / "a[3]": appends one step to a path. Keys that are not plain identifiers
 // are written as ["..."] with JSON escapes, so a message can never span two lines.
 std::string join_key(const std::string& path, const std::string& key);
-// The one name of `names` a typo away from `typed` (one edit up to 4 characters, two beyond:
-// "intensty" -> "intensity"), or "" when none is, or two are equally near.
-std::string closest_name(const std::string& typed, const std::vector<std::string>& names);
 std::string join_index(const std::string& path, std::size_t index);
 
 // Shortest text that reads back as the same double ("-3", "12.5", "0.001", "1e+20").

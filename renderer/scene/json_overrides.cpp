@@ -185,7 +185,7 @@ void apply_overrides(json& doc, const std::vector<Override>& overrides, const st
                     if (!mesh_material) {
                         std::vector<std::string> keys;
                         for (const auto& entry : here->items()) keys.push_back(entry.key());
-                        const std::string near = scene_json::closest_name(step.key, keys);
+                        const std::string near = text::closest_name(step.key, keys);
                         fail(source, item.path,
                              "no such key " + quoted(step.key) + (near.empty() ? "" : " (did you mean " + quoted(near) + "?)"));
                     }
