@@ -145,5 +145,20 @@ TEST(MessageText, KeysInPathsAreQuotedAndCut) {
     EXPECT_TRUE(one_clean_line(long_key));
 }
 
+// "Did you mean": the one name a typo away (one edit up to 4 characters, two beyond; a swap of
+// neighbours is one), none when two are as near; a name far longer is not compared at all.
+TEST(MessageText, ClosestNameIsTheOneNameATypoAway) {
+    const std::vector<std::string> keys = {"intensity", "position", "color", "type", "size", "side"};
+    EXPECT_EQ(text::closest_name("intensty", keys), "intensity");
+    EXPECT_EQ(text::closest_name("psoition", keys), "position");
+    EXPECT_EQ(text::closest_name("typ", keys), "type");
+    EXPECT_EQ(text::closest_name("colour", keys), "color");
+    EXPECT_EQ(text::closest_name("sixe", keys), "");  // size and side: as near
+    EXPECT_EQ(text::closest_name("lamps", keys), "");
+    EXPECT_EQ(text::closest_name("x", {"a", "b"}), "");
+    const std::string huge(std::size_t(1) << 24, 'k');  // a scene's own key: skipped by its length
+    EXPECT_EQ(text::closest_name("kk", {huge, "kkk"}), "kkk");
+}
+
 }  // namespace
 }  // namespace m3055::text

@@ -269,6 +269,9 @@ std::string closest_name(const std::string& typed, const std::vector<std::string
     std::string best;
     std::size_t best_distance = most + 1, ties = 0;
     for (const std::string& candidate : names) {
+        // At least the lengths' difference apart: a name far longer is skipped unread (a
+        // scene's own key of a megabyte would cost its length times the typed one's).
+        if (candidate.size() > typed.size() + most || typed.size() > candidate.size() + most) continue;
         const std::size_t distance = edit_distance(typed, candidate);
         if (distance < best_distance) {
             best = candidate, best_distance = distance, ties = 1;
@@ -278,6 +281,5 @@ std::string closest_name(const std::string& typed, const std::vector<std::string
     }
     return best_distance <= most && ties == 1 ? best : "";
 }
-
 
 }  // namespace m3055::text
