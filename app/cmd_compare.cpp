@@ -27,8 +27,6 @@
 #include <memory>
 #include <optional>
 
-#include <unistd.h>
-
 namespace m3055 {
 
 namespace {
@@ -65,8 +63,7 @@ std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOpt
     for (int i = 0; i < 2; ++i) {
         if (!scenes[i]) continue;
         if (!capture) capture = std::make_unique<Capture>(make_headless_context(parse_backend(options.backend)));
-        SlowNote note(std::chrono::seconds(3), "drawing " + text::quote_name(paths[i]), kSlowDrawingWhy,
-                      isatty(STDERR_FILENO) == 1);
+        SlowNote note = drawing_note("drawing " + text::quote_name(paths[i]));
         images[i] = grading::render_levels(capture->renderer(), *scenes[i]);
         note.finished();
     }
@@ -74,6 +71,7 @@ std::pair<grading::LevelImage, grading::LevelImage> load_inputs(const CompareOpt
 }
 
 void print_text(const grading::Comparison& c) {
+    const auto percent = [&](std::uint64_t count) { return 100.0 * double(count) / double(c.pixels ? c.pixels : 1); };
     std::printf("size: %d x %d, %d bits a channel, %llu pixels\n", c.width, c.height, c.bits,
                 (unsigned long long)c.pixels);
     std::printf("same level: %llu pixels (%.4f %%)\n", (unsigned long long)c.same_pixels, 100.0 * c.same_share());
@@ -86,11 +84,11 @@ void print_text(const grading::Comparison& c) {
     }
     std::printf("largest: %d level%s\n", c.max_levels, c.max_levels == 1 ? "" : "s");
     std::printf("over --fail-levels %d: %llu pixels (%.4f %%, allowed %s %%)\n", c.thresholds.fail.levels,
-                (unsigned long long)c.over_fail, 100.0 * double(c.over_fail) / double(c.pixels ? c.pixels : 1),
+                (unsigned long long)c.over_fail, percent(c.over_fail),
                 text::format_number(c.thresholds.fail.percent).c_str());
     if (c.thresholds.warn)
         std::printf("over --warn-levels %d: %llu pixels (%.4f %%, allowed %s %%)\n", c.thresholds.warn->levels,
-                    (unsigned long long)c.over_warn, 100.0 * double(c.over_warn) / double(c.pixels ? c.pixels : 1),
+                    (unsigned long long)c.over_warn, percent(c.over_warn),
                     text::format_number(c.thresholds.warn->percent).c_str());
     if (c.linear)
         std::printf("linear: max %.6g, mean %.6g, RMS %.6g, PSNR %.2f dB\n", c.linear->max_abs, c.linear->mean_abs,

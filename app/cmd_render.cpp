@@ -113,7 +113,7 @@ void add_render_command(CLI::App& app) {
             // The raw image is read back for the count only where a .brdf material can make NaN (as batch does).
             NonFinite* counted = may_render_nonfinite(scene) ? &nonfinite : nullptr;
             try {
-                SlowNote note(std::chrono::seconds(3), "drawing", kSlowDrawingWhy, isatty(STDERR_FILENO) == 1);
+                SlowNote note = drawing_note("drawing");
                 capture.render_to_files(scene, options->out, options->raw, [&] { written = true; }, counted);
                 note.finished();
             } catch (const RenderTimeout&) {

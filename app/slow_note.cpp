@@ -2,6 +2,8 @@
 
 #include "progress.h"
 
+#include <unistd.h>
+
 namespace m3055 {
 
 SlowNote::SlowNote(std::chrono::milliseconds after, std::string step, const std::string& why, bool interactive,
@@ -29,6 +31,13 @@ SlowNote::~SlowNote() {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::fprintf(stream_, "%s %s %.0f s\n", error_line(step_).c_str(), finished_ ? "took" : "stopped after", seconds);
     std::fflush(stream_);
+}
+
+SlowNote drawing_note(std::string step) {
+    return SlowNote(std::chrono::seconds(3), std::move(step),
+                    "on Mesa's CPU renderer (llvmpipe) area lights and shadows take up to minutes, and a scene's "
+                    "new shaders a minute to compile (once: Mesa caches them)",
+                    isatty(STDERR_FILENO) == 1);
 }
 
 }  // namespace m3055

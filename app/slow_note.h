@@ -14,11 +14,6 @@
 
 namespace m3055 {
 
-// Why a GPU render may take long, for the note of a command that draws a scene.
-inline constexpr const char* kSlowDrawingWhy =
-    "on Mesa's CPU renderer (llvmpipe) area lights and shadows take up to minutes, and a scene's new shaders "
-    "a minute to compile (once: Mesa caches them)";
-
 class SlowNote {
 public:
     // After `after`, prints "m3055: STEP: WHY..." on `stream` when `interactive` (callers
@@ -41,5 +36,9 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
     std::thread timer_;
 };
+
+// The note of a command that draws a scene on the GPU (`step`: "drawing", ...): after 3 s, on
+// stderr when it is a terminal, with why a render may take that long.
+SlowNote drawing_note(std::string step);
 
 }  // namespace m3055

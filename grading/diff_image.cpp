@@ -154,9 +154,10 @@ Rgb8Image difference_image(const LevelImage& a, const LevelImage& b) {
     // An image narrower than the legend is enlarged by a whole factor (each pixel a block,
     // up to 8 x 8), so that a 64 x 40 difference is not a speck beside its legend.
     constexpr int kMostEnlarged = 8;
-    const int scale = a.width > 0 ? std::clamp(legend_width() / a.width, 1, kMostEnlarged) : 1;
+    const int legend = legend_width();
+    const int scale = a.width > 0 ? std::clamp(legend / a.width, 1, kMostEnlarged) : 1;
     Rgb8Image image;
-    image.width = std::max(a.width * scale, legend_width());
+    image.width = std::max(a.width * scale, legend);
     image.height = a.height * scale + kLegendHeight;
     image.pixels.assign(std::size_t(image.width) * std::size_t(image.height) * 3, 0);
     const Dimmer dim{a.bits, a.bits >= 1 && a.bits <= kMaxTableBits ? dimmed_table(a.bits).data() : nullptr};

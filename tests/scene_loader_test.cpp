@@ -597,12 +597,7 @@ Scene with_overrides(const std::vector<std::string>& texts) {
     json doc = spec_doc();
     std::vector<Override> overrides;
     for (const auto& text : texts) overrides.push_back(parse_override(text));
-    apply_overrides(doc, overrides, "scene.json");
-    try {  // as load_scene_file does
-        return scene_from_json(doc, "scene.json", LoadContext::trusted());
-    } catch (const SceneError& error) {
-        throw blame_override(error, overrides, "scene.json");
-    }
+    return scene_from_json(std::move(doc), overrides, "scene.json", LoadContext::trusted());
 }
 
 std::string override_error(const std::vector<std::string>& texts) {

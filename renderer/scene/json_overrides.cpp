@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace m3055 {
@@ -119,9 +120,11 @@ std::string message_path(const std::string& path) {
 SceneError blame_override(const SceneError& error, const std::vector<Override>& overrides, const std::string& source) {
     const std::string message = error.what(), prefix = source + ": ";
     if (message.rfind(prefix, 0) != 0) return error;
-    // The last override wins where two set the same value, so it is the one to blame.
-    for (auto item = overrides.rbegin(); item != overrides.rend(); ++item) {
-        const std::string path = message_path(item->path);
+    // Last first: the last override wins where two set the same value, so it is the one to blame.
+    std::vector<std::pair<const Override*, std::string>> paths;
+    for (auto item = overrides.rbegin(); item != overrides.rend(); ++item)
+        paths.emplace_back(&*item, message_path(item->path));
+    for (const auto& [item, path] : paths) {
         if (path.empty() || message.compare(prefix.size(), path.size(), path) != 0) continue;
         const char next = message.size() > prefix.size() + path.size() ? message[prefix.size() + path.size()] : ':';
         if (next == ':' || next == '.' || next == '[')  // the value set, or a field inside it
@@ -130,8 +133,7 @@ SceneError blame_override(const SceneError& error, const std::vector<Override>& 
     // A field the file holds that a --set of its object's kind (a light's type, a camera's
     // projection, an object's shape, a material's model) made wrong: the file's, with the
     // --set named ("camera.height: only for orthographic cameras (with --set camera.projection)").
-    for (auto item = overrides.rbegin(); item != overrides.rend(); ++item) {
-        const std::string path = message_path(item->path);
+    for (const auto& [item, path] : paths) {
         const std::size_t dot = path.rfind('.');
         if (dot == std::string::npos) continue;
         const std::string key = path.substr(dot + 1), owner = path.substr(0, dot + 1);

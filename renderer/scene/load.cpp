@@ -135,10 +135,27 @@ Scene read_scene(const json& doc, const std::string& source, const scene_json::S
     return scene;
 }
 
+// `doc` with `overrides` applied, read; a problem a --set made is blamed on it.
+Scene read_overridden_scene(json doc, const std::vector<Override>& overrides, const std::string& source,
+                            const scene_json::SceneFiles& files) {
+    apply_overrides(doc, overrides, source);
+    try {
+        return read_scene(doc, source, files);
+    } catch (const SceneError& error) {
+        if (overrides.empty()) throw;
+        throw blame_override(error, overrides, source);
+    }
+}
+
 }  // namespace
 
 Scene scene_from_json(const json& doc, const std::string& source, const LoadContext& context) {
     return read_scene(doc, source, {context, ""});
+}
+
+Scene scene_from_json(json doc, const std::vector<Override>& overrides, const std::string& source,
+                      const LoadContext& context) {
+    return read_overridden_scene(std::move(doc), overrides, source, {context, ""});
 }
 
 Scene load_scene_file(const std::string& path, const LoadContext& context, const std::vector<Override>& overrides) {
@@ -151,14 +168,9 @@ Scene load_scene_file(const std::string& path, const LoadContext& context, const
     } catch (const io::InputError& error) {
         throw SceneError(error.what());
     }
-    apply_overrides(doc, overrides, source);
-    try {
-        // The files the scene names are relative to its folder.
-        return read_scene(doc, source, {context, std::filesystem::path(path).parent_path().string()});
-    } catch (const SceneError& error) {
-        if (overrides.empty()) throw;
-        throw blame_override(error, overrides, source);
-    }
+    // The files the scene names are relative to its folder.
+    return read_overridden_scene(std::move(doc), overrides, source,
+                                 {context, std::filesystem::path(path).parent_path().string()});
 }
 
 }  // namespace m3055

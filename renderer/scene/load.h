@@ -45,6 +45,9 @@ SceneError blame_override(const SceneError& error, const std::vector<Override>& 
 // as the prefix of error messages; the files the scene names are relative to
 // `context.folder` and read as `context` allows (scene/load_context.h).
 Scene scene_from_json(const nlohmann::json& doc, const std::string& source, const LoadContext& context);
+// The same after `overrides` (apply_overrides), a problem they made blamed on them (blame_override).
+Scene scene_from_json(nlohmann::json doc, const std::vector<Override>& overrides, const std::string& source,
+                      const LoadContext& context);
 
 // Reads, applies overrides, validates. `path` and the files the scene names
 // (relative to the scene file's folder) are read as `context` says. Throws

@@ -96,19 +96,18 @@ RgbFloatImage render_raw(const Scene& scene, ShaderMode mode) {
 
 }  // namespace
 
-Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene, ShaderMode mode) {
-    const RgbFloatImage raw = render_raw(scene, mode);
-    return compare_raw(raw, ref::render_reference(reference_scene), scene.display);
-}
-
 Comparison compare_gpu_with(const Scene& scene, const ref::ReferenceImage& reference, ShaderMode mode) {
     return compare_raw(render_raw(scene, mode), reference, scene.display);
+}
+
+Comparison compare_gpu_with_reference_of(const Scene& scene, const Scene& reference_scene, ShaderMode mode) {
+    return compare_gpu_with(scene, ref::render_reference(reference_scene), mode);
 }
 
 std::vector<Comparison> compare_gpu_modes_with_reference(const Scene& scene, const std::vector<ShaderMode>& modes) {
     const ref::ReferenceImage reference = ref::render_reference(scene);
     std::vector<Comparison> results;
-    for (ShaderMode mode : modes) results.push_back(compare_raw(render_raw(scene, mode), reference, scene.display));
+    for (ShaderMode mode : modes) results.push_back(compare_gpu_with(scene, reference, mode));
     return results;
 }
 
